@@ -1,0 +1,105 @@
+using System.Runtime.CompilerServices;
+
+namespace MagnusBall.Aerodynamics
+{
+    /// <summary>
+    /// What a coefficient model may read at one instant: the air-relative speed, the spin, the spin
+    /// parameters and the Reynolds number. Built once per derivative evaluation by <see cref="FlightModel"/>.
+    /// </summary>
+    /// <remarks>
+    /// The spin parameter S = r|w|/s is what drag models read; the transverse spin parameter
+    /// S_perp = r|w x v_hat|/s, built from the spin component across the flight, is what lift models read
+    /// (see ../shared/physics-references.md section 1 and docs/physics.md). When the air-relative speed is
+    /// zero both parameters are reported as 0 (they are undefined there, and no aerodynamic force acts).
+    /// </remarks>
+    public readonly struct AeroConditions
+    {
+        /// <summary>Air-relative speed s = |v - wind|, m/s.</summary>
+        public readonly double Speed;
+
+        /// <summary>Spin rate |w|, rad/s.</summary>
+        public readonly double SpinRate;
+
+        /// <summary>Spin rate across the flight direction |w x v_hat|, rad/s.</summary>
+        public readonly double TransverseSpinRate;
+
+        /// <summary>Ball radius r, m.</summary>
+        public readonly double Radius;
+
+        /// <summary>Air density, kg/m^3.</summary>
+        public readonly double Density;
+
+        /// <summary>Spin parameter S = r|w|/s (dimensionless); 0 when s = 0.</summary>
+        public readonly double SpinParameter;
+
+        /// <summary>Transverse spin parameter S_perp = r|w x v_hat|/s (dimensionless); 0 when s = 0.</summary>
+        public readonly double TransverseSpinParameter;
+
+        /// <summary>Reynolds number rho s (2r) / mu (dimensionless).</summary>
+        public readonly double ReynoldsNumber;
+
+        /// <summary>Creates the conditions; the spin parameters are derived from the arguments.</summary>
+        /// <param name="speed">Air-relative speed, m/s (&gt;= 0).</param>
+        /// <param name="spinRate">|w|, rad/s.</param>
+        /// <param name="transverseSpinRate">|w x v_hat|, rad/s.</param>
+        /// <param name="radius">Ball radius, m.</param>
+        /// <param name="density">Air density, kg/m^3.</param>
+        /// <param name="dynamicViscosity">Air dynamic viscosity, Pa s (&gt; 0).</param>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public AeroConditions(double speed, double spinRate, double transverseSpinRate, double radius, double density, double dynamicViscosity)
+        {
+            Speed = speed;
+            SpinRate = spinRate;
+            TransverseSpinRate = transverseSpinRate;
+            Radius = radius;
+            Density = density;
+            if (speed > 0)
+            {
+                double inverse = radius / speed;
+                SpinParameter = spinRate * inverse;
+                TransverseSpinParameter = transverseSpinRate * inverse;
+            }
+            else
+            {
+                SpinParameter = 0;
+                TransverseSpinParameter = 0;
+            }
+
+            ReynoldsNumber = density * speed * 2 * radius / dynamicViscosity;
+        }
+
+        /// <summary>Spin rate in revolutions per minute, |w| 60 / (2 pi).</summary>
+        public double SpinRpm => SpinRate * (60.0 / (2.0 * System.Math.PI));
+    }
+
+    /// <summary>A drag-coefficient law C_D(conditions). Implementations are immutable and thread-safe.</summary>
+    public interface IDragModel
+    {
+        /// <summary>The drag coefficient C_D (dimensionless, &gt;= 0) for these conditions.</summary>
+        /// <param name="conditions">Speed, spin and Reynolds number at this instant.</param>
+        double DragCoefficient(in AeroConditions conditions);
+    }
+
+    /// <summary>
+    /// A lift (Magnus) coefficient law C_L(conditions). Implementations are immutable and thread-safe.
+    /// The force it produces is 1/2 rho A C_L s^2 (w x v_hat)/|w|, so a positive C_L pushes the ball
+    /// toward w x v (the classic Magnus direction).
+    /// </summary>
+    public interface ILiftModel
+    {
+        /// <summary>The lift coefficient C_L (dimensionless) for these conditions.</summary>
+        /// <param name="conditions">Speed, spin and Reynolds number at this instant.</param>
+        double LiftCoefficient(in AeroConditions conditions);
+    }
+
+    /// <summary>
+    /// A spin-decay law dw/dt = f(w, conditions). Implementations are immutable and thread-safe.
+    /// </summary>
+    public interface ISpinDecayModel
+    {
+        /// <summary>The angular acceleration dw/dt, rad/s^2, for this spin and these conditions.</summary>
+        /// <param name="angularVelocity">The current angular velocity w, rad/s.</param>
+        /// <param name="conditions">Speed, spin and Reynolds number at this instant.</param>
+        Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions);
+    }
+}

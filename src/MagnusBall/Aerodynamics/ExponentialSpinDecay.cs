@@ -1,0 +1,30 @@
+namespace MagnusBall.Aerodynamics
+{
+    /// <summary>
+    /// Exponential spin decay, dw/dt = -w / tau: the spin falls to 1/e of its value in tau seconds.
+    /// </summary>
+    /// <remarks>
+    /// Golf launch monitors quote about 3.3-4 %/s (tau = 25-30 s; TrackMan, Tutelman); Nathan (2008) gives
+    /// tau = 5 s for a baseball at 100 mph. See ../shared/physics-references.md section 3.
+    /// </remarks>
+    public sealed class ExponentialSpinDecay : ISpinDecayModel
+    {
+        /// <summary>Creates the law dw/dt = -w / <paramref name="timeConstant"/>.</summary>
+        /// <param name="timeConstant">tau, s; finite and &gt; 0.</param>
+        /// <exception cref="System.ArgumentOutOfRangeException">tau is not finite or not positive.</exception>
+        public ExponentialSpinDecay(double timeConstant)
+        {
+            TimeConstant = Require.Positive(timeConstant, nameof(timeConstant));
+        }
+
+        /// <summary>The time constant tau, s.</summary>
+        public double TimeConstant { get; }
+
+        /// <inheritdoc />
+        public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
+            angularVelocity * (-1.0 / TimeConstant);
+
+        /// <inheritdoc />
+        public override string ToString() => $"ExponentialSpinDecay(tau={TimeConstant:R} s)";
+    }
+}

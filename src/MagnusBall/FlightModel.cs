@@ -1,0 +1,206 @@
+using System;
+using System.Runtime.CompilerServices;
+using MagnusBall.Aerodynamics;
+
+namespace MagnusBall
+{
+    /// <summary>
+    /// The right-hand side of the flight ODE: given a <see cref="FlightState"/>, the rates of change of
+    /// position, velocity and spin under gravity, drag, Magnus lift and spin decay. Immutable and
+    /// thread-safe: one model can be shared by any number of balls and threads.
+    /// </summary>
+    /// <remarks>
+    /// <para>With air-relative velocity v_rel = v - wind, speed s = |v_rel|, v_hat = v_rel / s,
+    /// cross-section A = pi r^2 and mass m, the acceleration is</para>
+    /// <code>
+    /// a = g - (rho A / 2m) C_D s v_rel + (rho A / 2m) C_L s^2 (w x v_hat) / |w|
+    /// </code>
+    /// <para>Gravity and drag are the seed thesis's (Agrawal 2023, eqs. 4-5 and 9-11). The Magnus term is
+    /// the transverse-spin form: the thesis writes 1/2 C_M rho A s^2 (w x v)/|w x v| (its eq. 2, after
+    /// Javorova &amp; Ivanov 2018), which is the same whenever w is perpendicular to v (top-, back- and
+    /// sidespin) but undefined when w is parallel to v. Here only the spin component across the flight
+    /// lifts, |w x v_hat| = |w_perp|, so pure "gyro" spin gives no force and nothing is ever divided by zero.
+    /// See docs/physics.md.</para>
+    /// <para>Each term can be left out, so a scene models only what it needs and pays only for that:
+    /// a null drag, lift or spin-decay model switches the term off, and zero gravity is allowed.</para>
+    /// </remarks>
+    public sealed class FlightModel
+    {
+        /// <summary>
+        /// Below this air-relative speed (m/s) the aerodynamic forces are taken as exactly zero. They scale
+        /// with s^2 (or s|w| for lift linear in spin) and are far below double precision's resolution of
+        /// gravity there; the cut-off keeps 1/s from overflowing.
+        /// </summary>
+        public const double MinimumAerodynamicSpeed = 1e-150;
+
+        private readonly double _dragFactor; // rho A / (2 m), 1/m
+        private readonly double _kinematicRadius;
+        private readonly double _viscosity;
+        private readonly bool _hasAero;
+
+        /// <summary>Creates a flight model.</summary>
+        /// <param name="ball">The ball (mass, radius, inertia).</param>
+        /// <param name="air">The air (density, wind).</param>
+        /// <param name="gravity">The gravity vector, m/s^2 (finite; any direction; zero for no gravity).</param>
+        /// <param name="drag">The drag-coefficient law, or null for no drag.</param>
+        /// <param name="lift">The lift (Magnus) coefficient law, or null for no Magnus force.</param>
+        /// <param name="spinDecay">The spin-decay law, or null for constant spin.</param>
+        /// <exception cref="ArgumentNullException">ball or air is null.</exception>
+        /// <exception cref="ArgumentException">gravity has a non-finite component.</exception>
+        public FlightModel(
+            Ball ball,
+            Air air,
+            Vector3d gravity,
+            IDragModel? drag = null,
+            ILiftModel? lift = null,
+            ISpinDecayModel? spinDecay = null)
+        {
+            Ball = Require.NotNull(ball, nameof(ball));
+            Air = Require.NotNull(air, nameof(air));
+            Gravity = Require.Finite(gravity, nameof(gravity));
+            Drag = drag;
+            Lift = lift;
+            SpinDecay = spinDecay;
+            Up = (-gravity).NormalizedOrZero();
+            _dragFactor = air.Density * ball.CrossSectionalArea / (2 * ball.Mass);
+            _kinematicRadius = ball.Radius;
+            _viscosity = air.DynamicViscosity;
+            _hasAero = (drag != null || lift != null) && air.Density > 0;
+        }
+
+        /// <summary>The ball.</summary>
+        public Ball Ball { get; }
+
+        /// <summary>The air.</summary>
+        public Air Air { get; }
+
+        /// <summary>The gravity vector, m/s^2.</summary>
+        public Vector3d Gravity { get; }
+
+        /// <summary>The unit vector opposite to gravity (zero when gravity is zero).</summary>
+        public Vector3d Up { get; }
+
+        /// <summary>The drag-coefficient law, or null when drag is off.</summary>
+        public IDragModel? Drag { get; }
+
+        /// <summary>The lift-coefficient law, or null when the Magnus force is off.</summary>
+        public ILiftModel? Lift { get; }
+
+        /// <summary>The spin-decay law, or null when spin is constant.</summary>
+        public ISpinDecayModel? SpinDecay { get; }
+
+        /// <summary>
+        /// The aerodynamic factor k = rho A / (2 m), 1/m: drag deceleration is k C_D s^2. Explicit
+        /// integrators become unstable when the step exceeds about 1/(k C_D s).
+        /// </summary>
+        public double AerodynamicFactor => _dragFactor;
+
+        /// <summary>A vacuum model: gravity only.</summary>
+        /// <param name="ball">The ball.</param>
+        /// <param name="gravity">The gravity vector, m/s^2.</param>
+        public static FlightModel Vacuum(Ball ball, Vector3d gravity) => new FlightModel(ball, MagnusBall.Air.Vacuum, gravity);
+
+        /// <summary>
+        /// The seed thesis's model: constant C_D = 0.55 and C_M = 0.175 (Agrawal 2023), no spin decay.
+        /// </summary>
+        /// <param name="ball">The ball.</param>
+        /// <param name="air">The air.</param>
+        /// <param name="gravity">The gravity vector, m/s^2.</param>
+        public static FlightModel Thesis(Ball ball, Air air, Vector3d gravity) =>
+            new FlightModel(ball, air, gravity, ConstantDrag.ThesisTennis, ConstantLift.ThesisTennis);
+
+        /// <summary>A copy with another drag law (null switches drag off).</summary>
+        /// <param name="drag">The drag law.</param>
+        public FlightModel WithDrag(IDragModel? drag) => new FlightModel(Ball, Air, Gravity, drag, Lift, SpinDecay);
+
+        /// <summary>A copy with another lift law (null switches the Magnus force off).</summary>
+        /// <param name="lift">The lift law.</param>
+        public FlightModel WithLift(ILiftModel? lift) => new FlightModel(Ball, Air, Gravity, Drag, lift, SpinDecay);
+
+        /// <summary>A copy with another spin-decay law (null keeps spin constant).</summary>
+        /// <param name="spinDecay">The spin-decay law.</param>
+        public FlightModel WithSpinDecay(ISpinDecayModel? spinDecay) => new FlightModel(Ball, Air, Gravity, Drag, Lift, spinDecay);
+
+        /// <summary>A copy with other air.</summary>
+        /// <param name="air">The air.</param>
+        public FlightModel WithAir(Air air) => new FlightModel(Ball, air, Gravity, Drag, Lift, SpinDecay);
+
+        /// <summary>A copy with another gravity vector.</summary>
+        /// <param name="gravity">The gravity vector, m/s^2.</param>
+        public FlightModel WithGravity(Vector3d gravity) => new FlightModel(Ball, Air, gravity, Drag, Lift, SpinDecay);
+
+        /// <summary>
+        /// The right-hand side of the ODE at <paramref name="state"/>: one derivative evaluation, the unit
+        /// of cost every integrator is measured in. Allocates nothing; finite for every finite state.
+        /// </summary>
+        /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public StateDerivative Derivative(in FlightState state)
+        {
+            Vector3d acceleration = Gravity;
+            Vector3d spinAcceleration = default;
+            Vector3d w = state.AngularVelocity;
+
+            if (_hasAero || SpinDecay != null)
+            {
+                Vector3d relative = state.Velocity - Air.Wind;
+                double speed = relative.Length;
+                double spinRate = w.Length;
+                AeroConditions conditions;
+                if (speed > MinimumAerodynamicSpeed)
+                {
+                    Vector3d direction = relative / speed;
+                    Vector3d spinCrossDirection = Vector3d.Cross(w, direction);
+                    conditions = new AeroConditions(
+                        speed, spinRate, spinCrossDirection.Length, _kinematicRadius, Air.Density, _viscosity);
+
+                    if (_hasAero)
+                    {
+                        if (Drag != null)
+                        {
+                            // F_D / m = -(rho A / 2m) C_D s v_rel  (thesis eq. 4-5)
+                            double dragScale = -_dragFactor * Drag.DragCoefficient(conditions) * speed;
+                            acceleration += relative * dragScale;
+                        }
+
+                        if (Lift != null && spinRate > 0)
+                        {
+                            // F_M / m = (rho A / 2m) C_L s^2 (w x v_hat) / |w|  (transverse-spin form)
+                            double liftScale = _dragFactor * Lift.LiftCoefficient(conditions) * speed * speed / spinRate;
+                            acceleration += spinCrossDirection * liftScale;
+                        }
+                    }
+                }
+                else
+                {
+                    conditions = new AeroConditions(0, spinRate, 0, _kinematicRadius, Air.Density, _viscosity);
+                }
+
+                if (SpinDecay != null)
+                {
+                    spinAcceleration = SpinDecay.SpinAcceleration(w, conditions);
+                }
+            }
+
+            return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
+        }
+
+        /// <summary>
+        /// Translational mechanical energy 1/2 m |v|^2 - m g . p, J (kinetic energy plus potential energy
+        /// measured from the origin along gravity). Without wind, drag can only lower it and Magnus lift
+        /// does no work.
+        /// </summary>
+        /// <param name="state">The state.</param>
+        public double MechanicalEnergy(in FlightState state) =>
+            Ball.Mass * (0.5 * state.Velocity.LengthSquared - Vector3d.Dot(Gravity, state.Position));
+
+        /// <summary>Rotational kinetic energy 1/2 I |w|^2, J.</summary>
+        /// <param name="state">The state.</param>
+        public double RotationalEnergy(in FlightState state) => 0.5 * Ball.MomentOfInertia * state.AngularVelocity.LengthSquared;
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            $"FlightModel({Ball}, {Air}, g={Gravity}, drag={Drag?.ToString() ?? "off"}, lift={Lift?.ToString() ?? "off"}, " +
+            $"spinDecay={SpinDecay?.ToString() ?? "off"})";
+    }
+}

@@ -1,0 +1,61 @@
+namespace MagnusBall.Integration
+{
+    /// <summary>
+    /// Explicit (forward) Euler, y_{n+1} = y_n + h f(y_n): first order, one evaluation per step. The seed
+    /// thesis's first method (Agrawal 2023, section 3). In a vacuum it is exact in velocity and lags the
+    /// parabola by g h t / 2 in position; it adds energy (about |a|^2 h^2 / 2 per unit mass each step).
+    /// </summary>
+    public sealed class ExplicitEuler : IIntegrator
+    {
+        /// <summary>The shared instance (the method is stateless).</summary>
+        public static ExplicitEuler Instance { get; } = new ExplicitEuler();
+
+        /// <inheritdoc />
+        public string Name => "euler";
+
+        /// <inheritdoc />
+        public int Order => 1;
+
+        /// <inheritdoc />
+        public int DerivativeEvaluationsPerStep => 1;
+
+        /// <inheritdoc />
+        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            StepArguments.Check(model, state, step);
+            return state.Advance(derivative, step);
+        }
+    }
+
+    /// <summary>
+    /// Semi-implicit (symplectic) Euler, the game-engine default: v_{n+1} = v_n + h a(y_n), then
+    /// p_{n+1} = p_n + h v_{n+1}. First order, one evaluation per step; in a vacuum it loses energy
+    /// rather than gaining it.
+    /// </summary>
+    public sealed class SemiImplicitEuler : IIntegrator
+    {
+        /// <summary>The shared instance (the method is stateless).</summary>
+        public static SemiImplicitEuler Instance { get; } = new SemiImplicitEuler();
+
+        /// <inheritdoc />
+        public string Name => "semi-implicit-euler";
+
+        /// <inheritdoc />
+        public int Order => 1;
+
+        /// <inheritdoc />
+        public int DerivativeEvaluationsPerStep => 1;
+
+        /// <inheritdoc />
+        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            StepArguments.Check(model, state, step);
+            Vector3d velocity = state.Velocity + derivative.Acceleration * step;
+            return new FlightState(
+                state.Position + velocity * step,
+                velocity,
+                state.AngularVelocity + derivative.AngularAcceleration * step,
+                state.Time + step);
+        }
+    }
+}

@@ -1,0 +1,119 @@
+using System;
+
+namespace MagnusBall.Integration
+{
+    /// <summary>
+    /// A fixed-step ODE stepper for <see cref="FlightModel"/>. Implementations are stateless, immutable,
+    /// thread-safe and allocate nothing per step.
+    /// </summary>
+    /// <remarks>
+    /// <para>Every method here starts from the derivative at the start of the step (k1 = f(y_n)). The caller
+    /// passes it in, because a stepping loop already has it: the derivative at the end of one step is the
+    /// one the next step starts from, and it is also what the cubic Hermite dense output needs at the step's
+    /// end. So a loop pays <see cref="DerivativeEvaluationsPerStep"/> evaluations per step in all, and the
+    /// events between steps cost no extra evaluation. Use
+    /// <see cref="IntegratorExtensions.Step(IIntegrator, FlightModel, in FlightState, double)"/> when
+    /// you do not have it.</para>
+    /// </remarks>
+    public interface IIntegrator
+    {
+        /// <summary>A short, stable name: "euler", "semi-implicit-euler", "heun", "rk4", ...</summary>
+        string Name { get; }
+
+        /// <summary>The order of accuracy p: the global error falls as step^p.</summary>
+        int Order { get; }
+
+        /// <summary>
+        /// Derivative evaluations one step costs, counting the start derivative k1 that the caller passes
+        /// in (and that the previous step's end provides): 1 for the Euler methods, 2 for Heun, 4 for RK4.
+        /// </summary>
+        int DerivativeEvaluationsPerStep { get; }
+
+        /// <summary>Advances <paramref name="state"/> by <paramref name="step"/> seconds.</summary>
+        /// <param name="model">The flight model (the right-hand side).</param>
+        /// <param name="state">The state at the start of the step; every component finite.</param>
+        /// <param name="derivative">model.Derivative(state), the derivative at the start of the step.</param>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <returns>The state at time state.Time + step.</returns>
+        /// <exception cref="ArgumentException">
+        /// The state is not finite or the step is not finite and positive (checked before any work).
+        /// </exception>
+        FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step);
+    }
+
+    /// <summary>Conveniences over <see cref="IIntegrator"/>, and lookup by name.</summary>
+    public static class IntegratorExtensions
+    {
+        /// <summary>
+        /// Advances <paramref name="state"/> by <paramref name="step"/> seconds, evaluating the start
+        /// derivative itself.
+        /// </summary>
+        /// <param name="integrator">The method.</param>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
+        public static FlightState Step(this IIntegrator integrator, FlightModel model, in FlightState state, double step)
+        {
+            Require.NotNull(integrator, nameof(integrator));
+            StepArguments.Check(model, state, step);
+            return integrator.Step(model, state, model.Derivative(state), step);
+        }
+    }
+
+    /// <summary>The integrators the library ships, by name.</summary>
+    public static class Integrators
+    {
+        /// <summary>Every fixed-step integrator, lowest order first.</summary>
+        public static IIntegrator[] All => new IIntegrator[]
+        {
+            ExplicitEuler.Instance, SemiImplicitEuler.Instance, Heun.Instance, RungeKutta4.Instance,
+        };
+
+        /// <summary>The names <see cref="FromName"/> accepts.</summary>
+        public static string[] Names => new[] { ExplicitEuler.Instance.Name, SemiImplicitEuler.Instance.Name, Heun.Instance.Name, RungeKutta4.Instance.Name };
+
+        /// <summary>The integrator called <paramref name="name"/> (case-insensitive).</summary>
+        /// <param name="name">One of <see cref="Names"/>.</param>
+        /// <exception cref="ArgumentException">The name is unknown; the message lists the known names.</exception>
+        public static IIntegrator FromName(string name)
+        {
+            if (name != null)
+            {
+                foreach (IIntegrator integrator in All)
+                {
+                    if (string.Equals(integrator.Name, name, StringComparison.OrdinalIgnoreCase))
+                    {
+                        return integrator;
+                    }
+                }
+            }
+
+            throw new ArgumentException(
+                $"integrator must be one of {string.Join(", ", Names)}; got '{name ?? "null"}'.", nameof(name));
+        }
+    }
+
+    /// <summary>The argument checks every integrator makes before it does any work.</summary>
+    internal static class StepArguments
+    {
+        internal static void Check(FlightModel model, in FlightState state, double step)
+        {
+            if (model is null)
+            {
+                throw new ArgumentNullException(nameof(model), "model must not be null.");
+            }
+
+            if (!double.IsFinite(step) || step <= 0)
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(step), step, $"step must be a finite time step > 0 s; got {Require.Format(step)}.");
+            }
+
+            if (!state.IsFinite)
+            {
+                throw new ArgumentException($"state must have finite position, velocity, angular velocity and time; got {state}.", nameof(state));
+            }
+        }
+    }
+}
