@@ -141,7 +141,7 @@ namespace MagnusBall.Queries
             double maximumFlightTime = 10,
             double minimumElevationDegrees = -45,
             double maximumElevationDegrees = 80,
-            double elevationScanDegrees = 0.5,
+            double elevationScanDegrees = 2,
             double maximumSpeed = 100)
         {
             Require.NotNull(model, nameof(model));
@@ -484,18 +484,28 @@ namespace MagnusBall.Queries
         {
             failed = false;
             int side = 0;
+            double checkpoint = Math.Abs(b - a);
+            bool bisect = false;
             for (int i = 0; i < 200 && Math.Abs(b - a) > tolerance; i++)
             {
                 double width = b - a;
-                double x;
-                double t = double.IsFinite(fa) && double.IsFinite(fb) && fb > fa ? -fa / (fb - fa) : 0.5;
-                double guard = Math.Max(0.01, 0.25 * tolerance / Math.Abs(width));
-                if (i % 4 == 3 || !(t > guard && t < 1 - guard))
+                if (i % 3 == 2)
                 {
-                    t = 0.5;
+                    // Safeguard: if three steps did not halve the bracket, bisect once.
+                    bisect = Math.Abs(width) > 0.5 * checkpoint;
+                    checkpoint = Math.Abs(width);
                 }
 
-                x = a + width * t;
+                double t = 0.5;
+                if (!bisect && double.IsFinite(fa) && double.IsFinite(fb) && fb > fa)
+                {
+                    // Regula falsi, kept at least a quarter of the tolerance inside the bracket.
+                    double margin = Math.Min(0.25, 0.25 * tolerance / Math.Abs(width));
+                    t = Math.Max(margin, Math.Min(1 - margin, -fa / (fb - fa)));
+                }
+
+                bisect = false;
+                double x = a + width * t;
                 double fx = f.Evaluate(x);
                 if (double.IsNaN(fx))
                 {
@@ -578,6 +588,15 @@ namespace MagnusBall.Queries
                 if (down)
                 {
                     arrival = segment.StateAt(landing);
+                    landed = true;
+                    return false;
+                }
+
+                if (Ground.SignedDistance(segment.End.Position) < 0)
+                {
+                    // Launched from on (or under) the ground going down: it never crossed from above, but it is
+                    // in the ground all the same.
+                    arrival = segment.End;
                     landed = true;
                     return false;
                 }
