@@ -102,6 +102,11 @@ namespace MagnusBall.Aerodynamics
                 i++;
             }
 
+            if (s[i] == spinParameter)
+            {
+                return c[i]; // exactly on a point: its printed value, without rounding through t = 1
+            }
+
             double t = (spinParameter - s[i - 1]) / (s[i] - s[i - 1]);
             return c[i - 1] + t * (c[i] - c[i - 1]);
         }
