@@ -101,7 +101,7 @@ namespace MagnusBall.Cli
                 steps++;
 
                 double stepEnd = next.Time;
-                if (scenario.Ground is Plane ground &&
+                if (scenario.Ground is NamedPlane ground &&
                     StepEvents.TryPlaneCrossing(state, derivative, next, nextDerivative, ground.Point, ground.Normal, along: false, out FlightState touch))
                 {
                     landing = touch;
@@ -115,7 +115,7 @@ namespace MagnusBall.Cli
                 }
 
                 int firstNew = crossings.Count;
-                foreach (Plane plane in scenario.Planes)
+                foreach (NamedPlane plane in scenario.Planes)
                 {
                     if (StepEvents.TryPlaneCrossing(state, derivative, next, nextDerivative, plane.Point, plane.Normal, along: true, out FlightState at) &&
                         at.Time <= stepEnd)

@@ -23,13 +23,14 @@ namespace MagnusBall.Cli
 
         internal const string Usage =
             "usage:\n" +
-            "  magnusball simulate FILE [--csv] [--samples N] [--svg OUT.svg]\n" +
+            "  magnusball simulate FILE [--csv] [--samples N] [--svg OUT.svg [--svg-view side|top|both]]\n" +
             "  magnusball aim FILE\n" +
             "  magnusball --help | --version\n" +
             "FILE is a JSON file (\"-\" reads standard input); see docs/cli.md for the formats.\n" +
             "  --csv          print the trajectory as CSV instead of the JSON summary\n" +
             "  --samples N    N >= 2 states evenly spaced in time (adds \"samples\" to the JSON; CSV rows)\n" +
-            "  --svg OUT.svg  also draw side and top views of every scenario to OUT.svg\n";
+            "  --svg OUT.svg  also draw side and top views of every scenario to OUT.svg\n" +
+            "  --svg-view V   side, top or both (default both)\n";
 
         /// <summary>The process entry point.</summary>
         /// <param name="args">The command-line arguments.</param>
@@ -97,6 +98,7 @@ namespace MagnusBall.Cli
             bool csv = false;
             int? samples = null;
             string? svg = null;
+            var views = TrajectorySvg.SvgViews.Both;
             for (int i = 1; i < args.Length; i++)
             {
                 string a = args[i];
@@ -116,6 +118,16 @@ namespace MagnusBall.Cli
                         break;
                     case "--svg":
                         svg = Value(args, ref i, a);
+                        break;
+                    case "--svg-view":
+                        string v = Value(args, ref i, a);
+                        views = v switch
+                        {
+                            "both" => TrajectorySvg.SvgViews.Both,
+                            "side" => TrajectorySvg.SvgViews.Side,
+                            "top" => TrajectorySvg.SvgViews.Top,
+                            _ => throw new UsageError($"--svg-view must be side, top or both; got '{v}'"),
+                        };
                         break;
                     default:
                         if (a.StartsWith("--", StringComparison.Ordinal))
@@ -148,7 +160,7 @@ namespace MagnusBall.Cli
 
             if (svg != null)
             {
-                File.WriteAllText(svg, TrajectorySvg.Draw(results));
+                File.WriteAllText(svg, TrajectorySvg.Draw(results, views));
             }
 
             stdout.Write(csv ? ResultWriter.Csv(results, samples) : ResultWriter.Json(results, samples));

@@ -11,15 +11,15 @@ namespace MagnusBall.Cli
         FlightState Initial,
         IIntegrator Integrator,
         double Step,
-        Plane? Ground,
-        IReadOnlyList<Plane> Planes,
+        NamedPlane? Ground,
+        IReadOnlyList<NamedPlane> Planes,
         double MaxTime);
 
     /// <summary>
     /// A named plane through <paramref name="Point"/> with unit normal <paramref name="Normal"/>, and an
     /// optional rectangle on it (<paramref name="Bounds"/>) such as a net or a goal mouth.
     /// </summary>
-    internal sealed record Plane(string Name, Vector3d Point, Vector3d Normal, PlaneBounds? Bounds)
+    internal sealed record NamedPlane(string Name, Vector3d Point, Vector3d Normal, PlaneBounds? Bounds)
     {
         /// <summary>Signed distance of <paramref name="position"/> from the plane, positive on the normal's side.</summary>
         public double SignedDistance(Vector3d position) => Vector3d.Dot(position - Point, Normal);

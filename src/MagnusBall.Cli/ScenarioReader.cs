@@ -124,7 +124,7 @@ namespace MagnusBall.Cli
             var model = new FlightModel(ball, air, gravity, drag, lift, spinDecay);
             Vector3d up = model.Up;
 
-            Plane? ground;
+            NamedPlane? ground;
             if (s.Has("ground") && s.Optional("ground") is null)
             {
                 ground = null; // "ground": null switches the ground off.
@@ -134,7 +134,7 @@ namespace MagnusBall.Cli
                 JsonFields? groundFields = s.OptionalObject("ground");
                 if (groundFields is null)
                 {
-                    ground = up.LengthSquared > 0 ? new Plane("ground", Vector3d.Zero, up, null) : null;
+                    ground = up.LengthSquared > 0 ? new NamedPlane("ground", Vector3d.Zero, up, null) : null;
                 }
                 else
                 {
@@ -142,7 +142,7 @@ namespace MagnusBall.Cli
                 }
             }
 
-            var planes = new List<Plane>();
+            var planes = new List<NamedPlane>();
             JsonElement? planeList = s.Optional("planes");
             if (planeList.HasValue)
             {
@@ -243,7 +243,7 @@ namespace MagnusBall.Cli
             return decay;
         }
 
-        private static Plane ReadPlane(JsonFields fields, string name, Vector3d up, bool allowName)
+        private static NamedPlane ReadPlane(JsonFields fields, string name, Vector3d up, bool allowName)
         {
             if (allowName && name.Length == 0)
             {
@@ -273,7 +273,7 @@ namespace MagnusBall.Cli
             normal = normal.NormalizedOrZero();
             PlaneBounds? bounds = ReadBounds(fields.OptionalObject("bounds"), normal, up);
             fields.RejectUnknown();
-            return new Plane(name, point, normal, bounds);
+            return new NamedPlane(name, point, normal, bounds);
         }
 
         private static PlaneBounds? ReadBounds(JsonFields? fields, Vector3d normal, Vector3d up)

@@ -16,6 +16,14 @@ namespace MagnusBall.Cli
     /// </summary>
     internal static class TrajectorySvg
     {
+        /// <summary>Which views to draw.</summary>
+        internal enum SvgViews
+        {
+            Both,
+            Side,
+            Top,
+        }
+
         private const double Width = 900;
         private const double PanelHeight = 280;
         private const double Left = 70, Right = 20, Top = 40, Gap = 70, Bottom = 50;
@@ -34,7 +42,7 @@ namespace MagnusBall.Cli
             public double MaxB { get; set; }
         }
 
-        public static string Draw(IReadOnlyList<FlightResult> results)
+        public static string Draw(IReadOnlyList<FlightResult> results, SvgViews views = SvgViews.Both)
         {
             Scenario first = results[0].Scenario;
             Vector3d up = first.Model.Up.LengthSquared > 0 ? first.Model.Up : Vector3d.UnitZ;
@@ -45,20 +53,37 @@ namespace MagnusBall.Cli
                 forward = Vector3d.Cross(up, Math.Abs(up.X) < 0.9 ? Vector3d.UnitX : Vector3d.UnitY).NormalizedOrZero();
             }
 
+            // A launch aimed a little off a frame axis (a curling free kick) is drawn along that axis, so goal
+            // lines and nets stay square to the page.
+            foreach (Vector3d axis in new[] { Vector3d.UnitX, Vector3d.UnitY, Vector3d.UnitZ, -Vector3d.UnitX, -Vector3d.UnitY, -Vector3d.UnitZ })
+            {
+                if (Math.Abs(Vector3d.Dot(axis, up)) < 1e-9 && Vector3d.Dot(axis, forward) > Math.Cos(Math.PI / 6))
+                {
+                    forward = axis;
+                    break;
+                }
+            }
+
             Vector3d lateral = Vector3d.Cross(up, forward);
             Func<Vector3d, double> along = p => Vector3d.Dot(p, forward);
 
             var side = new View("side view", "height (m)", p => Vector3d.Dot(p, up), Top);
-            var top = new View("top view", "lateral, + = up x downrange (m)", p => Vector3d.Dot(p, lateral), Top + PanelHeight + Gap);
+            var top = new View("top view", "lateral, + = up x downrange (m)", p => Vector3d.Dot(p, lateral), views == SvgViews.Top ? Top : Top + PanelHeight + Gap);
+            var drawn = views switch
+            {
+                SvgViews.Side => new[] { side },
+                SvgViews.Top => new[] { top },
+                _ => new[] { side, top },
+            };
 
             var paths = results.Select(r => ResultWriter.Sample(r, SamplesPerFlight).Select(s => s.Position).ToList()).ToList();
-            double groundHeight = first.Ground is Plane g0 ? Vector3d.Dot(g0.Point, up) : 0;
+            double groundHeight = first.Ground is NamedPlane g0 ? Vector3d.Dot(g0.Point, up) : 0;
 
             // Extents: the flights, the ground, and the finite parts of bounded planes.
             var points = paths.SelectMany(p => p).ToList();
             foreach (FlightResult r in results)
             {
-                foreach (Plane plane in r.Scenario.Planes)
+                foreach (NamedPlane plane in r.Scenario.Planes)
                 {
                     if (plane.Bounds is PlaneBounds b)
                     {
@@ -70,7 +95,7 @@ namespace MagnusBall.Cli
             double minA = Math.Min(0, points.Min(along)), maxA = points.Max(along);
             foreach (FlightResult r in results)
             {
-                foreach (Plane plane in r.Scenario.Planes)
+                foreach (NamedPlane plane in r.Scenario.Planes)
                 {
                     // A plane across the flight (a net, a line) should be in the picture even if the ball stops short.
                     double nf = Vector3d.Dot(plane.Normal, forward);
@@ -97,19 +122,20 @@ namespace MagnusBall.Cli
             top.MaxB = maxB;
 
             var svg = new StringBuilder();
-            double height = Top + 2 * PanelHeight + Gap + Bottom;
+            double legendTop = drawn[^1].Y0 + PanelHeight + Bottom;
+            double height = legendTop + 16 * (results.Count + 1) + 10;
             svg.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{F(Width)}\" height=\"{F(height)}\" viewBox=\"0 0 {F(Width)} {F(height)}\" font-family=\"sans-serif\" font-size=\"12\">\n");
             svg.Append($"<rect width=\"{F(Width)}\" height=\"{F(height)}\" fill=\"white\"/>\n");
 
-            foreach (View view in new[] { side, top })
+            foreach (View view in drawn)
             {
                 Frame(svg, view);
-                if (view == side && first.Ground is Plane ground)
+                if (view == side && first.Ground is NamedPlane ground)
                 {
                     Trace(svg, view, ground, forward, up, "#6b4f2a", "3,0", 1.5);
                 }
 
-                foreach (Plane plane in results.SelectMany(r => r.Scenario.Planes).GroupBy(p => p.Name).Select(p => p.First()))
+                foreach (NamedPlane plane in results.SelectMany(r => r.Scenario.Planes).GroupBy(p => p.Name).Select(p => p.First()))
                 {
                     Vector3d normal2 = view == side ? up : lateral;
                     if (plane.Bounds is PlaneBounds b)
@@ -148,18 +174,18 @@ namespace MagnusBall.Cli
                 }
             }
 
-            // Legend, in the side view's upper right corner.
-            double legendY = Top + 16;
+            // Legend, under the views.
+            double legendY = legendTop;
             for (int i = 0; i < results.Count; i++)
             {
                 string colour = Palette[i % Palette.Length];
-                double x = Width - Right - 260;
+                double x = Left;
                 svg.Append($"<line x1=\"{F(x)}\" y1=\"{F(legendY - 4)}\" x2=\"{F(x + 22)}\" y2=\"{F(legendY - 4)}\" stroke=\"{colour}\" stroke-width=\"2.5\"/>\n");
                 svg.Append($"<text x=\"{F(x + 28)}\" y=\"{F(legendY)}\">{Escape(results[i].Scenario.Name)}</text>\n");
                 legendY += 16;
             }
 
-            svg.Append($"<text x=\"{F(Width - Right - 260)}\" y=\"{F(legendY + 4)}\" fill=\"#555\" font-size=\"11\">dot: landing; square: plane crossing</text>\n");
+            svg.Append($"<text x=\"{F(Left)}\" y=\"{F(legendY)}\" fill=\"#555\" font-size=\"11\">dot: landing; square: plane crossing; dashed: unbounded plane; bold: a plane's bounds (net, goal)</text>\n");
             svg.Append("</svg>\n");
             return svg.ToString();
         }
@@ -188,7 +214,7 @@ namespace MagnusBall.Cli
         }
 
         // The plane's trace in the view: points a*forward + b*axis with n.(p - q) = 0.
-        private static void Trace(StringBuilder svg, View view, Plane plane, Vector3d forward, Vector3d axis, string colour, string dash, double width)
+        private static void Trace(StringBuilder svg, View view, NamedPlane plane, Vector3d forward, Vector3d axis, string colour, string dash, double width)
         {
             double na = Vector3d.Dot(plane.Normal, forward), nb = Vector3d.Dot(plane.Normal, axis), c = Vector3d.Dot(plane.Normal, plane.Point);
             (double A, double B)? p0, p1;
@@ -223,7 +249,7 @@ namespace MagnusBall.Cli
             }
         }
 
-        private static void BoundedPlane(StringBuilder svg, View view, Plane plane, PlaneBounds bounds, Func<Vector3d, double> along)
+        private static void BoundedPlane(StringBuilder svg, View view, NamedPlane plane, PlaneBounds bounds, Func<Vector3d, double> along)
         {
             var quad = Corners(plane, bounds).Select(c => (along(c), view.Vertical(c))).ToList();
             quad = Clip(quad, view, closed: true);
@@ -240,7 +266,7 @@ namespace MagnusBall.Cli
         }
 
         // The rectangle's corners; an unbounded side is cut at 1 km.
-        private static IEnumerable<Vector3d> Corners(Plane plane, PlaneBounds b)
+        private static IEnumerable<Vector3d> Corners(NamedPlane plane, PlaneBounds b)
         {
             const double Far = 1000;
             double h0 = Math.Max(b.HeightMin, -Far), h1 = Math.Min(b.HeightMax, Far);

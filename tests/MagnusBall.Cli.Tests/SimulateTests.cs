@@ -301,6 +301,27 @@ namespace MagnusBall.Cli.Tests
             Assert.That(lines[1], Does.StartWith("\"drive, \"\"flat\"\"\",0,"));
         }
 
+        [TestCase("side", 1)]
+        [TestCase("top", 1)]
+        [TestCase("both", 2)]
+        public void SvgView_ChoosesTheViews(string view, int views)
+        {
+            string path = Path.Combine(Path.GetTempPath(), $"magnusball-{Guid.NewGuid():N}.svg");
+            try
+            {
+                CliRun run = CliRun.Simulate(CliRun.DriveJson, "--svg", path, "--svg-view", view);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+                XNamespace ns = "http://www.w3.org/2000/svg";
+                XDocument svg = XDocument.Load(path);
+                Assert.That(svg.Descendants(ns + "polyline").Count(), Is.EqualTo(views));
+                Assert.That(svg.Descendants(ns + "text").Count(t => t.Value.EndsWith(" view")), Is.EqualTo(views));
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
         [Test]
         public void Svg_DrawsBothViewsOfEveryFlight_AndThePlanes()
         {

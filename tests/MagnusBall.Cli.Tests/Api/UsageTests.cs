@@ -16,6 +16,7 @@ namespace MagnusBall.Cli.Tests.Api
         [TestCase(new[] { "simulate", "-", "--samples", "1" }, "--samples must be a whole number from 2", TestName = "Usage_SamplesTooFew")]
         [TestCase(new[] { "simulate", "-", "--samples", "ten" }, "--samples must be a whole number from 2", TestName = "Usage_SamplesNotANumber")]
         [TestCase(new[] { "simulate", "-", "--svg" }, "--svg needs a value", TestName = "Usage_SvgWithoutValue")]
+        [TestCase(new[] { "simulate", "-", "--svg", "x.svg", "--svg-view", "front" }, "--svg-view must be side, top or both; got 'front'", TestName = "Usage_BadSvgView")]
         [TestCase(new[] { "simulate", "/no/such/file.json" }, "cannot read '/no/such/file.json': no such file", TestName = "Usage_MissingInputFile")]
         [TestCase(new[] { "aim" }, "aim takes exactly one FILE", TestName = "Usage_AimWithoutFile")]
         public void UsageError_ExitsWithTwo(string[] args, string expected)
