@@ -574,7 +574,11 @@ namespace MagnusBall.Queries
             double endTime = launch.Time + MaximumFlightTime;
             while (stepper.State.Time < endTime)
             {
-                stepper.Step(Step);
+                if (!stepper.TryStep(Step))
+                {
+                    break; // diverged: this trial fails (margin -infinity), the solve goes on
+                }
+
                 HermiteSegment segment = stepper.LastSegment;
                 bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, out double crossing);
                 bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double landing);
