@@ -107,8 +107,9 @@ namespace MagnusBall.Queries
     /// crosses the target plane along its normal before it lands on the ground.</para>
     /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
     /// target and the target plane passes through the target with that normal. Heights are measured along
-    /// up. The elevation scan runs upward from the lower limit, so the lowest solution is returned (a drive,
-    /// not a lob).</para>
+    /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
+    /// solution is returned (a drive, not a lob); a solution window narrower than the scan width can be
+    /// missed, and when even the lower limit works, the lower limit is returned.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed class AimSolver
