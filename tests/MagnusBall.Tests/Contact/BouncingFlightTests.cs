@@ -193,6 +193,61 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void MultiBounceFlight_IsBitwiseTheSame_WhateverTheFrameRate()
+        {
+            // Frame time turned into fixed steps with an accumulator and the 0.25 s clamp (Fiedler), as the
+            // fixed-step driver does; the bounce points must not depend on how frame time was sliced.
+            const double step = 1.0 / 240;
+            BounceEvent[] Bounces(double[] deltas)
+            {
+                var model = Stepping.DriverShots.YUpTennis;
+                var flight = new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, Plane.Ground(model), Stepping.DriverShots.Drive);
+                var log = new BounceEvent[4];
+                int logged = 0;
+                Span<BounceEvent> buffer = stackalloc BounceEvent[4];
+                double accumulator = 0;
+                for (int frame = 0; logged < log.Length && frame < 100_000; frame++)
+                {
+                    accumulator += Math.Min(deltas[frame % deltas.Length], 0.25);
+                    while (accumulator >= step && logged < log.Length)
+                    {
+                        accumulator -= step;
+                        int n = flight.Step(step, buffer);
+                        for (int k = 0; k < n && logged < log.Length; k++)
+                        {
+                            log[logged++] = buffer[k];
+                        }
+                    }
+                }
+
+                Assert.That(logged, Is.EqualTo(log.Length));
+                return log;
+            }
+
+            BounceEvent[] reference = Bounces(Stepping.DriverShots.FixedRate(60, 1));
+            foreach ((string name, double[] deltas) in new[]
+            {
+                ("30 FPS", Stepping.DriverShots.FixedRate(30, 60)),
+                ("144 FPS", Stepping.DriverShots.FixedRate(144, 288)),
+                ("jittery 5-50 ms", Stepping.DriverShots.Jittery(20261124, 400)),
+                ("60 FPS, 0.5 s hitch", Stepping.DriverShots.WithHitch(20, 400)),
+            })
+            {
+                BounceEvent[] bounces = Bounces(deltas);
+                for (int i = 0; i < reference.Length; i++)
+                {
+                    // Bitwise: exact equality, no tolerance.
+                    Assert.That(bounces[i].ContactPoint, Is.EqualTo(reference[i].ContactPoint), $"{name}, bounce {i + 1}");
+                    Assert.That(bounces[i].Time, Is.EqualTo(reference[i].Time), $"{name}, bounce {i + 1}");
+                    Assert.That(bounces[i].Outcome.Velocity, Is.EqualTo(reference[i].Outcome.Velocity), $"{name}, bounce {i + 1}");
+                    Assert.That(bounces[i].Outcome.AngularVelocity, Is.EqualTo(reference[i].Outcome.AngularVelocity), $"{name}, bounce {i + 1}");
+                }
+            }
+
+            TestContext.Out.WriteLine($"bounces at {reference[0].ContactPoint}, {reference[1].ContactPoint}, {reference[2].ContactPoint}");
+        }
+
+        [Test]
         public void StateAt_FollowsTheBounce_InsideTheStep()
         {
             var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
