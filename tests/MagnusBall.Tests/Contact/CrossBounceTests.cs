@@ -135,7 +135,10 @@ namespace MagnusBall.Tests.Contact
             BounceOutcome edge = Court.ZUp.Bounce(model, Tennis, 20, lo, 0);
             double vx2 = Court.ZUp.Forward(edge.Velocity);
             double rw2 = Tennis.Radius * Vector3d.Dot(edge.AngularVelocity, Court.ZUp.TopspinAxis);
-            TestContext.Out.WriteLine($"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}");
+            BounceOutcome gripSide = Court.ZUp.Bounce(model, Tennis, 20, hi, 0);
+            TestContext.Out.WriteLine(
+                $"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}; across it vx2 jumps by " +
+                $"{Court.ZUp.Forward(gripSide.Velocity) - vx2:F4} m/s, angle by {Court.ZUp.AngleDegrees(gripSide) - Court.ZUp.AngleDegrees(edge):F3} deg");
             // The bisection leaves the angle within ~1e-14 deg; the slip there is rounding-level.
             Assert.That(vx2 - rw2, Is.EqualTo(0).Within(1e-9));
 
