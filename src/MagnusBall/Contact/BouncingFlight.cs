@@ -83,7 +83,8 @@ namespace MagnusBall.Contact
     /// point is centre - R n). Each bounce costs one extra derivative evaluation (at the post-bounce state)
     /// plus the integrator's evaluations for the remainder of the step.</para>
     /// <para>Rest condition: when the outgoing normal speed is below <see cref="RestNormalSpeed"/> (default
-    /// 0.1 m/s: a hop of v^2/2g = 0.5 mm) the ball stops bouncing and rolls. It keeps its angular momentum
+    /// 0.1 m/s: a hop of v^2/2g = 0.5 mm) on a surface that gravity presses it into, the ball stops bouncing and rolls
+    /// (on a wall or a ceiling it never rests: it bounces and flies on). It keeps its angular momentum
     /// about the contact point, so it rolls at Lam/(1 + alpha) (the speed a sliding ball settles to when
     /// friction brings it to rolling); spin about the normal is kept. Rolling without slip, the ball is
     /// accelerated by the tangential part of the flight model's acceleration (the slope's gravity, drag, wind)
@@ -104,7 +105,11 @@ namespace MagnusBall.Contact
         /// </summary>
         public const double DefaultRollingResistance = 0.03;
 
-        /// <summary>The most sub-segments (bounces + 1) one step records for <see cref="StateAt"/>; further bounces in the same step end in rolling.</summary>
+        /// <summary>
+        /// The most Hermite pieces one step records for <see cref="StateAt"/>; also the most bounces one step
+        /// takes (one fewer): a ball that would bounce more often in one step starts rolling, or on a surface
+        /// gravity does not press it into (a wall), finishes the step without looking for more contacts.
+        /// </summary>
         public const int MaxSegmentsPerStep = 16;
 
         private readonly HermiteSegment[] _segments = new HermiteSegment[MaxSegmentsPerStep];
@@ -115,6 +120,7 @@ namespace MagnusBall.Contact
         private readonly double _rollingDeceleration; // c_rr * g_n
         private readonly bool _canRest;  // the slope alone cannot keep the ball moving against rolling resistance
         private readonly bool _hasAero;
+        private readonly bool _gravityHolds; // gravity pushes the ball into the surface: it can come to rest on it
 
         private FlightState _state;
         private StateDerivative _derivative;
@@ -160,6 +166,7 @@ namespace MagnusBall.Contact
             double gn = -Vector3d.Dot(model.Gravity, _normal);
             Vector3d gt = model.Gravity + _normal * gn;
             _rollingDeceleration = rollingResistance * Math.Max(gn, 0);
+            _gravityHolds = gn > 0;
             _canRest = gt.Length / (1 + _inertiaFactor) <= _rollingDeceleration;
             _hasAero = model.Air.Density > 0 && (model.Drag != null || model.Lift != null);
             Reset(start);
@@ -249,7 +256,7 @@ namespace MagnusBall.Contact
                 StateDerivative nextDerivative = Model.Derivative(next);
                 _derivativeEvaluations += Integrator.DerivativeEvaluationsPerStep;
                 var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
-                if (!segment.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, out double contactTime))
+                if (found >= MaxSegmentsPerStep - 1 || !segment.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, out double contactTime))
                 {
                     AddSegment(segment);
                     _state = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
@@ -263,7 +270,9 @@ namespace MagnusBall.Contact
                 AddSegment(contactTime > segment.StartTime ? Truncated(segment, contactTime) : default);
                 BounceOutcome outcome = BounceModel.Bounce(Model.Ball, _normal, touching.Velocity, touching.AngularVelocity);
                 double outgoingNormalSpeed = Vector3d.Dot(outcome.Velocity, _normal);
-                bool roll = outcome.Regime == BounceRegime.None || outgoingNormalSpeed < RestNormalSpeed || _segmentCount >= MaxSegmentsPerStep - 1;
+                // Rest only where gravity holds the ball on the surface (a floor or a slope, not a wall or a ceiling).
+                bool roll = _gravityHolds &&
+                    (outcome.Regime == BounceRegime.None || outgoingNormalSpeed < RestNormalSpeed || found >= MaxSegmentsPerStep - 2);
                 _bounceCount++;
                 _lastBounce = new BounceEvent(
                     _bounceCount, contactTime, centre, centre - _normal * _radius, touching.Velocity, touching.AngularVelocity, outcome, roll);

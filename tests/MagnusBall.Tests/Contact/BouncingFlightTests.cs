@@ -247,6 +247,29 @@ namespace MagnusBall.Tests.Contact
             TestContext.Out.WriteLine($"bounces at {reference[0].ContactPoint}, {reference[1].ContactPoint}, {reference[2].ContactPoint}");
         }
 
+        [TestCase(10.0)]
+        [TestCase(0.05)]
+        public void AWall_BouncesTheBallBack_AndNeverHoldsIt(double speed)
+        {
+            // A vertical wall (normal -x) in a z-up world: gravity does not press the ball into it, so even a
+            // bounce slower than the rest threshold flies on instead of rolling.
+            var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
+            var wall = new Plane(new Vector3d(1, 0, 0), -Vector3d.UnitX);
+            var start = new FlightState(new Vector3d(1 - Ball.Tennis.Radius - 0.005, 0, 2), new Vector3d(speed, 0, 0), new Vector3d(0, 100, 0));
+            var flight = new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, wall, start);
+            var log = new BounceEvent[4];
+            int logged = 0;
+            Run(flight, 1.0 / 120, 240, log, ref logged);
+            Assert.That(logged, Is.EqualTo(1));
+            Assert.That(log[0].StartedRolling, Is.False);
+            Assert.That(flight.Phase, Is.EqualTo(FlightPhase.Flying));
+            Assert.That(log[0].Position.X, Is.EqualTo(1 - Ball.Tennis.Radius).Within(1e-15));
+            // Back off the wall at e_y of the incoming normal speed (the normal is -x).
+            Assert.That(-log[0].Outcome.Velocity.X, Is.EqualTo(log[0].Outcome.NormalRestitution * log[0].IncomingVelocity.X).Within(1e-12));
+            Assert.That(flight.State.Velocity.X, Is.LessThan(0));
+            Assert.That(flight.State.Position.X, Is.LessThan(1 - Ball.Tennis.Radius));
+        }
+
         [Test]
         public void StateAt_FollowsTheBounce_InsideTheStep()
         {

@@ -330,6 +330,33 @@ namespace MagnusBall.Tests.Contact
             }
         }
 
+        [Test]
+        public void ExtremeButFiniteInput_GivesFiniteOutput()
+        {
+            double[] magnitudes = { 0, 1e-300, 1e-12, 1, 1e6, 1e100, 1e150 };
+            foreach (Surface surface in Surface.All)
+            {
+                var model = new CrossBounce(surface);
+                foreach (double speed in magnitudes)
+                {
+                    foreach (double spin in magnitudes)
+                    {
+                        foreach (Vector3d normal in new[] { Vector3d.UnitZ, new Vector3d(1e-150, 0, 1e-150), new Vector3d(3e100, -1e100, 2e100) })
+                        {
+                            Vector3d v = new Vector3d(0.8, 0.3, -0.5) * speed;
+                            if (Vector3d.Dot(v, normal) > 0)
+                            {
+                                v = -v;
+                            }
+
+                            BounceOutcome o = model.Bounce(Tennis, normal, v, new Vector3d(0.2, -0.9, 0.4) * spin);
+                            Assert.That(o.Velocity.IsFinite && o.AngularVelocity.IsFinite, Is.True, $"{surface.Name}: |v| {speed}, |w| {spin}, n {normal}");
+                        }
+                    }
+                }
+            }
+        }
+
         public static Surface[] AllSurfaces => Surface.All;
 
         public static Surface[] Courts => Surface.Courts;
