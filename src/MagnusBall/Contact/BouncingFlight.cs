@@ -135,7 +135,7 @@ namespace MagnusBall.Contact
         /// <param name="model">The flight model (its ball's radius and inertia factor are used at contact).</param>
         /// <param name="integrator">The integrator.</param>
         /// <param name="bounceModel">The contact model (for example <see cref="CrossBounce.Hard"/>).</param>
-        /// <param name="surface">The surface plane (a court: point on it, normal toward the ball). The ball touches it when its centre is one radius above it.</param>
+        /// <param name="plane">The surface's plane (a court: a point on it and its normal toward the ball, for example <see cref="Plane.Ground"/>). The ball touches it when its centre is one radius above it.</param>
         /// <param name="start">The launch state; finite; its centre should be more than one radius above the surface.</param>
         /// <param name="restNormalSpeed">Below this outgoing normal speed, m/s, the ball rolls instead of bouncing; finite and &gt;= 0.</param>
         /// <param name="rollingResistance">Rolling-resistance coefficient c_rr (deceleration c_rr g_n); finite and &gt;= 0.</param>
@@ -145,7 +145,7 @@ namespace MagnusBall.Contact
             FlightModel model,
             IIntegrator integrator,
             IBounceModel bounceModel,
-            Plane surface,
+            Plane plane,
             in FlightState start,
             double restNormalSpeed = DefaultRestNormalSpeed,
             double rollingResistance = DefaultRollingResistance)
@@ -153,16 +153,16 @@ namespace MagnusBall.Contact
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
             BounceModel = Require.NotNull(bounceModel, nameof(bounceModel));
-            Require.NonZero(surface.Normal, nameof(surface));
+            Require.NonZero(plane.Normal, nameof(plane));
             RestNormalSpeed = Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
             RollingResistance = Require.NonNegative(rollingResistance, nameof(rollingResistance));
             RequireFinite(start, nameof(start));
 
-            Surface = surface;
-            _normal = surface.Normal;
+            Plane = plane;
+            _normal = plane.Normal;
             _radius = model.Ball.Radius;
             _inertiaFactor = model.Ball.InertiaFactor;
-            _contactPlane = new Plane(surface.Point + _normal * _radius, _normal);
+            _contactPlane = new Plane(plane.Point + _normal * _radius, _normal);
             double gn = -Vector3d.Dot(model.Gravity, _normal);
             Vector3d gt = model.Gravity + _normal * gn;
             _rollingDeceleration = rollingResistance * Math.Max(gn, 0);
@@ -181,8 +181,8 @@ namespace MagnusBall.Contact
         /// <summary>The contact model.</summary>
         public IBounceModel BounceModel { get; }
 
-        /// <summary>The surface plane.</summary>
-        public Plane Surface { get; }
+        /// <summary>The surface's plane.</summary>
+        public Plane Plane { get; }
 
         /// <summary>Below this outgoing normal speed, m/s, a bounce turns into rolling.</summary>
         public double RestNormalSpeed { get; }

@@ -330,7 +330,7 @@ namespace MagnusBall.Tests.Contact
             Assert.That(() => new BouncingFlight(model, RungeKutta4.Instance, null!, ground, start),
                 Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("bounceModel"));
             Assert.That(() => new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, default, start),
-                Throws.ArgumentException.With.Property("ParamName").EqualTo("surface"));
+                Throws.ArgumentException.With.Property("ParamName").EqualTo("plane"));
             Assert.That(() => new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, ground, start, double.NaN),
                 Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("restNormalSpeed"));
             Assert.That(() => new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, ground, start, 0.1, -1),
