@@ -271,6 +271,33 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void RandomShots_StayFiniteAndAboveTheCourt_AndComeToRest()
+        {
+            var random = new Random(42);
+            Surface[] courts = Surface.Courts;
+            for (int shot = 0; shot < 60; shot++)
+            {
+                Court court = Court.All[shot % 3];
+                var model = Tennis(court.Frame.Up * -Gravity.Standard);
+                Vector3d v = court.Frame.Map(5 + 45 * random.NextDouble(), 10 * random.NextDouble() - 5, 20 * random.NextDouble() - 8);
+                Vector3d w = CrossBounceTests.RandomUnit(random) * (600 * random.NextDouble());
+                var start = new FlightState(court.Frame.Map(0, 0, 0.3 + 2.7 * random.NextDouble()), v, w);
+                var flight = new BouncingFlight(model, RungeKutta4.Instance, new CrossBounce(courts[shot % 3]), Plane.Ground(model), start);
+                int steps = 0;
+                while (flight.Phase != FlightPhase.Stopped && steps < 120 * 120)
+                {
+                    flight.Step(1.0 / 120, Span<BounceEvent>.Empty);
+                    steps++;
+                    Assert.That(flight.State.IsFinite, Is.True, $"shot {shot}, step {steps}");
+                    // The centre never ends a step below the contact height (one radius), beyond rounding.
+                    Assert.That(court.Up(flight.State.Position), Is.GreaterThan(Ball.Tennis.Radius - 1e-9), $"shot {shot}, step {steps}");
+                }
+
+                Assert.That(flight.Phase, Is.EqualTo(FlightPhase.Stopped), $"shot {shot}: {flight.BounceCount} bounces");
+            }
+        }
+
+        [Test]
         public void StateAt_FollowsTheBounce_InsideTheStep()
         {
             var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
