@@ -330,6 +330,18 @@ namespace MagnusBall.Tests.Contact
             }
         }
 
+        [TestCaseSource(nameof(AllSurfaces))]
+        public void NearlyVerticalDrop_LeavesNearlyVertically(Surface surface)
+        {
+            // The offset torque resists rolling and cannot reverse it, so the bounce is continuous as the
+            // tangential speed goes to zero: 1 um/s in, at most about that out.
+            var model = new CrossBounce(surface);
+            BounceOutcome o = model.Bounce(Tennis, Vector3d.UnitZ, new Vector3d(1e-6, 0, -10), Vector3d.Zero);
+            double tangential = Math.Sqrt(o.Velocity.X * o.Velocity.X + o.Velocity.Y * o.Velocity.Y);
+            Assert.That(tangential, Is.LessThanOrEqualTo(1e-6));
+            Assert.That(Tennis.Radius * o.AngularVelocity.Length, Is.LessThanOrEqualTo(1e-6));
+        }
+
         [Test]
         public void ExtremeButFiniteInput_GivesFiniteOutput()
         {
