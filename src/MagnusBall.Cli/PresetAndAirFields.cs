@@ -1,4 +1,7 @@
 using System;
+using System.Collections.Generic;
+using System.Text.Json;
+using MagnusBall.Aerodynamics;
 using MagnusBall.Presets;
 
 namespace MagnusBall.Cli
@@ -148,6 +151,44 @@ namespace MagnusBall.Cli
 
             fields.RejectUnknown();
             return air;
+        }
+
+        /// <summary>
+        /// A tabulated lift law, {"model": "table", "points": [[S, C_L], ...]}: S increasing from &gt;= 0, linear
+        /// between points, held at the end values outside (<see cref="PiecewiseLinearLift"/>).
+        /// </summary>
+        public static PiecewiseLinearLift ReadLiftTable(JsonFields fields)
+        {
+            JsonElement points = fields.Required("points");
+            string path = fields.PathOf("points");
+            if (points.ValueKind != JsonValueKind.Array || points.GetArrayLength() == 0)
+            {
+                throw new InputError(path, "must be a non-empty array of [S, C_L] pairs; got " + JsonFields.Describe(points));
+            }
+
+            var s = new List<double>();
+            var c = new List<double>();
+            int i = 0;
+            foreach (JsonElement point in points.EnumerateArray())
+            {
+                string pointPath = $"{path}[{i}]";
+                if (point.ValueKind != JsonValueKind.Array || point.GetArrayLength() != 2)
+                {
+                    throw new InputError(pointPath, "must be a pair [S, C_L] of finite numbers; got " + JsonFields.Describe(point));
+                }
+
+                double spin = JsonFields.ReadNumber(point[0], pointPath + "[0]");
+                if (spin < 0 || (s.Count > 0 && !(spin > s[s.Count - 1])))
+                {
+                    throw new InputError(pointPath + "[0]", "spin parameters must be >= 0 and strictly increasing; got " + JsonFields.Format(spin));
+                }
+
+                s.Add(spin);
+                c.Add(JsonFields.ReadNumber(point[1], pointPath + "[1]"));
+                i++;
+            }
+
+            return new PiecewiseLinearLift(s, c);
         }
     }
 }

@@ -189,10 +189,13 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            IDragModel? drag = ReadModelName(fields, "none", "constant", "stepanek") switch
+            IDragModel? drag = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin", "goff-carre-soccer", "nathan-baseball") switch
             {
                 "constant" => new ConstantDrag(fields.NonNegativeRequired("cd")),
                 "stepanek" => StepanekDrag.Instance,
+                "linear-spin" => new LinearSpinDrag(fields.NonNegativeRequired("cd0"), fields.NonNegativeRequired("k")),
+                "goff-carre-soccer" => GoffCarreSoccerDrag.Instance,
+                "nathan-baseball" => NathanBaseballDrag.Instance,
                 _ => null,
             };
             fields.RejectUnknown();
@@ -206,11 +209,16 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            ILiftModel? lift = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin") switch
+            ILiftModel? lift = ReadModelName(
+                fields, "none", "constant", "stepanek", "linear-spin", "nathan-baseball", "goff-carre-soccer", "smits-smith-golf", "table") switch
             {
                 "constant" => new ConstantLift(fields.Number("cl")),
                 "stepanek" => StepanekLift.Instance,
                 "linear-spin" => new LinearSpinLift(fields.Number("k")),
+                "nathan-baseball" => NathanBaseballLift.Instance,
+                "goff-carre-soccer" => PiecewiseLinearLift.SoccerGoffCarre,
+                "smits-smith-golf" => PiecewiseLinearLift.GolfSmitsSmith,
+                "table" => PresetAndAirFields.ReadLiftTable(fields),
                 _ => null,
             };
             fields.RejectUnknown();
@@ -224,9 +232,10 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            ISpinDecayModel? decay = ReadModelName(fields, "none", "exponential") switch
+            ISpinDecayModel? decay = ReadModelName(fields, "none", "exponential", "per-metre") switch
             {
                 "exponential" => new ExponentialSpinDecay(fields.Positive("tau")),
+                "per-metre" => new SpeedProportionalSpinDecay(fields.NonNegativeRequired("k")),
                 _ => null,
             };
             fields.RejectUnknown();
