@@ -81,16 +81,16 @@ namespace MagnusBall.Cli.Tests
         [Test]
         public void PublishedLaws_HaveModelNames()
         {
-            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"drag": {"model": "goff-carre-soccer"}}""")).Model.Drag, Is.SameAs(GoffCarreSoccerDrag.Instance));
-            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"drag": {"model": "nathan-baseball"}}""")).Model.Drag, Is.SameAs(NathanBaseballDrag.Instance));
+            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"drag": {"model": "goff-carre"}}""")).Model.Drag, Is.SameAs(GoffCarreSoccerDrag.Instance));
+            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"drag": {"model": "nathan"}}""")).Model.Drag, Is.SameAs(NathanBaseballDrag.Instance));
             var linear = (LinearSpinDrag)Read(x => x["aero"] = JsonNode.Parse("""{"drag": {"model": "linear-spin", "cd0": 0.24, "k": 0.18}}""")).Model.Drag!;
             Assert.That((linear.Intercept, linear.Slope), Is.EqualTo((0.24, 0.18)));
-            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "nathan-baseball"}}""")).Model.Lift, Is.SameAs(NathanBaseballLift.Instance));
-            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "goff-carre-soccer"}}""")).Model.Lift, Is.SameAs(PiecewiseLinearLift.SoccerGoffCarre));
+            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "nathan"}}""")).Model.Lift, Is.SameAs(NathanBaseballLift.Instance));
+            Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "goff-carre"}}""")).Model.Lift, Is.SameAs(PiecewiseLinearLift.SoccerGoffCarre));
             Assert.That(Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "smits-smith-golf"}}""")).Model.Lift, Is.SameAs(PiecewiseLinearLift.GolfSmitsSmith));
             var table = (PiecewiseLinearLift)Read(x => x["aero"] = JsonNode.Parse("""{"lift": {"model": "table", "points": [[0, 0], [0.2, 0.3], [0.5, 0.35]]}}""")).Model.Lift!;
             Assert.That(table.Evaluate(0.1), Is.EqualTo(0.15).Within(1e-15));
-            var decay = (SpeedProportionalSpinDecay)Read(x => x["spinDecay"] = JsonNode.Parse("""{"model": "per-metre", "k": 0.003}""")).Model.SpinDecay!;
+            var decay = (SpeedProportionalSpinDecay)Read(x => x["spinDecay"] = JsonNode.Parse("""{"model": "speed-proportional", "k": 0.003}""")).Model.SpinDecay!;
             Assert.That(decay.RatePerMetre, Is.EqualTo(0.003));
         }
 
@@ -177,7 +177,7 @@ namespace MagnusBall.Cli.Tests
         [TestCase("""{"aero": {"lift": {"model": "table", "points": []}}}""", "scenarios[0].aero.lift.points: must be a non-empty array")]
         [TestCase("""{"aero": {"lift": {"model": "table", "points": [[0.1]]}}}""", "scenarios[0].aero.lift.points[0]: must be a pair")]
         [TestCase("""{"aero": {"drag": {"model": "linear-spin", "cd0": 0.2}}}""", "scenarios[0].aero.drag.k: required field is missing")]
-        [TestCase("""{"spinDecay": {"model": "per-metre", "k": -1}}""", "scenarios[0].spinDecay.k: must be finite and >= 0")]
+        [TestCase("""{"spinDecay": {"model": "speed-proportional", "k": -1}}""", "scenarios[0].spinDecay.k: must be finite and >= 0")]
         [TestCase("""{"ball": {"mass": -1}}""", "scenarios[0].ball.mass: must be finite and > 0; got -1")]
         [TestCase("""{"ball": {"size": 5}}""", "scenarios[0].ball.size: unknown field")]
         public void BadPresetOrAirFields_ExitWithCode2NamingTheField(string patch, string expected)
