@@ -161,6 +161,34 @@ namespace MagnusBall.Cli.Tests
             Assert.That(landing[1].GetDouble(), Is.GreaterThan(1));
         }
 
+        [Test]
+        public void AimFiles_AcceptPresetsAndWeatherToo()
+        {
+            // The Javorova free-kick aim with the soccer preset and 20 degC, 50 % humid air instead of a ball,
+            // aero and density: the solver still threads (20, 3.2, 2.2) at 24.15 m/s.
+            string json = """
+                {"aims": [{"name": "free kick", "preset": "soccer", "air": {"temperatureC": 20, "relativeHumidity": 0.5},
+                  "gravity": [0, 0, -9.81], "step": 0.004166666666666667, "maxTime": 4,
+                  "launch": {"position": [0, 0, 0.11], "spin": {"sidespin": 61.86}},
+                  "find": {"kind": "angles-to-reach", "speed": 24.15, "target": [20, 3.2, 2.2]}}]}
+                """;
+            string path = System.IO.Path.GetTempFileName();
+            try
+            {
+                System.IO.File.WriteAllText(path, json);
+                CliRun run = CliRun.Of("aim", path);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+                JsonElement result = run.Json().GetProperty("results")[0];
+                Assert.That(result.GetProperty("status").GetString(), Is.EqualTo("solved"));
+                // 1e-3 m: far above the solver's reported miss (1e-7 m here), far below any real aiming error.
+                Assert.That(result.GetProperty("miss").GetDouble(), Is.LessThan(1e-3));
+            }
+            finally
+            {
+                System.IO.File.Delete(path);
+            }
+        }
+
         [TestCase("""{"preset": "curling"}""", "scenarios[0].preset: unknown preset 'curling'; expected one of: tennis, tennis-free-flight, soccer, baseball, golf, golf-smits-smith, table-tennis, basketball")]
         [TestCase("""{"preset": 3}""", "scenarios[0].preset:")]
         [TestCase("""{"air": {"density": 1.2, "temperatureC": 20}}""", "scenarios[0].air.density: give either a density or the weather")]
