@@ -1,45 +1,252 @@
 using System;
+using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
-using MagnusBall;
-using MagnusBall.Aerodynamics;
-using MagnusBall.Integration;
+using System.IO;
 
 namespace MagnusBall.Samples.TennisScene.Headless
 {
     /// <summary>
-    /// A minimal headless run of one tennis shot: a 30 m/s topspin drive from 1 m, stepped with RK4 at
-    /// 1/240 s under Stepanek's coefficients, printing where it lands.
+    /// The tennis scene without Unity: the same shot definitions, court and measurements as the Unity
+    /// scripts (samples/TennisScene/Shared, compiled into both), each shot flown through the library's
+    /// FixedStepDriver. Prints one table row per shot and writes an SVG of side and top views.
     /// </summary>
     public static class Program
     {
+        private const string Usage =
+@"usage: dotnet run --project samples/TennisScene/Headless -- [options]
+
+With no shot options, flies the six standard shots (flat serve, kick serve, topspin forehand,
+slice backhand, topspin lob, drop shot). Any shot option flies one custom shot instead, starting
+from the topspin forehand's values.
+
+shot options (court frame: x from the net toward the far baseline, y up, z to the hitter's left):
+  --shot NAME         one of the standard shots by name (e.g. ""kick serve"")
+  --speed M/S         launch speed (> 0)
+  --elevation DEG     launch angle above horizontal (-90..90)
+  --azimuth DEG       launch direction, + toward the hitter's left
+  --topspin RPM       topspin, negative for backspin
+  --sidespin RPM      sidespin, + curls toward the hitter's left
+  --height M          hitting height of the ball's centre (> 0); a serve is 2.87
+  --x M               hitting position along the court (< 0: the near side; the near baseline is -11.885)
+  --z M               hitting position across the court
+  --target AREA       court | deuce | ad  (what counts as in)
+scene options:
+  --integrator NAME   euler | semi-implicit-euler | heun | rk4 (default rk4)
+  --step S            fixed step (default 1/240)
+  --density RHO       air density, kg/m^3 (default 1.21)
+  --thesis-coefficients  constant C_D 0.55 and C_M 0.175 (Agrawal 2023) instead of Stepanek's
+  --svg PATH          where to write the picture (default out/tennis-scene.svg)
+  --no-svg            do not write the picture
+  --help              this text
+exit codes: 0 ok, 2 bad options";
+
         /// <summary>Entry point.</summary>
-        public static int Main()
+        /// <param name="args">Command-line options (see --help).</param>
+        /// <returns>0 on success, 2 on bad options.</returns>
+        public static int Main(string[] args)
         {
-            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance);
-            double elevation = 8 * Math.PI / 180;
-            var velocity = new Vector3d(30 * Math.Cos(elevation), 0, 30 * Math.Sin(elevation));
-            var state = new FlightState(new Vector3d(0, 0, 1), velocity, Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRevolutionsPerSecond(20)));
-            IIntegrator integrator = RungeKutta4.Instance;
-            const double step = 1.0 / 240;
-            StateDerivative derivative = model.Derivative(state);
-            while (true)
+            Options options;
+            try
             {
-                FlightState next = integrator.Step(model, state, derivative, step);
-                if (next.Position.Z < 0)
+                options = Options.Parse(args);
+            }
+            catch (ArgumentException e)
+            {
+                Console.Error.WriteLine("error: " + e.Message);
+                Console.Error.WriteLine("run with --help for the options.");
+                return 2;
+            }
+
+            if (options.Help)
+            {
+                Console.WriteLine(Usage);
+                return 0;
+            }
+
+            var clock = Stopwatch.StartNew();
+            var simulation = new ShotSimulation(options.Settings);
+            var reports = new List<ShotReport>();
+            var paths = new List<Vector3d[]>();
+            var buffer = new Vector3d[(int)(ShotSimulation.MaxFlightSeconds / options.Settings.FixedStep) + 4];
+            foreach (TennisShot shot in options.Shots)
+            {
+                ShotReport report = simulation.Run(shot, buffer);
+                reports.Add(report);
+                paths.Add(buffer.AsSpan(0, report.PathCount).ToArray());
+            }
+
+            Console.WriteLine("MagnusBall tennis scene (headless): " + options.Settings.Describe());
+            Console.WriteLine();
+            Console.Write(ShotTable.Format(reports));
+            Console.WriteLine();
+            Console.WriteLine(ShotTable.Legend);
+
+            if (options.SvgPath != null)
+            {
+                string path = Path.GetFullPath(options.SvgPath);
+                string? directory = Path.GetDirectoryName(path);
+                if (!string.IsNullOrEmpty(directory))
                 {
-                    double f = state.Position.Z / (state.Position.Z - next.Position.Z);
-                    Vector3d landing = Vector3d.Lerp(state.Position, next.Position, f);
-                    double time = state.Time + f * step;
-                    Console.WriteLine(string.Format(
-                        CultureInfo.InvariantCulture,
-                        "topspin drive 30 m/s, 8 deg, 20 rev/s: lands at x = {0:F3} m, y = {1:F3} m after {2:F3} s",
-                        landing.X, landing.Y, time));
-                    return 0;
+                    Directory.CreateDirectory(directory);
                 }
 
-                state = next;
-                derivative = model.Derivative(state);
+                File.WriteAllText(path, SvgPicture.Draw(reports, paths, options.Settings.Describe()));
+                Console.WriteLine();
+                Console.WriteLine("picture: " + path);
             }
+
+            Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "done in {0:F0} ms", clock.Elapsed.TotalMilliseconds));
+            return 0;
+        }
+    }
+
+    /// <summary>The parsed command line.</summary>
+    internal sealed class Options
+    {
+        public bool Help { get; private set; }
+
+        public SceneSettings Settings { get; private set; } = new SceneSettings();
+
+        public List<TennisShot> Shots { get; } = new List<TennisShot>();
+
+        public string? SvgPath { get; private set; } = Path.Combine("out", "tennis-scene.svg");
+
+        public static Options Parse(string[] args)
+        {
+            var options = new Options();
+            var values = new Dictionary<string, string>(StringComparer.Ordinal);
+            bool thesis = false;
+            for (int i = 0; i < args.Length; i++)
+            {
+                string arg = args[i];
+                switch (arg)
+                {
+                    case "--help":
+                    case "-h":
+                        options.Help = true;
+                        continue;
+                    case "--no-svg":
+                        options.SvgPath = null;
+                        continue;
+                    case "--thesis-coefficients":
+                        thesis = true;
+                        continue;
+                    case "--shot":
+                    case "--speed":
+                    case "--elevation":
+                    case "--azimuth":
+                    case "--topspin":
+                    case "--sidespin":
+                    case "--height":
+                    case "--x":
+                    case "--z":
+                    case "--target":
+                    case "--integrator":
+                    case "--step":
+                    case "--density":
+                    case "--svg":
+                        if (i + 1 >= args.Length)
+                        {
+                            throw new ArgumentException($"{arg} needs a value.");
+                        }
+
+                        if (values.ContainsKey(arg))
+                        {
+                            throw new ArgumentException($"{arg} is given twice.");
+                        }
+
+                        values[arg] = args[++i];
+                        continue;
+                    default:
+                        throw new ArgumentException($"unknown option '{arg}'.");
+                }
+            }
+
+            if (values.TryGetValue("--svg", out string? svg))
+            {
+                if (string.IsNullOrWhiteSpace(svg))
+                {
+                    throw new ArgumentException("--svg needs a file path.");
+                }
+
+                options.SvgPath = svg;
+            }
+
+            double step = Number(values, "--step", 1.0 / 240, min: 1e-6, max: 0.1);
+            double density = Number(values, "--density", 1.21, min: 0, max: 5);
+            string integrator = values.TryGetValue("--integrator", out string? name) ? name : "rk4";
+            try
+            {
+                options.Settings = new SceneSettings(airDensity: density, useStepanekCoefficients: !thesis, integrator: integrator, fixedStep: step);
+            }
+            catch (ArgumentException e)
+            {
+                throw new ArgumentException("--integrator: " + e.Message);
+            }
+
+            TennisShot basis = StandardShots.TopspinForehand;
+            if (values.TryGetValue("--shot", out string? shotName))
+            {
+                basis = Array.Find(StandardShots.All(), s => string.Equals(s.Name, shotName, StringComparison.OrdinalIgnoreCase))
+                    ?? throw new ArgumentException($"--shot must be one of: {string.Join(", ", Array.ConvertAll(StandardShots.All(), s => "\"" + s.Name + "\""))}; got \"{shotName}\".");
+            }
+
+            bool custom = false;
+            foreach (string key in new[] { "--shot", "--speed", "--elevation", "--azimuth", "--topspin", "--sidespin", "--height", "--x", "--z", "--target" })
+            {
+                custom |= values.ContainsKey(key);
+            }
+
+            if (!custom)
+            {
+                options.Shots.AddRange(StandardShots.All());
+                return options;
+            }
+
+            double speed = Number(values, "--speed", basis.Speed, min: 0.1, max: 120);
+            double elevation = Number(values, "--elevation", basis.ElevationDegrees, min: -89.9, max: 89.9);
+            double azimuth = Number(values, "--azimuth", basis.AzimuthDegrees, min: -89.9, max: 89.9);
+            double topspin = Number(values, "--topspin", basis.TopspinRpm, min: -10000, max: 10000);
+            double sidespin = Number(values, "--sidespin", basis.SidespinRpm, min: -10000, max: 10000);
+            double height = Number(values, "--height", basis.Start.Y, min: 0.05, max: 10);
+            double x = Number(values, "--x", basis.Start.X, min: -30, max: -0.1);
+            double z = Number(values, "--z", basis.Start.Z, min: -10, max: 10);
+            TargetArea target = basis.Target;
+            if (values.TryGetValue("--target", out string? area))
+            {
+                switch (area)
+                {
+                    case "court": target = TargetArea.FarSinglesCourt; break;
+                    case "deuce": target = TargetArea.FarDeuceServiceBox; break;
+                    case "ad": target = TargetArea.FarAdServiceBox; break;
+                    default: throw new ArgumentException($"--target must be court, deuce or ad; got \"{area}\".");
+                }
+            }
+
+            string label = values.ContainsKey("--shot") && values.Count == 1 ? basis.Name : "custom shot";
+            options.Shots.Add(new TennisShot(label, new Vector3d(x, height, z), speed, elevation, azimuth, topspin, sidespin, target));
+            return options;
+        }
+
+        private static double Number(Dictionary<string, string> values, string key, double fallback, double min, double max)
+        {
+            if (!values.TryGetValue(key, out string? text))
+            {
+                return fallback;
+            }
+
+            if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
+            {
+                throw new ArgumentException($"{key} must be a finite number; got \"{text}\".");
+            }
+
+            if (value < min || value > max)
+            {
+                throw new ArgumentException(string.Format(CultureInfo.InvariantCulture, "{0} must be in [{1}, {2}]; got {3}.", key, min, max, value));
+            }
+
+            return value;
         }
     }
 }
