@@ -1,11 +1,14 @@
 namespace MagnusBall
 {
     /// <summary>
-    /// The air a ball flies through: its density and a uniform wind. Immutable and safe to share.
+    /// The air a ball flies through: its density, its viscosity and the wind (uniform, or growing with height
+    /// along a <see cref="LogarithmicWindProfile"/>). Immutable and safe to share.
     /// </summary>
     /// <remarks>
     /// Every aerodynamic force is computed on the air-relative velocity v - wind (drag, lift and the spin
-    /// parameter alike), so a ball moving exactly with the wind feels no drag and no Magnus force.
+    /// parameter alike), so a ball moving exactly with the wind feels no drag and no Magnus force. Build air
+    /// from the weather with <see cref="FromWeather"/> or from altitude with <see cref="AtAltitude"/>
+    /// (see <see cref="Atmosphere"/> for the formulas).
     /// </remarks>
     public sealed class Air
     {
@@ -23,6 +26,11 @@ namespace MagnusBall
         /// <param name="dynamicViscosity">Dynamic viscosity, Pa s; finite and &gt; 0.</param>
         /// <exception cref="System.ArgumentException">A value is outside its range; the message names it.</exception>
         public Air(double density, Vector3d wind = default, double dynamicViscosity = SeaLevelDynamicViscosity)
+            : this(density, wind, dynamicViscosity, null)
+        {
+        }
+
+        private Air(double density, Vector3d wind, double dynamicViscosity, LogarithmicWindProfile? windProfile)
         {
             Require.NonNegative(density, nameof(density));
             Require.Finite(wind, nameof(wind));
@@ -30,13 +38,20 @@ namespace MagnusBall
             Density = density;
             Wind = wind;
             DynamicViscosity = dynamicViscosity;
+            WindProfile = windProfile;
         }
 
         /// <summary>Density, kg/m^3.</summary>
         public double Density { get; }
 
-        /// <summary>Uniform wind velocity, m/s.</summary>
+        /// <summary>
+        /// Wind velocity, m/s: the uniform wind, or with a <see cref="WindProfile"/> the wind at its reference
+        /// height. Use <see cref="WindAt"/> for the wind at a point.
+        /// </summary>
         public Vector3d Wind { get; }
+
+        /// <summary>The wind's variation with height, or null for a uniform wind.</summary>
+        public LogarithmicWindProfile? WindProfile { get; }
 
         /// <summary>Dynamic viscosity, Pa s.</summary>
         public double DynamicViscosity { get; }
@@ -51,7 +66,78 @@ namespace MagnusBall
         /// <param name="wind">Wind velocity, m/s; finite.</param>
         public Air WithWind(Vector3d wind) => new Air(Density, wind, DynamicViscosity);
 
+        /// <summary>
+        /// A copy of this air whose wind follows a logarithmic profile with height: <paramref name="referenceWind"/>
+        /// at <paramref name="referenceHeight"/> above the ground, ln(z/z0)/ln(z_ref/z0) times that at height z,
+        /// zero at or below the roughness length z0. See <see cref="LogarithmicWindProfile"/>.
+        /// </summary>
+        /// <param name="referenceWind">Wind velocity at the reference height, m/s; finite.</param>
+        /// <param name="referenceHeight">Reference (anemometer) height, m; finite and &gt; roughnessLength. Usually 10 m.</param>
+        /// <param name="roughnessLength">Roughness length z0, m; finite and &gt; 0 (0.03 m open grass, 0.005 m mown turf).</param>
+        /// <param name="groundPoint">Any point on the ground plane, m; finite. Default: the origin.</param>
+        /// <exception cref="System.ArgumentException">A value is outside its range; the message names it.</exception>
+        public Air WithLogarithmicWind(
+            Vector3d referenceWind,
+            double referenceHeight = LogarithmicWindProfile.StandardReferenceHeight,
+            double roughnessLength = LogarithmicWindProfile.OpenGrassRoughnessLength,
+            Vector3d groundPoint = default) =>
+            new Air(Density, referenceWind, DynamicViscosity, new LogarithmicWindProfile(referenceHeight, roughnessLength, groundPoint));
+
+        /// <summary>
+        /// The wind at <paramref name="position"/>, m/s. Uniform wind: <see cref="Wind"/> everywhere. With a
+        /// profile: the wind at the point's height along <paramref name="up"/>; when <paramref name="up"/> is
+        /// zero (no gravity, so no height) the reference wind. Allocates nothing.
+        /// </summary>
+        /// <param name="position">The point, m.</param>
+        /// <param name="up">The unit up vector (a <see cref="FlightModel"/>'s <see cref="FlightModel.Up"/>), or zero.</param>
+        public Vector3d WindAt(in Vector3d position, in Vector3d up)
+        {
+            LogarithmicWindProfile? profile = WindProfile;
+            if (profile is null || up.LengthSquared == 0)
+            {
+                return Wind;
+            }
+
+            return Wind * profile.Factor(profile.HeightOf(position, up));
+        }
+
+        /// <summary>
+        /// Air from the weather: moist-air density from temperature, pressure and relative humidity
+        /// (Tetens' saturation vapour pressure), viscosity by Sutherland's law; see <see cref="Atmosphere"/>.
+        /// 15 degC, 101325 Pa, dry: 1.2250 kg/m^3.
+        /// </summary>
+        /// <param name="temperatureCelsius">Temperature, degC; in [-90, 60].</param>
+        /// <param name="pressurePascals">Station (not sea-level-corrected) pressure, Pa; finite and &gt; 0.</param>
+        /// <param name="relativeHumidity">Relative humidity as a fraction in [0, 1]; default 0 (dry).</param>
+        /// <param name="wind">Uniform wind, m/s; finite. Default: still air.</param>
+        /// <exception cref="System.ArgumentException">A value is outside its range; the message names it.</exception>
+        public static Air FromWeather(double temperatureCelsius, double pressurePascals, double relativeHumidity = 0, Vector3d wind = default) =>
+            new Air(
+                Atmosphere.MoistAirDensity(temperatureCelsius, pressurePascals, relativeHumidity),
+                wind,
+                Atmosphere.DynamicViscosity(temperatureCelsius));
+
+        /// <summary>
+        /// Air at an altitude: the ISA standard-atmosphere pressure there (ISO 2533), at the ISA temperature
+        /// or at a given temperature, with optional humidity. Denver (1609 m): 1.047 kg/m^3 at the ISA's
+        /// 4.5 degC (14.5 % below sea level's 1.225); at sea level's 15 degC, 1.009 kg/m^3 (17.6 % below).
+        /// </summary>
+        /// <param name="altitudeMetres">Altitude above mean sea level, m; in [-1000, 20000].</param>
+        /// <param name="temperatureCelsius">Temperature, degC, in [-90, 60]; null for the ISA temperature at that altitude.</param>
+        /// <param name="relativeHumidity">Relative humidity as a fraction in [0, 1]; default 0 (dry).</param>
+        /// <param name="wind">Uniform wind, m/s; finite. Default: still air.</param>
+        /// <exception cref="System.ArgumentException">A value is outside its range; the message names it.</exception>
+        public static Air AtAltitude(double altitudeMetres, double? temperatureCelsius = null, double relativeHumidity = 0, Vector3d wind = default)
+        {
+            double pressure = Atmosphere.StandardPressure(altitudeMetres);
+            double temperature = temperatureCelsius ?? Atmosphere.StandardTemperatureCelsius(altitudeMetres);
+            return FromWeather(temperature, pressure, relativeHumidity, wind);
+        }
+
         /// <inheritdoc />
-        public override string ToString() => $"Air(rho={Density:R} kg/m^3, wind={Wind})";
+        public override string ToString() =>
+            WindProfile is null
+                ? $"Air(rho={Density:R} kg/m^3, wind={Wind})"
+                : $"Air(rho={Density:R} kg/m^3, wind={Wind} at {WindProfile})";
     }
 }

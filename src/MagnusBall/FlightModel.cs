@@ -10,7 +10,7 @@ namespace MagnusBall
     /// thread-safe: one model can be shared by any number of balls and threads.
     /// </summary>
     /// <remarks>
-    /// <para>With air-relative velocity v_rel = v - wind, speed s = |v_rel|, v_hat = v_rel / s,
+    /// <para>With air-relative velocity v_rel = v - wind (the wind at the ball, <see cref="Air.WindAt"/>), speed s = |v_rel|, v_hat = v_rel / s,
     /// cross-section A = pi r^2 and mass m, the acceleration is</para>
     /// <code>
     /// a = g - (rho A / 2m) C_D s v_rel + (rho A / 2m) C_L s^2 (w x v_hat) / |w|
@@ -37,6 +37,8 @@ namespace MagnusBall
         private readonly double _kinematicRadius;
         private readonly double _viscosity;
         private readonly bool _hasAero;
+        private readonly bool _windVaries; // a wind profile: the wind depends on the height
+        private readonly Vector3d _wind;   // the uniform wind (read once here, not per evaluation)
 
         /// <summary>Creates a flight model.</summary>
         /// <param name="ball">The ball (mass, radius, inertia).</param>
@@ -66,6 +68,8 @@ namespace MagnusBall
             _kinematicRadius = ball.Radius;
             _viscosity = air.DynamicViscosity;
             _hasAero = (drag != null || lift != null) && air.Density > 0;
+            _windVaries = air.WindProfile != null && Up.LengthSquared > 0;
+            _wind = air.Wind;
         }
 
         /// <summary>The ball.</summary>
@@ -143,7 +147,8 @@ namespace MagnusBall
 
             if (_hasAero || SpinDecay != null)
             {
-                Vector3d relative = state.Velocity - Air.Wind;
+                // Wind at the ball: uniform (a field read), or from the profile at the ball's height.
+                Vector3d relative = state.Velocity - (_windVaries ? Air.WindAt(state.Position, Up) : _wind);
                 double speed = relative.Length;
                 double spinRate = w.Length;
                 AeroConditions conditions;

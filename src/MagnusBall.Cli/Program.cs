@@ -1,0 +1,215 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+
+namespace MagnusBall.Cli
+{
+    /// <summary>
+    /// The <c>magnusball</c> command-line tool: JSON scenarios in, JSON (or CSV, or an SVG picture) out.
+    /// See docs/cli.md. Exit codes: 0 success, 2 bad input or usage, 1 anything else (for example an
+    /// output file that cannot be written).
+    /// </summary>
+    public static class Program
+    {
+        /// <summary>Exit code for success.</summary>
+        public const int Success = 0;
+
+        /// <summary>Exit code for a failure that is not the input's fault (I/O, internal error).</summary>
+        public const int Failure = 1;
+
+        /// <summary>Exit code for bad input: a bad scenario/aim file or bad command-line arguments.</summary>
+        public const int BadInput = 2;
+
+        internal const string Usage =
+            "usage:\n" +
+            "  magnusball simulate FILE [--csv] [--samples N] [--svg OUT.svg [--svg-view side|top|both]]\n" +
+            "  magnusball aim FILE\n" +
+            "  magnusball --help | --version\n" +
+            "FILE is a JSON file (\"-\" reads standard input); see docs/cli.md for the formats.\n" +
+            "  --csv          print the trajectory as CSV instead of the JSON summary\n" +
+            "  --samples N    N >= 2 states evenly spaced in time (adds \"samples\" to the JSON; CSV rows)\n" +
+            "  --svg OUT.svg  also draw side and top views of every scenario to OUT.svg\n" +
+            "  --svg-view V   side, top or both (default both)\n";
+
+        /// <summary>The process entry point.</summary>
+        /// <param name="args">The command-line arguments.</param>
+        public static int Main(string[] args) => Run(args, Console.Out, Console.Error, Console.In);
+
+        /// <summary>Runs the tool in-process: everything it prints goes to the given writers.</summary>
+        /// <param name="args">The command-line arguments.</param>
+        /// <param name="stdout">Where results go.</param>
+        /// <param name="stderr">Where errors go.</param>
+        /// <param name="stdin">Read when FILE is "-".</param>
+        /// <returns>The exit code: 0 success, 1 failure, 2 bad input or usage.</returns>
+        public static int Run(string[] args, TextWriter stdout, TextWriter stderr, TextReader? stdin = null)
+        {
+            try
+            {
+                if (args.Length == 0)
+                {
+                    throw new UsageError("missing command");
+                }
+
+                switch (args[0])
+                {
+                    case "-h":
+                    case "--help":
+                    case "help":
+                        stdout.Write(Usage);
+                        return Success;
+                    case "--version":
+                        stdout.WriteLine(typeof(Program).Assembly.GetName().Version?.ToString(3) ?? "0.0.0");
+                        return Success;
+                    case "simulate":
+                        return Simulate(args, stdout, stdin);
+                    case "aim":
+                        return Aim(args, stdout, stdin);
+                    default:
+                        throw new UsageError($"unknown command '{args[0]}'; expected simulate or aim");
+                }
+            }
+            catch (UsageError e)
+            {
+                stderr.WriteLine("magnusball: " + e.Message);
+                stderr.Write(Usage);
+                return BadInput;
+            }
+            catch (InputError e)
+            {
+                stderr.WriteLine("magnusball: " + e.Message);
+                return BadInput;
+            }
+            catch (IOException e)
+            {
+                stderr.WriteLine("magnusball: " + e.Message);
+                return Failure;
+            }
+            catch (UnauthorizedAccessException e)
+            {
+                stderr.WriteLine("magnusball: " + e.Message);
+                return Failure;
+            }
+        }
+
+        private static int Simulate(string[] args, TextWriter stdout, TextReader? stdin)
+        {
+            string? file = null;
+            bool csv = false;
+            int? samples = null;
+            string? svg = null;
+            var views = TrajectorySvg.SvgViews.Both;
+            for (int i = 1; i < args.Length; i++)
+            {
+                string a = args[i];
+                switch (a)
+                {
+                    case "--csv":
+                        csv = true;
+                        break;
+                    case "--samples":
+                        string n = Value(args, ref i, a);
+                        if (!int.TryParse(n, NumberStyles.None, CultureInfo.InvariantCulture, out int count) || count < 2 || count > 1_000_000)
+                        {
+                            throw new UsageError($"--samples must be a whole number from 2 to 1000000; got '{n}'");
+                        }
+
+                        samples = count;
+                        break;
+                    case "--svg":
+                        svg = Value(args, ref i, a);
+                        break;
+                    case "--svg-view":
+                        string v = Value(args, ref i, a);
+                        views = v switch
+                        {
+                            "both" => TrajectorySvg.SvgViews.Both,
+                            "side" => TrajectorySvg.SvgViews.Side,
+                            "top" => TrajectorySvg.SvgViews.Top,
+                            _ => throw new UsageError($"--svg-view must be side, top or both; got '{v}'"),
+                        };
+                        break;
+                    default:
+                        if (a.StartsWith("--", StringComparison.Ordinal))
+                        {
+                            throw new UsageError($"unknown option '{a}'");
+                        }
+
+                        if (file != null)
+                        {
+                            throw new UsageError($"simulate takes one FILE; got '{file}' and '{a}'");
+                        }
+
+                        file = a;
+                        break;
+                }
+            }
+
+            if (file is null)
+            {
+                throw new UsageError("simulate needs a scenario FILE");
+            }
+
+            IReadOnlyList<Scenario> scenarios = ScenarioReader.Read(ReadInput(file, stdin));
+            bool record = csv || samples.HasValue || svg != null;
+            var results = new List<FlightResult>();
+            foreach (Scenario scenario in scenarios)
+            {
+                results.Add(Flight.Simulate(scenario, record));
+            }
+
+            if (svg != null)
+            {
+                File.WriteAllText(svg, TrajectorySvg.Draw(results, views));
+            }
+
+            stdout.Write(csv ? ResultWriter.Csv(results, samples) : ResultWriter.Json(results, samples));
+            return Success;
+        }
+
+        private static int Aim(string[] args, TextWriter stdout, TextReader? stdin)
+        {
+            if (args.Length != 2 || args[1].StartsWith("--", StringComparison.Ordinal) && args[1] != "-")
+            {
+                throw new UsageError("aim takes exactly one FILE");
+            }
+
+            stdout.Write(AimCommand.Run(ReadInput(args[1], stdin)));
+            return Success;
+        }
+
+        private static string Value(string[] args, ref int i, string option)
+        {
+            if (i + 1 >= args.Length)
+            {
+                throw new UsageError($"{option} needs a value");
+            }
+
+            return args[++i];
+        }
+
+        private static string ReadInput(string file, TextReader? stdin)
+        {
+            if (file == "-")
+            {
+                return (stdin ?? throw new UsageError("no standard input to read")).ReadToEnd();
+            }
+
+            if (!File.Exists(file))
+            {
+                throw new UsageError($"cannot read '{file}': no such file");
+            }
+
+            return File.ReadAllText(file);
+        }
+    }
+
+    /// <summary>Bad command-line arguments: the CLI prints the message and the usage, and exits with 2.</summary>
+    internal sealed class UsageError : Exception
+    {
+        public UsageError(string message)
+            : base(message)
+        {
+        }
+    }
+}

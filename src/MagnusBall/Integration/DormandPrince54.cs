@@ -1,0 +1,385 @@
+using System;
+using System.Runtime.CompilerServices;
+
+namespace MagnusBall.Integration
+{
+    /// <summary>
+    /// The Dormand-Prince 5(4) embedded Runge-Kutta pair: a fifth-order solution, a fourth-order
+    /// error estimate, first-same-as-last (FSAL) and a fourth-order continuous extension (dense output).
+    /// </summary>
+    /// <remarks>
+    /// <para>Source: Dormand &amp; Prince (1980), "A family of embedded Runge-Kutta formulae", J. Comput.
+    /// Appl. Math. 6:19 (the tableau); Hairer, Norsett &amp; Wanner (1993), Solving Ordinary Differential
+    /// Equations I, 2nd ed., section II.4-II.6 (the error norm, the step-size controller, the initial-step
+    /// heuristic and the dense output of DOPRI5, whose coefficients are Shampine's (1986)).</para>
+    /// <para>Two ways to use it:</para>
+    /// <list type="bullet">
+    /// <item>As a fixed-step <see cref="IIntegrator"/>: <see cref="Step"/> takes the fifth-order solution
+    /// of one step and ignores the error estimate. Six evaluations per step (k1, passed in, and k2..k6);
+    /// the FSAL stage k7 = f(y1) is the caller's next k1, as for every integrator here.</item>
+    /// <item>Adaptively: <see cref="TryStep"/> attempts one step and reports whether its estimated error is
+    /// within the tolerances, the step to try next, the end derivative (k7, so a loop pays six evaluations per
+    /// accepted step) and a <see cref="DormandPrince54Step"/> with the dense output;
+    /// <see cref="Advance"/> integrates to a given time with error control. Use it for reference solutions
+    /// and offline work such as aim solving, where accuracy matters more than a fixed frame step.</item>
+    /// </list>
+    /// <para>The error of a step is the root mean square over the nine state components of
+    /// err_i / (atol + rtol max(|y0_i|, |y1_i|)); a step is accepted when that norm is at most 1. The next
+    /// step is h 0.9 norm^(-1/5), kept within [0.2 h, 5 h] (at most h after a rejection). All of it runs on
+    /// the stack: nothing is allocated.</para>
+    /// </remarks>
+    public sealed class DormandPrince54 : IIntegrator
+    {
+        // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M").
+        private const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
+        private const double A21 = 1.0 / 5;
+        private const double A31 = 3.0 / 40, A32 = 9.0 / 40;
+        private const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
+        private const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
+        private const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
+        private const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+
+        // The error weights b - b_hat (fifth minus fourth order), the last on k7 = f(y1).
+        private const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200, E6 = 22.0 / 525, E7 = -1.0 / 40;
+
+        private const double Safety = 0.9;
+        private const double MinimumFactor = 0.2;
+        private const double MaximumFactor = 5.0;
+
+        /// <summary>The default relative tolerance, 1e-6.</summary>
+        public const double DefaultRelativeTolerance = 1e-6;
+
+        /// <summary>The default absolute tolerance, 1e-9 (in each component's own unit: m, m/s, rad/s).</summary>
+        public const double DefaultAbsoluteTolerance = 1e-9;
+
+        /// <summary>
+        /// Creates the method with the given tolerances.
+        /// </summary>
+        /// <param name="relativeTolerance">rtol; finite, in [1e-15, 1].</param>
+        /// <param name="absoluteTolerance">atol, in each component's unit (m, m/s, rad/s); finite and &gt; 0.</param>
+        /// <exception cref="ArgumentOutOfRangeException">A tolerance is out of its range.</exception>
+        public DormandPrince54(double relativeTolerance = DefaultRelativeTolerance, double absoluteTolerance = DefaultAbsoluteTolerance)
+        {
+            RelativeTolerance = Require.InRange(relativeTolerance, 1e-15, 1, nameof(relativeTolerance));
+            AbsoluteTolerance = Require.Positive(absoluteTolerance, nameof(absoluteTolerance));
+        }
+
+        /// <summary>The method with the default tolerances (rtol 1e-6, atol 1e-9).</summary>
+        public static DormandPrince54 Instance { get; } = new DormandPrince54();
+
+        /// <summary>The relative tolerance rtol.</summary>
+        public double RelativeTolerance { get; }
+
+        /// <summary>The absolute tolerance atol (m, m/s, rad/s per component).</summary>
+        public double AbsoluteTolerance { get; }
+
+        /// <inheritdoc />
+        public string Name => "dp54";
+
+        /// <inheritdoc />
+        public int Order => 5;
+
+        /// <inheritdoc />
+        public int DerivativeEvaluationsPerStep => 6;
+
+        /// <summary>
+        /// Takes one fixed step with the fifth-order solution (no error control). Six evaluations in all,
+        /// counting k1, which the caller passes in.
+        /// </summary>
+        /// <inheritdoc />
+        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            StepArguments.Check(model, state, step);
+            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
+            return Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+        }
+
+        /// <summary>
+        /// Attempts one adaptive step of <paramref name="step"/> seconds from <paramref name="state"/>.
+        /// Always costs six new evaluations (k2..k7). When the step is accepted, <paramref name="result"/>
+        /// holds the end state, the end derivative (the next step's k1) and the dense output; when it is
+        /// rejected, only <see cref="DormandPrince54Step.ErrorNorm"/> and <see cref="DormandPrince54Step.NextStep"/>
+        /// are meaningful, and the caller retries from the same state with the smaller next step.
+        /// </summary>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="step">The step to try, s; finite and &gt; 0.</param>
+        /// <param name="result">The outcome (see above).</param>
+        /// <returns>True when the estimated error is within the tolerances and the step was taken.</returns>
+        /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
+        public bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
+        {
+            StepArguments.Check(model, state, step);
+            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
+            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+            StateDerivative k7 = model.Derivative(end);
+
+            double norm = ErrorNorm(state, end, derivative, k3, k4, k5, k6, k7, step);
+            bool accepted = norm <= 1.0 && end.IsFinite;
+            double factor;
+            if (!double.IsFinite(norm))
+            {
+                factor = MinimumFactor;
+            }
+            else if (norm == 0)
+            {
+                factor = MaximumFactor;
+            }
+            else
+            {
+                factor = Math.Max(MinimumFactor, Math.Min(MaximumFactor, Safety * Math.Pow(norm, -0.2)));
+            }
+
+            if (!accepted)
+            {
+                factor = Math.Min(factor, 1.0);
+            }
+
+            result = new DormandPrince54Step(state, end, derivative, k3, k4, k5, k6, k7, step, norm, step * factor, accepted);
+            return accepted;
+        }
+
+        /// <summary>
+        /// A first step for <see cref="TryStep"/> from the tolerances and the local behaviour of the solution
+        /// (Hairer, Norsett &amp; Wanner 1993, II.4 "Starting step size"): one extra evaluation.
+        /// </summary>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="maximumStep">The largest step to return, s; finite and &gt; 0.</param>
+        /// <returns>A step in (0, maximumStep].</returns>
+        /// <exception cref="ArgumentException">The state is not finite or maximumStep is out of range.</exception>
+        public double InitialStep(FlightModel model, in FlightState state, in StateDerivative derivative, double maximumStep)
+        {
+            StepArguments.Check(model, state, maximumStep);
+            double d0 = 0, d1 = 0;
+            Accumulate(state, derivative, ref d0, ref d1);
+            d0 = Math.Sqrt(d0 / 9);
+            d1 = Math.Sqrt(d1 / 9);
+            double h0 = d0 < 1e-5 || d1 < 1e-5 ? 1e-6 : 0.01 * d0 / d1;
+            h0 = Math.Min(h0, maximumStep);
+
+            FlightState trial = state.Advance(derivative, h0);
+            StateDerivative f1 = model.Derivative(trial);
+            double d2 = 0, unused = 0;
+            Accumulate(state, Difference(f1, derivative), ref unused, ref d2);
+            d2 = Math.Sqrt(d2 / 9) / h0;
+
+            double largest = Math.Max(d1, d2);
+            double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : Math.Pow(0.01 / largest, 0.2);
+            double h = Math.Min(100 * h0, h1);
+            return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
+        }
+
+        /// <summary>
+        /// Integrates adaptively from <paramref name="state"/> over <paramref name="duration"/> seconds, with
+        /// error control, landing exactly on the end time. Allocates nothing.
+        /// </summary>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <param name="duration">How long to integrate, s; finite and &gt; 0.</param>
+        /// <param name="step">
+        /// In: the first step to try (s; finite and &gt; 0, or 0 to choose one with <see cref="InitialStep"/>).
+        /// Out: the step to try next, so a caller that continues keeps the controller's memory.
+        /// </param>
+        /// <param name="evaluations">Derivative evaluations spent, counting the start derivative.</param>
+        /// <returns>The state at state.Time + duration.</returns>
+        /// <exception cref="ArgumentException">
+        /// The state is not finite, the duration is out of range, or the step is negative or not finite.
+        /// </exception>
+        /// <remarks>
+        /// A step is never made shorter than 1e-12 of the duration (or of 1 s, if larger): if the error control
+        /// asks for less, which a smooth flight model never does, that step is accepted as it is rather than
+        /// looping forever or throwing.
+        /// </remarks>
+        public FlightState Advance(FlightModel model, in FlightState state, double duration, ref double step, out int evaluations)
+        {
+            StepArguments.Check(model, state, duration);
+            if (!double.IsFinite(step) || step < 0)
+            {
+                throw new ArgumentOutOfRangeException(nameof(step), step, $"step must be 0 (choose one) or a finite step > 0 s; got {Require.Format(step)}.");
+            }
+
+            StateDerivative derivative = model.Derivative(state);
+            evaluations = 1;
+            if (step == 0)
+            {
+                step = InitialStep(model, state, derivative, duration);
+                evaluations++;
+            }
+
+            double minimumStep = 1e-12 * Math.Max(duration, 1.0);
+            double endTime = state.Time + duration;
+            FlightState current = state;
+            while (true)
+            {
+                double remaining = endTime - current.Time;
+                bool last = step >= remaining - minimumStep;
+                double h = last ? remaining : step;
+                bool accepted = TryStep(model, current, derivative, h, out DormandPrince54Step result);
+                evaluations += 6;
+                if (!accepted && h > minimumStep)
+                {
+                    step = Math.Max(result.NextStep, minimumStep);
+                    continue;
+                }
+
+                if (last)
+                {
+                    // A truncated last step says little about the next one: keep the larger of the two.
+                    step = Math.Max(step, Math.Max(result.NextStep, minimumStep));
+
+                    // Land exactly on the end time (the accumulated Time may differ from it by rounding).
+                    FlightState end = result.End;
+                    return new FlightState(end.Position, end.Velocity, end.AngularVelocity, endTime);
+                }
+
+                current = result.End;
+                derivative = result.EndDerivative;
+                step = Math.Max(result.NextStep, minimumStep);
+            }
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Stages(
+            FlightModel model,
+            in FlightState y,
+            in StateDerivative k1,
+            double h,
+            out StateDerivative k2,
+            out StateDerivative k3,
+            out StateDerivative k4,
+            out StateDerivative k5,
+            out StateDerivative k6)
+        {
+            k2 = model.Derivative(y.Advance(k1, A21 * h));
+            k3 = model.Derivative(Combine(y, h, k1, k2, A31, A32, C3 * h));
+            k4 = model.Derivative(Combine(y, h, k1, k2, k3, A41, A42, A43, C4 * h));
+            k5 = model.Derivative(Combine(y, h, k1, k2, k3, k4, A51, A52, A53, A54, C5 * h));
+            k6 = model.Derivative(Combine(y, h, k1, k2, k3, k4, k5, A61, A62, A63, A64, A65, h));
+        }
+
+        // y + h (a k_a + b k_b), with time advanced by dt.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static FlightState Combine(in FlightState y, double h, in StateDerivative ka, in StateDerivative kb, double a, double b, double dt)
+        {
+            double ha = h * a, hb = h * b;
+            return new FlightState(
+                y.Position + ka.Velocity * ha + kb.Velocity * hb,
+                y.Velocity + ka.Acceleration * ha + kb.Acceleration * hb,
+                y.AngularVelocity + ka.AngularAcceleration * ha + kb.AngularAcceleration * hb,
+                y.Time + dt);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static FlightState Combine(
+            in FlightState y, double h, in StateDerivative ka, in StateDerivative kb, in StateDerivative kc, double a, double b, double c, double dt)
+        {
+            double ha = h * a, hb = h * b, hc = h * c;
+            return new FlightState(
+                y.Position + ka.Velocity * ha + kb.Velocity * hb + kc.Velocity * hc,
+                y.Velocity + ka.Acceleration * ha + kb.Acceleration * hb + kc.Acceleration * hc,
+                y.AngularVelocity + ka.AngularAcceleration * ha + kb.AngularAcceleration * hb + kc.AngularAcceleration * hc,
+                y.Time + dt);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static FlightState Combine(
+            in FlightState y,
+            double h,
+            in StateDerivative ka,
+            in StateDerivative kb,
+            in StateDerivative kc,
+            in StateDerivative kd,
+            double a,
+            double b,
+            double c,
+            double d,
+            double dt)
+        {
+            double ha = h * a, hb = h * b, hc = h * c, hd = h * d;
+            return new FlightState(
+                y.Position + ka.Velocity * ha + kb.Velocity * hb + kc.Velocity * hc + kd.Velocity * hd,
+                y.Velocity + ka.Acceleration * ha + kb.Acceleration * hb + kc.Acceleration * hc + kd.Acceleration * hd,
+                y.AngularVelocity + ka.AngularAcceleration * ha + kb.AngularAcceleration * hb + kc.AngularAcceleration * hc +
+                kd.AngularAcceleration * hd,
+                y.Time + dt);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static FlightState Combine(
+            in FlightState y,
+            double h,
+            in StateDerivative ka,
+            in StateDerivative kb,
+            in StateDerivative kc,
+            in StateDerivative kd,
+            in StateDerivative ke,
+            double a,
+            double b,
+            double c,
+            double d,
+            double e,
+            double dt)
+        {
+            double ha = h * a, hb = h * b, hc = h * c, hd = h * d, he = h * e;
+            return new FlightState(
+                y.Position + ka.Velocity * ha + kb.Velocity * hb + kc.Velocity * hc + kd.Velocity * hd + ke.Velocity * he,
+                y.Velocity + ka.Acceleration * ha + kb.Acceleration * hb + kc.Acceleration * hc + kd.Acceleration * hd + ke.Acceleration * he,
+                y.AngularVelocity + ka.AngularAcceleration * ha + kb.AngularAcceleration * hb + kc.AngularAcceleration * hc +
+                kd.AngularAcceleration * hd + ke.AngularAcceleration * he,
+                y.Time + dt);
+        }
+
+        private double ErrorNorm(
+            in FlightState y0,
+            in FlightState y1,
+            in StateDerivative k1,
+            in StateDerivative k3,
+            in StateDerivative k4,
+            in StateDerivative k5,
+            in StateDerivative k6,
+            in StateDerivative k7,
+            double h)
+        {
+            // err = h (e1 k1 + e3 k3 + ... + e7 k7), component by component, scaled by atol + rtol max(|y0|, |y1|).
+            Vector3d ep = (k1.Velocity * E1 + k3.Velocity * E3 + k4.Velocity * E4 + k5.Velocity * E5 + k6.Velocity * E6 + k7.Velocity * E7) * h;
+            Vector3d ev = (k1.Acceleration * E1 + k3.Acceleration * E3 + k4.Acceleration * E4 + k5.Acceleration * E5 + k6.Acceleration * E6 +
+                           k7.Acceleration * E7) * h;
+            Vector3d ew = (k1.AngularAcceleration * E1 + k3.AngularAcceleration * E3 + k4.AngularAcceleration * E4 + k5.AngularAcceleration * E5 +
+                           k6.AngularAcceleration * E6 + k7.AngularAcceleration * E7) * h;
+            double sum = Scaled(ep, y0.Position, y1.Position) + Scaled(ev, y0.Velocity, y1.Velocity) + Scaled(ew, y0.AngularVelocity, y1.AngularVelocity);
+            return Math.Sqrt(sum / 9);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private double Scaled(in Vector3d error, in Vector3d a, in Vector3d b)
+        {
+            double sx = error.X / (AbsoluteTolerance + RelativeTolerance * Math.Max(Math.Abs(a.X), Math.Abs(b.X)));
+            double sy = error.Y / (AbsoluteTolerance + RelativeTolerance * Math.Max(Math.Abs(a.Y), Math.Abs(b.Y)));
+            double sz = error.Z / (AbsoluteTolerance + RelativeTolerance * Math.Max(Math.Abs(a.Z), Math.Abs(b.Z)));
+            return sx * sx + sy * sy + sz * sz;
+        }
+
+        // Sum over components of (y_i / sc_i)^2 into d0 and (f_i / sc_i)^2 into d1, with sc_i = atol + rtol |y0_i|.
+        private void Accumulate(in FlightState y, in StateDerivative f, ref double d0, ref double d1)
+        {
+            Add(y.Position, f.Velocity, ref d0, ref d1);
+            Add(y.Velocity, f.Acceleration, ref d0, ref d1);
+            Add(y.AngularVelocity, f.AngularAcceleration, ref d0, ref d1);
+        }
+
+        private void Add(in Vector3d y, in Vector3d f, ref double d0, ref double d1)
+        {
+            double sx = AbsoluteTolerance + RelativeTolerance * Math.Abs(y.X);
+            double sy = AbsoluteTolerance + RelativeTolerance * Math.Abs(y.Y);
+            double sz = AbsoluteTolerance + RelativeTolerance * Math.Abs(y.Z);
+            d0 += (y.X / sx) * (y.X / sx) + (y.Y / sy) * (y.Y / sy) + (y.Z / sz) * (y.Z / sz);
+            d1 += (f.X / sx) * (f.X / sx) + (f.Y / sy) * (f.Y / sy) + (f.Z / sz) * (f.Z / sz);
+        }
+
+        private static StateDerivative Difference(in StateDerivative a, in StateDerivative b) =>
+            new StateDerivative(a.Velocity - b.Velocity, a.Acceleration - b.Acceleration, a.AngularAcceleration - b.AngularAcceleration);
+    }
+}

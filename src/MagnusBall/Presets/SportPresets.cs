@@ -1,0 +1,169 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using MagnusBall.Aerodynamics;
+
+namespace MagnusBall.Presets
+{
+    /// <summary>
+    /// Ready-made balls with published aerodynamics, by sport, and lookup by name
+    /// (<see cref="FromName"/>). Every preset cites its sources; where none was found the assumption is
+    /// stated. docs/presets.md tabulates them with a sample flight each.
+    /// </summary>
+    public static class SportPresets
+    {
+        /// <summary>
+        /// Tennis: an ITF ball (mass 56.0-59.4 g, diameter 6.54-6.86 cm; the middle, 57.7 g and 67.0 mm, is used),
+        /// inertia factor 0.55 (Cross 2002, hollow shell of finite thickness); Stepanek's (1988, Am. J. Phys.
+        /// 56:138) spin-dependent C_D and C_L; spin decay 2 % per 6.4 m of flight (Cross &amp; Lindsey 2014).
+        /// </summary>
+        public static SportPreset Tennis { get; } = new SportPreset(
+            "tennis",
+            new Ball(0.0577, 0.0335, 0.55),
+            StepanekDrag.Instance,
+            StepanekLift.Instance,
+            SpeedProportionalSpinDecay.TennisCrossLindsey,
+            "ITF Rules of Tennis, appendix I (ball 56.0-59.4 g, 6.54-6.86 cm; middle used); inertia factor 0.55 (Cross 2002); " +
+            "Stepanek 1988, Am. J. Phys. 56:138 (C_D, C_L); spin decay 2 % per 6.4 m (Cross & Lindsey 2014).");
+
+        /// <summary>
+        /// Tennis with Cross &amp; Lindsey's free-flight drag: the <see cref="Tennis"/> ball and lift, but
+        /// C_D = 0.507 (+- 0.024), measured independent of speed and spin for 15-30 m/s and up to 2500 rpm
+        /// (Cross &amp; Lindsey 2014).
+        /// </summary>
+        public static SportPreset TennisFreeFlight { get; } = new SportPreset(
+            "tennis-free-flight",
+            Tennis.Ball,
+            ConstantDrag.CrossLindseyTennis,
+            StepanekLift.Instance,
+            SpeedProportionalSpinDecay.TennisCrossLindsey,
+            "As tennis, but C_D = 0.507 (Cross & Lindsey 2014, free-flight measurements, 15-30 m/s, <= 2500 rpm).");
+
+        /// <summary>
+        /// Soccer: a FIFA size-5 ball (circumference 68-70 cm, mass 410-450 g; 0.43 kg and r = 0.11 m used), thin
+        /// shell; Goff &amp; Carre's drag crisis and spin-dependent drag (<see cref="GoffCarreSoccerDrag"/>) and
+        /// tabulated lift (<see cref="PiecewiseLinearLift.SoccerGoffCarre"/>). Spin decay: none found in these
+        /// sources; constant spin is assumed (a free kick lasts about a second).
+        /// </summary>
+        public static SportPreset Soccer { get; } = new SportPreset(
+            "soccer",
+            new Ball(0.43, 0.11, Ball.ThinShellInertiaFactor),
+            GoffCarreSoccerDrag.Instance,
+            PiecewiseLinearLift.SoccerGoffCarre,
+            null,
+            "FIFA Laws of the Game, law 2 (size 5: 68-70 cm, 410-450 g); Goff & Carre 2010, Eur. J. Phys. 31:775 " +
+            "(drag crisis, Teamgeist lift) and 2009, Am. J. Phys. 77:1020 (spin drag, lift at high S); " +
+            "assumption: constant spin (no decay law found).");
+
+        /// <summary>
+        /// Baseball: MLB ball (5-5.25 oz, 9-9.25 in circumference; 0.145 kg and r = 0.0366 m used), solid-sphere
+        /// inertia 0.4 (assumed); Nathan's C_D = 0.3008 + 0.0292 rpm/1000 and C_L = 1.120 S/(0.583 + 2.333 S)
+        /// (<see cref="NathanBaseballDrag"/>, <see cref="NathanBaseballLift"/>); Nathan's (2008) spin-down,
+        /// time constant 5 s at 100 mph (<see cref="SpeedProportionalSpinDecay.BaseballNathan"/>).
+        /// </summary>
+        public static SportPreset Baseball { get; } = new SportPreset(
+            "baseball",
+            new Ball(0.145, 0.0366, Ball.SolidSphereInertiaFactor),
+            NathanBaseballDrag.Instance,
+            NathanBaseballLift.Instance,
+            SpeedProportionalSpinDecay.BaseballNathan,
+            "MLB Official Baseball Rules 3.01 (5-5.25 oz, 9-9.25 in); A. M. Nathan's trajectory calculator " +
+            "(C_D, C_L; as ported in pybaseball); Nathan 2008, Am. J. Phys. 76:119 (spin decay, tau 5 s at 100 mph).");
+
+        /// <summary>
+        /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed);
+        /// Smits &amp; Smith's (1994) piecewise-linear C_L (<see cref="PiecewiseLinearLift.GolfSmitsSmith"/>) with
+        /// the drag law's two constants calibrated to the TrackMan driver and 7-iron carries,
+        /// C_D = 0.1845 + 0.3533 S (<see cref="LinearSpinDrag.GolfTrackManCalibrated"/>; Smits &amp; Smith's own
+        /// 0.24 + 0.18 S is <see cref="GolfSmitsSmith"/>); spin decay 4 %/s (TrackMan; tau = -1/ln 0.96 = 24.5 s).
+        /// </summary>
+        public static SportPreset Golf { get; } = new SportPreset(
+            "golf",
+            new Ball(0.04593, 0.021335, Ball.SolidSphereInertiaFactor),
+            LinearSpinDrag.GolfTrackManCalibrated,
+            PiecewiseLinearLift.GolfSmitsSmith,
+            new ExponentialSpinDecay(GolfSpinDecayTimeConstant),
+            "USGA Rules of Golf, equipment appendix (45.93 g, 42.67 mm); Smits & Smith 1994, Science and Golf II " +
+            "(piecewise-linear C_L; C_D = a + b S with a, b calibrated here to TrackMan 2023 tour driver and 7-iron carries: " +
+            "0.1845 + 0.3533 S); spin decay 4 %/s (TrackMan).");
+
+        /// <summary>
+        /// Golf as published by Smits &amp; Smith (1994), uncalibrated: the <see cref="Golf"/> ball, lift and spin
+        /// decay with C_D = 0.24 + 0.18 S (<see cref="LinearSpinDrag.GolfSmitsSmith"/>). It carries the TrackMan
+        /// driver about 10 % short (253 yd against 282) and the 7-iron 4 % long (183 yd against 176).
+        /// </summary>
+        public static SportPreset GolfSmitsSmith { get; } = new SportPreset(
+            "golf-smits-smith",
+            Golf.Ball,
+            LinearSpinDrag.GolfSmitsSmith,
+            PiecewiseLinearLift.GolfSmitsSmith,
+            Golf.SpinDecay,
+            "As golf, but Smits & Smith's own C_D = 0.24 + 0.18 S (Science and Golf II, 1994; secondary transcription).");
+
+        /// <summary>
+        /// Table tennis: ITTF ball (40 mm, 2.7 g), thin shell. No table-tennis coefficient measurement was found
+        /// here, so these are stated assumptions: C_D = 0.47, the textbook subcritical value for a smooth sphere
+        /// (Reynolds number 1e4-1e5; e.g. Achenbach 1972, J. Fluid Mech. 54:565); lift from Stepanek's saturating
+        /// curve C_L = S/(2.022 S + 0.981), borrowed from tennis; spin decay 2 % per 6.4 m as for tennis.
+        /// </summary>
+        public static SportPreset TableTennis { get; } = new SportPreset(
+            "table-tennis",
+            new Ball(0.0027, 0.020, Ball.ThinShellInertiaFactor),
+            new ConstantDrag(0.47),
+            StepanekLift.Instance,
+            SpeedProportionalSpinDecay.TennisCrossLindsey,
+            "ITTF Handbook 2.3 (40 mm, 2.7 g). Assumptions (no table-tennis measurement found): C_D = 0.47, smooth sphere, " +
+            "subcritical (Achenbach 1972); C_L from Stepanek's tennis curve; spin decay as tennis (Cross & Lindsey 2014).");
+
+        /// <summary>
+        /// Basketball: FIBA size 7 (circumference 749-780 mm, 567-650 g; 0.6 kg and r = 0.1205 m used), thin
+        /// shell. C_D = 0.54, the value used in free-throw models such as Okubo &amp; Hubbard (2006, J. Sports Sci.
+        /// 24:1303; recalled, not checked here). Stated assumptions: lift from Stepanek's saturating curve
+        /// (borrowed from tennis) and constant spin (a shot lasts about a second).
+        /// </summary>
+        public static SportPreset Basketball { get; } = new SportPreset(
+            "basketball",
+            new Ball(0.60, 0.1205, Ball.ThinShellInertiaFactor),
+            new ConstantDrag(0.54),
+            StepanekLift.Instance,
+            null,
+            "FIBA Official Basketball Rules, equipment (size 7). C_D = 0.54 as in Okubo & Hubbard 2006 (recalled, not checked). " +
+            "Assumptions: C_L from Stepanek's tennis curve; constant spin.");
+
+        /// <summary>Golf spin-decay time constant, s: 4 %/s, tau = -1/ln(0.96) = 24.5 s.</summary>
+        public const double GolfSpinDecayTimeConstant = 24.496;
+
+        /// <summary>Every preset, in the order of <see cref="Names"/>.</summary>
+        public static IReadOnlyList<SportPreset> All { get; } = new[]
+        {
+            Tennis, TennisFreeFlight, Soccer, Baseball, Golf, GolfSmitsSmith, TableTennis, Basketball,
+        };
+
+        /// <summary>The names <see cref="FromName"/> accepts.</summary>
+        public static IReadOnlyList<string> Names { get; } = All.Select(p => p.Name).ToArray();
+
+        /// <summary>
+        /// The preset called <paramref name="name"/>: case-insensitive, with '_' or ' ' accepted for '-'
+        /// ("table-tennis", "Table_Tennis" and "table tennis" are the same).
+        /// </summary>
+        /// <param name="name">One of <see cref="Names"/>.</param>
+        /// <exception cref="ArgumentException">The name is null or unknown; the message lists the known names.</exception>
+        public static SportPreset FromName(string name)
+        {
+            if (name != null)
+            {
+                string key = name.Trim().Replace('_', '-').Replace(' ', '-');
+                foreach (SportPreset preset in All)
+                {
+                    if (string.Equals(preset.Name, key, StringComparison.OrdinalIgnoreCase))
+                    {
+                        return preset;
+                    }
+                }
+            }
+
+            throw new ArgumentException(
+                $"name must be one of: {string.Join(", ", Names)}; got '{name ?? "null"}'.", nameof(name));
+        }
+    }
+}

@@ -1,0 +1,320 @@
+using System;
+using System.Runtime.CompilerServices;
+
+namespace MagnusBall.Queries
+{
+    /// <summary>Which way a crossing of a <see cref="Plane"/> goes.</summary>
+    public enum CrossingDirection
+    {
+        /// <summary>From the negative side to the positive side (along the normal): passing a net or goal line.</summary>
+        AlongNormal = 0,
+
+        /// <summary>From the positive side to the negative side (against the normal): landing on the ground.</summary>
+        AgainstNormal = 1,
+    }
+
+    /// <summary>
+    /// Dense output for one integrator step: the cubic Hermite interpolants of position, velocity and
+    /// angular velocity built from the states and derivatives at both ends of the step. Costs no extra
+    /// derivative evaluation (the end derivative is the next step's start derivative).
+    /// </summary>
+    /// <remarks>
+    /// <para>Position uses p and dp/dt = v at both ends; velocity uses v and dv/dt = a at both ends; angular
+    /// velocity uses w and dw/dt. Each interpolant matches its value and slope at both ends, so its local
+    /// error is O(h^4) and an event located on it keeps the order of a fourth-order method (Hairer, Norsett
+    /// &amp; Wanner, "Solving ODEs I", section II.6, dense output by Hermite interpolation). Because velocity
+    /// has its own interpolant, <see cref="VelocityAt"/> is not exactly the time derivative of
+    /// <see cref="PositionAt"/>; both are accurate to the interpolant's order.</para>
+    /// <para>Events are roots of a scalar cubic in the step: the signed distance to a plane (position
+    /// interpolant) or the velocity along "up" (velocity interpolant, for the apex). The cubic is split at its
+    /// turning points into monotone pieces, the first piece with the wanted sign change is taken, and its root
+    /// is found by safeguarded Newton-bisection to <see cref="TimeTolerance"/>. So the first crossing inside
+    /// the step is found even when both ends of the step are on the same side.</para>
+    /// </remarks>
+    public readonly struct HermiteSegment
+    {
+        /// <summary>Events are located to this time tolerance, s (1e-12 s).</summary>
+        public const double TimeTolerance = 1e-12;
+
+        /// <summary>The state at the start of the step.</summary>
+        public readonly FlightState Start;
+
+        /// <summary>The derivative at the start of the step (model.Derivative(Start)).</summary>
+        public readonly StateDerivative StartDerivative;
+
+        /// <summary>The state at the end of the step.</summary>
+        public readonly FlightState End;
+
+        /// <summary>The derivative at the end of the step (model.Derivative(End)).</summary>
+        public readonly StateDerivative EndDerivative;
+
+        /// <summary>Creates the segment of one step from its end states and derivatives.</summary>
+        /// <param name="start">State at the start of the step.</param>
+        /// <param name="startDerivative">Derivative at the start of the step.</param>
+        /// <param name="end">State at the end of the step; its time must be later than the start's.</param>
+        /// <param name="endDerivative">Derivative at the end of the step.</param>
+        /// <exception cref="ArgumentException">The end is not later than the start, or a time is not finite.</exception>
+        public HermiteSegment(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
+        {
+            if (!double.IsFinite(start.Time) || !double.IsFinite(end.Time) || !(end.Time > start.Time))
+            {
+                throw new ArgumentException(
+                    $"end.Time must be finite and later than start.Time; got start {Require.Format(start.Time)} s, end {Require.Format(end.Time)} s.",
+                    nameof(end));
+            }
+
+            Start = start;
+            StartDerivative = startDerivative;
+            End = end;
+            EndDerivative = endDerivative;
+        }
+
+        /// <summary>Time at the start of the step, s.</summary>
+        public double StartTime => Start.Time;
+
+        /// <summary>Time at the end of the step, s.</summary>
+        public double EndTime => End.Time;
+
+        /// <summary>Length of the step, s.</summary>
+        public double Duration => End.Time - Start.Time;
+
+        /// <summary>Interpolated position at <paramref name="time"/>, m (exact at both ends; extrapolates outside).</summary>
+        /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
+        public Vector3d PositionAt(double time)
+        {
+            double h = Duration;
+            return Cubic(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, (time - Start.Time) / h);
+        }
+
+        /// <summary>Interpolated velocity at <paramref name="time"/>, m/s (its own Hermite cubic from v and a).</summary>
+        /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
+        public Vector3d VelocityAt(double time)
+        {
+            double h = Duration;
+            return Cubic(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, (time - Start.Time) / h);
+        }
+
+        /// <summary>Interpolated angular velocity at <paramref name="time"/>, rad/s.</summary>
+        /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
+        public Vector3d AngularVelocityAt(double time)
+        {
+            double h = Duration;
+            return Cubic(
+                Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h,
+                (time - Start.Time) / h);
+        }
+
+        /// <summary>The full interpolated state at <paramref name="time"/> (position, velocity, spin, time).</summary>
+        /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
+        public FlightState StateAt(double time)
+        {
+            if (time == Start.Time)
+            {
+                return Start;
+            }
+
+            if (time == End.Time)
+            {
+                return End;
+            }
+
+            return new FlightState(PositionAt(time), VelocityAt(time), AngularVelocityAt(time), time);
+        }
+
+        /// <summary>
+        /// Finds the first time inside the step at which the ball crosses <paramref name="plane"/> in the given
+        /// direction. A crossing against the normal goes from strictly positive to zero or below (so a ball
+        /// that starts the step exactly on the plane has not crossed it); along the normal, from strictly
+        /// negative to zero or above.
+        /// </summary>
+        /// <param name="plane">The plane.</param>
+        /// <param name="direction">Which way the crossing must go.</param>
+        /// <param name="time">The crossing time to <see cref="TimeTolerance"/>, s; 0 when none is found.</param>
+        /// <returns>True when the interpolated path crosses the plane that way inside (StartTime, EndTime].</returns>
+        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, out double time)
+        {
+            double h = Duration;
+            double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
+            double f0 = sign * plane.SignedDistance(Start.Position);
+            double m0 = sign * plane.NormalSpeed(StartDerivative.Velocity) * h;
+            double f1 = sign * plane.SignedDistance(End.Position);
+            double m1 = sign * plane.NormalSpeed(EndDerivative.Velocity) * h;
+            return FirstFall(f0, m0, f1, m1, out time);
+        }
+
+        /// <summary>
+        /// Finds the first time inside the step at which the velocity along <paramref name="up"/> changes from
+        /// positive to zero or below: the top of the flight.
+        /// </summary>
+        /// <param name="up">The up direction (for example <see cref="FlightModel.Up"/>); need not be unit length.</param>
+        /// <param name="time">The apex time to <see cref="TimeTolerance"/>, s; 0 when none is found.</param>
+        /// <returns>True when the apex falls inside (StartTime, EndTime].</returns>
+        public bool TryFindApex(in Vector3d up, out double time)
+        {
+            double h = Duration;
+            double f0 = Vector3d.Dot(Start.Velocity, up);
+            double m0 = Vector3d.Dot(StartDerivative.Acceleration, up) * h;
+            double f1 = Vector3d.Dot(End.Velocity, up);
+            double m1 = Vector3d.Dot(EndDerivative.Acceleration, up) * h;
+            return FirstFall(f0, m0, f1, m1, out time);
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3d Cubic(in Vector3d y0, in Vector3d m0, in Vector3d y1, in Vector3d m1, double s)
+        {
+            double s2 = s * s;
+            double s3 = s2 * s;
+            double h00 = 2 * s3 - 3 * s2 + 1;
+            double h10 = s3 - 2 * s2 + s;
+            double h01 = 3 * s2 - 2 * s3;
+            double h11 = s3 - s2;
+            return new Vector3d(
+                h00 * y0.X + h10 * m0.X + h01 * y1.X + h11 * m1.X,
+                h00 * y0.Y + h10 * m0.Y + h01 * y1.Y + h11 * m1.Y,
+                h00 * y0.Z + h10 * m0.Z + h01 * y1.Z + h11 * m1.Z);
+        }
+
+        /// <summary>
+        /// First s in (0, 1] where the scalar Hermite cubic with values f0, f1 and scaled slopes m0, m1 (slope
+        /// times h) falls from &gt; 0 to &lt;= 0; converted to time.
+        /// </summary>
+        private bool FirstFall(double f0, double m0, double f1, double m1, out double time)
+        {
+            time = 0;
+            if (!double.IsFinite(f0 + m0 + f1 + m1))
+            {
+                return false;
+            }
+
+            // f(s) = a s^3 + b s^2 + c s + d
+            double a = 2 * f0 + m0 - 2 * f1 + m1;
+            double b = -3 * f0 - 2 * m0 + 3 * f1 - m1;
+            double c = m0;
+
+            // Turning points: 3a s^2 + 2b s + c = 0, kept when inside (0, 1), sorted.
+            double r1 = double.NaN, r2 = double.NaN;
+            double qa = 3 * a, qb = 2 * b;
+            if (qa != 0)
+            {
+                double disc = qb * qb - 4 * qa * c;
+                if (disc > 0)
+                {
+                    double q = -0.5 * (qb + (qb >= 0 ? Math.Sqrt(disc) : -Math.Sqrt(disc)));
+                    r1 = q / qa;
+                    r2 = q != 0 ? c / q : double.NaN;
+                }
+            }
+            else if (qb != 0)
+            {
+                r1 = -c / qb;
+            }
+
+            if (r1 > r2)
+            {
+                double t = r1;
+                r1 = r2;
+                r2 = t;
+            }
+
+            double lo = 0, flo = f0;
+            if (r1 > 0 && r1 < 1)
+            {
+                double fr = Evaluate(a, b, c, f0, r1);
+                if (flo > 0 && fr <= 0)
+                {
+                    return Refine(a, b, c, f0, lo, r1, out time);
+                }
+
+                lo = r1;
+                flo = fr;
+            }
+
+            if (r2 > 0 && r2 < 1)
+            {
+                double fr = Evaluate(a, b, c, f0, r2);
+                if (flo > 0 && fr <= 0)
+                {
+                    return Refine(a, b, c, f0, lo, r2, out time);
+                }
+
+                lo = r2;
+                flo = fr;
+            }
+
+            if (flo > 0 && f1 <= 0)
+            {
+                if (f1 == 0 && lo == 0)
+                {
+                    // Exactly on the plane at the end of the step; no refinement can do better.
+                    time = End.Time;
+                    return true;
+                }
+
+                return Refine(a, b, c, f0, lo, 1, out time);
+            }
+
+            return false;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double Evaluate(double a, double b, double c, double d, double s) => ((a * s + b) * s + c) * s + d;
+
+        /// <summary>Root of the monotone falling cubic on [lo, hi] (f(lo) &gt; 0 &gt;= f(hi)) by Newton-bisection.</summary>
+        private bool Refine(double a, double b, double c, double d, double lo, double hi, out double time)
+        {
+            double h = Duration;
+            double tolerance = TimeTolerance / h;
+            double s = 0.5 * (lo + hi);
+            double previousWidth = hi - lo;
+            for (int i = 0; i < 200; i++)
+            {
+                double f = Evaluate(a, b, c, d, s);
+                if (f > 0)
+                {
+                    lo = s;
+                }
+                else
+                {
+                    hi = s;
+                }
+
+                if (f == 0 || hi - lo <= tolerance)
+                {
+                    break;
+                }
+
+                double slope = (3 * a * s + 2 * b) * s + c;
+                double newton = slope != 0 ? s - f / slope : double.NaN;
+                double width = hi - lo;
+                if (newton > lo && newton < hi && width < 0.75 * previousWidth)
+                {
+                    if (Math.Abs(newton - s) <= 0.25 * tolerance)
+                    {
+                        s = newton;
+                        break;
+                    }
+
+                    s = newton;
+                }
+                else
+                {
+                    s = 0.5 * (lo + hi);
+                }
+
+                previousWidth = width;
+            }
+
+            if (s < 0)
+            {
+                s = 0;
+            }
+            else if (s > 1)
+            {
+                s = 1;
+            }
+
+            time = s >= 1 ? End.Time : Start.Time + s * h;
+            return true;
+        }
+    }
+}

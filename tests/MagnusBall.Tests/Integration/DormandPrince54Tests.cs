@@ -1,0 +1,187 @@
+using System;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Integration;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Integration
+{
+    /// <summary>The Dormand-Prince 5(4) pair: order, error control, dense output, FSAL, no allocation, bad input.</summary>
+    [TestFixture]
+    public class DormandPrince54Tests
+    {
+        private static FlightModel Model() =>
+            new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+
+        private static FlightState Start()
+        {
+            Vector3d velocity = new Vector3d(30 * Math.Cos(0.15), 0, 30 * Math.Sin(0.15));
+            return new FlightState(new Vector3d(0, 0, 1), velocity, Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRevolutionsPerSecond(30)));
+        }
+
+        private static FlightState Reference(double time)
+        {
+            int steps = (int)Math.Round(time / 1e-5);
+            return Shots.Fly(Model(), RungeKutta4.Instance, Start(), time / steps, steps);
+        }
+
+        private static double Distance(in FlightState a, in FlightState b) =>
+            Math.Sqrt((a.Position - b.Position).LengthSquared + (a.Velocity - b.Velocity).LengthSquared + (a.AngularVelocity - b.AngularVelocity).LengthSquared);
+
+        [Test]
+        public void FixedStep_ConvergesAtFifthOrder()
+        {
+            FlightState reference = Reference(1.0);
+            // 10-40 steps per second: the asymptotic range (at 5 steps the ratio is still pre-asymptotic, ~6.3),
+            // and the 40-step error (~7e-10) stays far above the reference's own (~1e-12).
+            int[] counts = { 10, 20, 40 };
+            double[] errors = new double[counts.Length];
+            for (int i = 0; i < counts.Length; i++)
+            {
+                errors[i] = Distance(Shots.Fly(Model(), DormandPrince54.Instance, Start(), 1.0 / counts[i], counts[i]), reference);
+            }
+
+            double slope = Math.Log(errors[0] / errors[counts.Length - 1]) / Math.Log(counts[counts.Length - 1] / (double)counts[0]);
+            TestContext.Out.WriteLine($"dp54 fixed-step order {slope:F3}; errors {string.Join(", ", errors)}");
+            // 0.15: the same bound the core's convergence tests give the other methods.
+            Assert.That(slope, Is.EqualTo(5).Within(0.15));
+        }
+
+        [Test]
+        public void Adaptive_AtTightTolerance_MatchesRk4AtTenMicroseconds()
+        {
+            var method = new DormandPrince54(1e-12, 1e-12);
+            double step = 0;
+            FlightState end = method.Advance(Model(), Start(), 1.0, ref step, out int evaluations);
+            FlightState reference = Reference(1.0);
+            TestContext.Out.WriteLine($"dp54 @1e-12: {evaluations} evaluations, distance to RK4@1e-5 s {Distance(end, reference):E3}");
+            // 1e-9: RK4 at 1e-5 s is accurate to ~1e-13 here (error ~ C h^4), DP54 at 1e-12 to ~1e-11; 1e-9
+            // leaves room for the accumulated rounding of the 100,000 RK4 steps (~1e5 * 1e-16 * 30 m/s).
+            Assert.That(Distance(end, reference), Is.LessThan(1e-9));
+            Assert.That(end.Time, Is.EqualTo(1.0));
+            Assert.That(evaluations, Is.LessThan(100_000), "it must be far cheaper than the fixed-step reference");
+        }
+
+        [Test]
+        public void Adaptive_ErrorFollowsTheTolerance()
+        {
+            FlightState reference = Reference(1.0);
+            double previous = double.PositiveInfinity;
+            foreach (double tolerance in new[] { 1e-4, 1e-6, 1e-8, 1e-10 })
+            {
+                var method = new DormandPrince54(tolerance, tolerance);
+                double step = 0;
+                FlightState end = method.Advance(Model(), Start(), 1.0, ref step, out int evaluations);
+                double error = Distance(end, reference);
+                TestContext.Out.WriteLine($"tol {tolerance:E0}: error {error:E3} with {evaluations} evaluations");
+                // Each hundredfold tighter tolerance must buy at least a tenfold smaller error (the controller
+                // keeps the local error near tol; the global error follows it within a modest factor).
+                Assert.That(error, Is.LessThan(previous / 10));
+                // 1000 tol: the global error of a 1 s flight with ~tol local error per unit-scaled component.
+                Assert.That(error, Is.LessThan(1000 * tolerance));
+                previous = error;
+            }
+        }
+
+        [Test]
+        public void TryStep_IsFsalAndItsDenseOutputMatchesTheEnds()
+        {
+            FlightModel model = Model();
+            FlightState start = Start();
+            StateDerivative k1 = model.Derivative(start);
+            bool accepted = DormandPrince54.Instance.TryStep(model, start, k1, 1e-3, out DormandPrince54Step step);
+
+            Assert.That(accepted, Is.True);
+            StateDerivative k7 = model.Derivative(step.End);
+            Assert.That(step.EndDerivative.Acceleration, Is.EqualTo(k7.Acceleration), "k7 = f(y1) is handed back as the next k1");
+            Assert.That(step.End.Position, Is.EqualTo(DormandPrince54.Instance.Step(model, start, k1, 1e-3).Position), "TryStep and Step agree");
+            Assert.That(step.InterpolateFraction(0).Position, Is.EqualTo(start.Position));
+            // 1e-15 m: rounding of y0 + (y1 - y0) at positions of order 1 m.
+            Assert.That(Vector3d.Distance(step.InterpolateFraction(1).Position, step.End.Position), Is.LessThan(1e-15));
+            Assert.That(step.Interpolate(step.Start.Time + 0.5e-3).Time, Is.EqualTo(start.Time + 0.5e-3).Within(1e-18));
+        }
+
+        [Test]
+        public void DenseOutput_LocalErrorFallsAsStepToTheFifth()
+        {
+            // The continuous extension is fourth order: its error inside one step falls as h^5.
+            FlightModel model = Model();
+            FlightState start = Start();
+            StateDerivative k1 = model.Derivative(start);
+            double[] steps = { 0.2, 0.1, 0.05 };
+            double[] errors = new double[steps.Length];
+            for (int i = 0; i < steps.Length; i++)
+            {
+                var method = new DormandPrince54(1, 1);
+                method.TryStep(model, start, k1, steps[i], out DormandPrince54Step step);
+                FlightState inside = step.InterpolateFraction(0.37);
+                FlightState exact = Shots.Fly(model, RungeKutta4.Instance, start, 0.37 * steps[i] / 2000, 2000);
+                errors[i] = Distance(inside, exact);
+            }
+
+            double slope = Math.Log(errors[0] / errors[2]) / Math.Log(4);
+            TestContext.Out.WriteLine($"dense-output local order {slope:F3}; errors {string.Join(", ", errors)}");
+            // 4.5: a fourth-order interpolant has local error O(h^5); a third-order one (cubic Hermite) would give ~4.
+            Assert.That(slope, Is.GreaterThan(4.5));
+        }
+
+        [Test]
+        public void AdaptiveStepping_AllocatesNothing()
+        {
+            FlightModel model = Model();
+            var method = new DormandPrince54(1e-9, 1e-9);
+            double step = 0;
+            method.Advance(model, Start(), 0.5, ref step, out _); // warm up
+
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            double sum = 0;
+            for (int i = 0; i < 200; i++)
+            {
+                step = 0;
+                FlightState end = method.Advance(model, Start(), 1.0, ref step, out _);
+                FlightState start = Start();
+                StateDerivative k1 = model.Derivative(start);
+                method.TryStep(model, start, k1, 0.01, out DormandPrince54Step attempt);
+                sum += end.Position.X + attempt.InterpolateFraction(0.5).Position.X + method.Step(model, start, k1, 0.01).Position.X;
+            }
+
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(allocated, Is.EqualTo(0));
+            Assert.That(double.IsFinite(sum), Is.True);
+        }
+
+        [Test]
+        public void Advance_CountsEvaluations()
+        {
+            var method = new DormandPrince54(1e-6, 1e-9);
+            double step = 0.01;
+            method.Advance(Model(), Start(), 0.1, ref step, out int evaluations);
+            // 1 start derivative + 6 per attempted step; never the initial-step heuristic when a step is given.
+            Assert.That((evaluations - 1) % 6, Is.EqualTo(0));
+            Assert.That(evaluations, Is.GreaterThanOrEqualTo(1 + 6));
+        }
+
+        [Test]
+        public void BadInput_ThrowsArgumentExceptionNamingTheParameter()
+        {
+            FlightModel model = Model();
+            FlightState start = Start();
+            StateDerivative k1 = model.Derivative(start);
+            var nanState = new FlightState(new Vector3d(double.NaN, 0, 0), start.Velocity, start.AngularVelocity);
+
+            Assert.That(() => new DormandPrince54(0, 1e-9), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("relativeTolerance"));
+            Assert.That(() => new DormandPrince54(double.NaN, 1e-9), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("relativeTolerance"));
+            Assert.That(() => new DormandPrince54(1e-6, -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("absoluteTolerance"));
+            Assert.That(() => DormandPrince54.Instance.Step(model, start, k1, 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
+            Assert.That(() => DormandPrince54.Instance.Step(model, start, k1, double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
+            Assert.That(() => DormandPrince54.Instance.TryStep(model, nanState, k1, 0.01, out _), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("state"));
+            Assert.That(() => DormandPrince54.Instance.TryStep(null!, start, k1, 0.01, out _), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("model"));
+            double negative = -1;
+            Assert.That(() => DormandPrince54.Instance.Advance(model, start, 1, ref negative, out _), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
+            double zero = 0;
+            Assert.That(() => DormandPrince54.Instance.Advance(model, start, double.PositiveInfinity, ref zero, out _), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
+            Assert.That(() => DormandPrince54.Instance.InitialStep(model, start, k1, -1), Throws.InstanceOf<ArgumentOutOfRangeException>());
+            DormandPrince54.Instance.TryStep(model, start, k1, 0.01, out DormandPrince54Step ok);
+            Assert.That(() => ok.Interpolate(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("time"));
+        }
+    }
+}

@@ -1,0 +1,88 @@
+using System;
+using System.Linq;
+using MagnusBall.Presets;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Presets
+{
+    /// <summary>The preset catalogue: lookup by name, sources, overrides.</summary>
+    [TestFixture]
+    public class SportPresetTests
+    {
+        [Test]
+        public void FromName_FindsEveryPreset_IgnoringCaseAndSeparators()
+        {
+            foreach (SportPreset preset in SportPresets.All)
+            {
+                Assert.That(SportPresets.FromName(preset.Name), Is.SameAs(preset));
+                Assert.That(SportPresets.FromName(preset.Name.ToUpperInvariant()), Is.SameAs(preset));
+            }
+
+            Assert.That(SportPresets.FromName("Table_Tennis"), Is.SameAs(SportPresets.TableTennis));
+            Assert.That(SportPresets.FromName(" table tennis "), Is.SameAs(SportPresets.TableTennis));
+            Assert.That(SportPresets.Names, Is.EquivalentTo(new[]
+            {
+                "tennis", "tennis-free-flight", "soccer", "baseball", "golf", "golf-smits-smith", "table-tennis", "basketball",
+            }));
+        }
+
+        [TestCase("cricket")]
+        [TestCase("")]
+        [TestCase(null)]
+        public void FromName_RefusesAnUnknownName_ListingTheKnownOnes(string? name)
+        {
+            var error = Assert.Throws<ArgumentException>(() => SportPresets.FromName(name!));
+            Assert.That(error!.ParamName, Is.EqualTo("name"));
+            foreach (string known in SportPresets.Names)
+            {
+                Assert.That(error.Message, Does.Contain(known));
+            }
+        }
+
+        [Test]
+        public void EveryPreset_CitesASource_AndBuildsAWorkingModel()
+        {
+            foreach (SportPreset preset in SportPresets.All)
+            {
+                Assert.That(preset.Source, Does.Match("[0-9]{4}|ITF|FIFA|MLB|USGA|ITTF|FIBA"), preset.Name);
+                FlightModel model = preset.CreateModel(Air.SeaLevel, Gravity.YUp);
+                StateDerivative d = model.Derivative(new FlightState(Vector3d.Zero, new Vector3d(20, 5, 0), new Vector3d(0, 0, 100)));
+                Assert.That(d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite, Is.True, preset.Name);
+                Assert.That(model.Drag, Is.Not.Null, preset.Name);
+                Assert.That(model.Lift, Is.Not.Null, preset.Name);
+            }
+        }
+
+        [Test]
+        public void BallsMatchTheirRulebooks()
+        {
+            // Rulebook ranges (ITF, FIFA size 5, MLB, USGA limits, ITTF, FIBA size 7).
+            Assert.That(SportPresets.Tennis.Ball.Mass, Is.InRange(0.0560, 0.0594));
+            Assert.That(2 * SportPresets.Tennis.Ball.Radius, Is.InRange(0.0654, 0.0686));
+            Assert.That(SportPresets.Soccer.Ball.Mass, Is.InRange(0.410, 0.450));
+            Assert.That(2 * Math.PI * SportPresets.Soccer.Ball.Radius, Is.InRange(0.68, 0.70));
+            Assert.That(SportPresets.Baseball.Ball.Mass, Is.InRange(0.1417, 0.1488));
+            Assert.That(2 * Math.PI * SportPresets.Baseball.Ball.Radius, Is.InRange(0.2286, 0.2350));
+            Assert.That(SportPresets.Golf.Ball.Mass, Is.LessThanOrEqualTo(0.04593));
+            Assert.That(2 * SportPresets.Golf.Ball.Radius, Is.GreaterThanOrEqualTo(0.04267));
+            Assert.That(SportPresets.TableTennis.Ball.Mass, Is.EqualTo(0.0027));
+            Assert.That(2 * SportPresets.TableTennis.Ball.Radius, Is.EqualTo(0.040));
+            Assert.That(SportPresets.Basketball.Ball.Mass, Is.InRange(0.567, 0.650));
+            Assert.That(2 * Math.PI * SportPresets.Basketball.Ball.Radius, Is.InRange(0.749, 0.780));
+        }
+
+        [Test]
+        public void Overrides_ReplaceOnePartAndKeepTheRest()
+        {
+            SportPreset golf = SportPresets.Golf;
+            SportPreset noDecay = golf.WithSpinDecay(null);
+            Assert.That(noDecay.SpinDecay, Is.Null);
+            Assert.That(noDecay.Drag, Is.SameAs(golf.Drag));
+            Assert.That(noDecay.Lift, Is.SameAs(golf.Lift));
+            Assert.That(noDecay.Ball, Is.SameAs(golf.Ball));
+            Assert.That(noDecay.Name, Is.EqualTo("golf"));
+            Assert.That(golf.WithBall(Ball.Tennis).Ball, Is.SameAs(Ball.Tennis));
+            Assert.That(SportPresets.All.Select(p => p.Name).Distinct().Count(), Is.EqualTo(SportPresets.All.Count));
+        }
+    }
+}

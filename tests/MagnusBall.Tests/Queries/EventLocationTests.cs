@@ -1,0 +1,207 @@
+using System;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Queries
+{
+    /// <summary>Dense output and event location on the cubic Hermite of each step.</summary>
+    [TestFixture]
+    public class EventLocationTests
+    {
+        /// <summary>A tennis drive that lands about 24 m away: 30 m/s at 12 deg from 1 m with 20 rev/s topspin (Stepanek model).</summary>
+        internal static FlightState TennisDrive(Vector3d up)
+        {
+            var model = Shots.StepanekTennis(Gravity.Along(up));
+            double e = 12 * Math.PI / 180;
+            Vector3d forward = Math.Abs(up.X) < 0.9 ? Vector3d.UnitX : Vector3d.UnitY;
+            Vector3d velocity = 30 * (Math.Cos(e) * forward + Math.Sin(e) * up);
+            return new FlightState(up * 1.0, velocity, Spin.Topspin(velocity, up, Spin.FromRevolutionsPerSecond(20)));
+        }
+
+        private static FlightEvent FlyToLanding(FlightModel model, IIntegrator integrator, FlightState start, double step)
+        {
+            var stepper = new FlightStepper(model, integrator, FlightEventSet.ForModel(model));
+            stepper.Reset(start);
+            while (stepper.State.Time < 10)
+            {
+                stepper.Step(step);
+                if (stepper.TryGetEvent(FlightEventKinds.Landing, out FlightEvent landing))
+                {
+                    return landing;
+                }
+            }
+
+            throw new AssertionException("no landing within 10 s");
+        }
+
+        [Test]
+        public void Segment_IsExactAtBothEnds()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            FlightState s0 = TennisDrive(Vector3d.UnitZ);
+            StateDerivative d0 = model.Derivative(s0);
+            FlightState s1 = RungeKutta4.Instance.Step(model, s0, d0, 1.0 / 60);
+            var segment = new HermiteSegment(s0, d0, s1, model.Derivative(s1));
+
+            Assert.That(segment.PositionAt(s0.Time), Is.EqualTo(s0.Position));
+            Assert.That((segment.PositionAt(s1.Time) - s1.Position).Length, Is.LessThan(1e-14));
+            Assert.That((segment.VelocityAt(s1.Time) - s1.Velocity).Length, Is.LessThan(1e-13));
+            Assert.That((segment.AngularVelocityAt(s1.Time) - s1.AngularVelocity).Length, Is.LessThan(1e-13));
+            Assert.That(segment.Duration, Is.EqualTo(1.0 / 60).Within(1e-15));
+        }
+
+        [Test]
+        public void VacuumParabola_LandingAndApex_AreExact()
+        {
+            // RK4 and the cubic Hermite both reproduce a parabola exactly, so the events are exact
+            // up to the 1e-12 s root tolerance and rounding.
+            var g = 9.81;
+            var model = FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, 0, -g));
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 5), default);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, FlightEventSet.ForModel(model));
+            stepper.Reset(start);
+            FlightEvent apex = default, landing = default;
+            bool sawApex = false, sawLanding = false;
+            while (!sawLanding)
+            {
+                stepper.Step(1.0 / 30);
+                sawApex |= stepper.TryGetEvent(FlightEventKinds.Apex, out FlightEvent a) && (apex = a).Time > 0;
+                sawLanding = stepper.TryGetEvent(FlightEventKinds.Landing, out landing);
+            }
+
+            double landingTime = (5 + Math.Sqrt(25 + 2 * g * 1)) / g;
+            Assert.That(sawApex, Is.True);
+            Assert.That(apex.Time, Is.EqualTo(5 / g).Within(1e-11));
+            Assert.That(apex.Position.Z, Is.EqualTo(1 + 25 / (2 * g)).Within(1e-11));
+            Assert.That(landing.Time, Is.EqualTo(landingTime).Within(1e-11));
+            Assert.That(landing.Position.X, Is.EqualTo(20 * landingTime).Within(1e-10));
+            Assert.That(landing.Position.Z, Is.EqualTo(0).Within(1e-10));
+            Assert.That(landing.Velocity.Z, Is.EqualTo(5 - g * landingTime).Within(1e-10));
+        }
+
+        // RK4 at 1/60 s and 1/240 s against RK4 at 1/15360 s (64x and 256x smaller steps: its own error is
+        // below 1e-12 m, far under the bounds the issue sets, 1e-5 m and 1e-6 m).
+        [TestCase(60, 1e-5)]
+        [TestCase(240, 1e-6)]
+        public void TennisDriveLanding_KeepsRk4Order(int stepsPerSecond, double bound)
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            FlightState start = TennisDrive(Vector3d.UnitZ);
+            FlightEvent reference = FlyToLanding(model, RungeKutta4.Instance, start, 1.0 / 15360);
+            FlightEvent landing = FlyToLanding(model, RungeKutta4.Instance, start, 1.0 / stepsPerSecond);
+
+            double error = Vector3d.Distance(landing.Position, reference.Position);
+            TestContext.Out.WriteLine(
+                $"landing x = {reference.Position.X:F6} m; RK4 1/{stepsPerSecond} s: error {error:E2} m, time error {Math.Abs(landing.Time - reference.Time):E2} s");
+            Assert.That(reference.Position.X, Is.InRange(23, 25), "the case is a ~24 m drive");
+            Assert.That(error, Is.LessThan(bound));
+        }
+
+        [Test]
+        public void FirstStepBelowGround_MissesByFarMore()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            FlightState start = TennisDrive(Vector3d.UnitZ);
+            FlightEvent reference = FlyToLanding(model, RungeKutta4.Instance, start, 1.0 / 15360);
+
+            // The naive way: the first step end below the ground is "the landing".
+            var stepper = new FlightStepper(model, RungeKutta4.Instance);
+            stepper.Reset(start);
+            while (stepper.State.Position.Z > 0)
+            {
+                stepper.Step(1.0 / 60);
+            }
+
+            double naive = Vector3d.Distance(stepper.State.Position, reference.Position);
+            TestContext.Out.WriteLine($"first step below ground at 1/60 s: off by {naive:F3} m");
+
+            // At 1/60 s the ball moves ~0.4 m per step; the step end falls anywhere in it, so it is off by
+            // a sizeable fraction of that, orders of magnitude above the Hermite event's 1e-5 m.
+            Assert.That(naive, Is.GreaterThan(1e-3));
+        }
+
+        [Test]
+        public void CrossingDirection_IsRespected()
+        {
+            var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(10, 0, 0), default);
+            StateDerivative d0 = model.Derivative(start);
+            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 0.1);
+            var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
+
+            var net = new Plane(new Vector3d(0.5, 0, 0), Vector3d.UnitX);
+            Assert.That(segment.TryFindCrossing(net, CrossingDirection.AlongNormal, out double t), Is.True);
+            Assert.That(t, Is.EqualTo(0.05).Within(1e-12));
+            Assert.That(segment.TryFindCrossing(net, CrossingDirection.AgainstNormal, out _), Is.False);
+            Assert.That(segment.TryFindCrossing(net.Flipped(), CrossingDirection.AgainstNormal, out double t2), Is.True);
+            Assert.That(t2, Is.EqualTo(0.05).Within(1e-12));
+
+            // A plane the ball does not reach inside the step.
+            Assert.That(segment.TryFindCrossing(new Plane(new Vector3d(2, 0, 0), Vector3d.UnitX), CrossingDirection.AlongNormal, out _), Is.False);
+        }
+
+        [Test]
+        public void CrossingInsideStep_IsFoundWhenBothEndsAreOnTheSameSide()
+        {
+            // Straight up and back down within one long step: the ball passes a plane at 1 m above its
+            // start going up, and both step ends are below it.
+            var model = FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, 0, -10));
+            var start = new FlightState(default, new Vector3d(1, 0, 10), default);
+            StateDerivative d0 = model.Derivative(start);
+            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 2.0);
+            var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
+
+            var ceiling = new Plane(new Vector3d(0, 0, 1), Vector3d.UnitZ);
+            Assert.That(segment.TryFindCrossing(ceiling, CrossingDirection.AlongNormal, out double up), Is.True);
+            Assert.That(segment.TryFindCrossing(ceiling, CrossingDirection.AgainstNormal, out double down), Is.True);
+            Assert.That(up, Is.EqualTo((10 - Math.Sqrt(80)) / 10).Within(1e-12));
+            Assert.That(down, Is.EqualTo((10 + Math.Sqrt(80)) / 10).Within(1e-12));
+        }
+
+        [Test]
+        public void BallStartingOnTheGround_HasNotLanded()
+        {
+            var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, FlightEventSet.ForModel(model));
+            stepper.Reset(new FlightState(default, new Vector3d(10, 0, 3), default));
+            stepper.Step(0.01);
+            Assert.That(stepper.TryGetEvent(FlightEventKinds.Landing, out _), Is.False);
+        }
+
+        [Test]
+        public void EventsInOneStep_ComeInTimeOrder()
+        {
+            var model = FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, 0, -10));
+            var events = new FlightEventSet(Vector3d.UnitZ, new Plane(default, Vector3d.UnitZ),
+                new[] { new Plane(new Vector3d(15, 0, 0), Vector3d.UnitX), new Plane(new Vector3d(5, 0, 0), Vector3d.UnitX) });
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, events);
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 0.5), new Vector3d(10, 0, 10), default));
+            int count = stepper.Step(3.0); // one step holds everything: x=5 at 0.5 s, apex 1 s, x=15 at 1.5 s, landing ~2.05 s
+            Assert.That(count, Is.EqualTo(4));
+            ReadOnlySpan<FlightEvent> e = stepper.Events;
+            Assert.That(e[0].Kind, Is.EqualTo(FlightEventKinds.PlaneCrossing));
+            Assert.That(e[0].PlaneIndex, Is.EqualTo(1));
+            Assert.That(e[0].Time, Is.EqualTo(0.5).Within(1e-12));
+            Assert.That(e[1].Kind, Is.EqualTo(FlightEventKinds.Apex));
+            Assert.That(e[1].Time, Is.EqualTo(1.0).Within(1e-12));
+            Assert.That(e[2].PlaneIndex, Is.EqualTo(0));
+            Assert.That(e[2].Time, Is.EqualTo(1.5).Within(1e-12));
+            Assert.That(e[3].Kind, Is.EqualTo(FlightEventKinds.Landing));
+            Assert.That(e[3].Time, Is.EqualTo(1 + Math.Sqrt(1.1)).Within(1e-12));
+        }
+
+        [Test]
+        public void YUpFrame_GivesTheSameLanding()
+        {
+            var zModel = Shots.StepanekTennis(Gravity.ZUp);
+            var yModel = Shots.StepanekTennis(Gravity.YUp);
+            FlightEvent z = FlyToLanding(zModel, RungeKutta4.Instance, TennisDrive(Vector3d.UnitZ), 1.0 / 240);
+            FlightEvent y = FlyToLanding(yModel, RungeKutta4.Instance, TennisDrive(Vector3d.UnitY), 1.0 / 240);
+            Assert.That(y.Time, Is.EqualTo(z.Time).Within(1e-12));
+            Assert.That(y.Position.Y, Is.EqualTo(z.Position.Z).Within(1e-12));
+            Assert.That(y.Position.X, Is.EqualTo(z.Position.X).Within(1e-12));
+        }
+    }
+}
