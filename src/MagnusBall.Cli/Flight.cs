@@ -92,8 +92,7 @@ namespace MagnusBall.Cli
                 }
 
                 double before = stepper.State.Time;
-                stepper.Step(h);
-                if (!stepper.State.IsFinite || !stepper.Derivative.Acceleration.IsFinite)
+                if (!stepper.TryStep(h))
                 {
                     throw new InputError(
                         $"scenarios[{scenario.Index}].step",
