@@ -92,8 +92,19 @@ namespace MagnusBall.Cli
                 }
 
                 double before = stepper.State.Time;
-                stepper.Step(h);
-                if (!stepper.State.IsFinite || !stepper.Derivative.Acceleration.IsFinite)
+                bool diverged;
+                try
+                {
+                    stepper.Step(h);
+                    diverged = !stepper.State.IsFinite || !stepper.Derivative.Acceleration.IsFinite;
+                }
+                catch (Exception e) when (e is InvalidOperationException || e is ArgumentException)
+                {
+                    // The stepper (or the integrator, on a non-finite state) refuses a step that blew up.
+                    diverged = true;
+                }
+
+                if (diverged)
                 {
                     throw new InputError(
                         $"scenarios[{scenario.Index}].step",
