@@ -92,19 +92,8 @@ namespace MagnusBall.Cli
                 }
 
                 double before = stepper.State.Time;
-                bool diverged;
-                try
-                {
-                    stepper.Step(h);
-                    diverged = !stepper.State.IsFinite || !stepper.Derivative.Acceleration.IsFinite;
-                }
-                catch (Exception e) when (e is InvalidOperationException || e is ArgumentException)
-                {
-                    // The stepper (or the integrator, on a non-finite state) refuses a step that blew up.
-                    diverged = true;
-                }
-
-                if (diverged)
+                // TryStep refuses a step that blows up (the state is kept), so the error can name the step.
+                if (!stepper.TryStep(h) || !stepper.State.IsFinite)
                 {
                     throw new InputError(
                         $"scenarios[{scenario.Index}].step",

@@ -4,6 +4,7 @@ using System.Linq;
 using System.Text.Json;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
+using MagnusBall.Presets;
 
 namespace MagnusBall.Cli
 {
@@ -100,46 +101,35 @@ namespace MagnusBall.Cli
         /// </summary>
         internal static FlightSetup ReadSetup(JsonFields s)
         {
-            JsonFields ballFields = s.Object("ball");
-            double mass = ballFields.Positive("mass");
-            double radius = ballFields.Positive("radius");
-            double inertia = ballFields.Positive("inertiaFactor", Ball.SolidSphereInertiaFactor);
-            if (inertia > 1)
-            {
-                throw new InputError(ballFields.PathOf("inertiaFactor"), "must be in (0, 1]; got " + JsonFields.Format(inertia));
-            }
-
-            ballFields.RejectUnknown();
-            var ball = new Ball(mass, radius, inertia);
-
-            Air air;
-            JsonFields? airFields = s.OptionalObject("air");
-            if (airFields is null)
-            {
-                air = new Air(DefaultDensity);
-            }
-            else
-            {
-                double density = airFields.NonNegative("density", DefaultDensity);
-                Vector3d wind = airFields.Vector("wind", Vector3d.Zero);
-                double viscosity = airFields.Positive("dynamicViscosity", Air.SeaLevelDynamicViscosity);
-                airFields.RejectUnknown();
-                air = new Air(density, wind, viscosity);
-            }
+            // "preset" (issue 7) supplies the ball, aero and spin decay; explicit fields override each part.
+            SportPreset? preset = PresetAndAirFields.ReadPreset(s);
+            Ball ball = PresetAndAirFields.ReadBall(s, preset);
+            Air air = PresetAndAirFields.ReadAir(s, DefaultDensity);
 
             Vector3d gravity = s.Vector("gravity", DefaultGravity);
 
-            IDragModel? drag = null;
-            ILiftModel? lift = null;
+            IDragModel? drag = preset?.Drag;
+            ILiftModel? lift = preset?.Lift;
             JsonFields? aero = s.OptionalObject("aero");
             if (aero != null)
             {
-                drag = ReadDrag(aero.OptionalObject("drag"));
-                lift = ReadLift(aero.OptionalObject("lift"));
+                // Without a preset an absent law is off, as before; with one, only a given law replaces it.
+                if (preset is null || aero.Has("drag"))
+                {
+                    drag = ReadDrag(aero.OptionalObject("drag"));
+                }
+
+                if (preset is null || aero.Has("lift"))
+                {
+                    lift = ReadLift(aero.OptionalObject("lift"));
+                }
+
                 aero.RejectUnknown();
             }
 
-            ISpinDecayModel? spinDecay = ReadSpinDecay(s.OptionalObject("spinDecay"));
+            ISpinDecayModel? spinDecay = preset != null && !s.Has("spinDecay")
+                ? preset.SpinDecay
+                : ReadSpinDecay(s.OptionalObject("spinDecay"));
 
             IIntegrator integrator = ReadIntegrator(s);
             double step = s.Positive("step", DefaultStep);
@@ -243,8 +233,10 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            ILiftModel? lift = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin", "goff-carre", "nathan") switch
+            ILiftModel? lift = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin", "goff-carre", "nathan", "smits-smith-golf", "table") switch
             {
+                "smits-smith-golf" => PiecewiseLinearLift.GolfSmitsSmith,
+                "table" => PresetAndAirFields.ReadLiftTable(fields),
                 "constant" => new ConstantLift(fields.Number("cl")),
                 "stepanek" => StepanekLift.Instance,
                 "linear-spin" => new LinearSpinLift(fields.Number("k")),

@@ -74,6 +74,7 @@ namespace MagnusBall.Samples.TennisScene
         public const double MaxFlightSeconds = 15;
 
         private readonly FlightPlane[] _planes;
+        private FixedStepDriver? _predictor;
 
         /// <summary>Creates a simulation with the given settings.</summary>
         /// <param name="settings">The ball, air, coefficients, integrator and fixed step.</param>
@@ -146,6 +147,52 @@ namespace MagnusBall.Samples.TennisScene
             FlightState end = landed ? landing.State : driver.State;
             Vector3d contact = new Vector3d(end.Position.X, 0, end.Position.Z);
             return new ShotReport(shot, clearance, landed, contact, end.Velocity, end.Time, apex, count);
+        }
+
+        /// <summary>
+        /// Predicts the path from <paramref name="from"/> to the landing (or the time limit), writing one point
+        /// every <paramref name="sampleInterval"/> seconds and the landing point into <paramref name="points"/>.
+        /// Steps exactly as the ball's driver does, so the ball follows the prediction. Allocates nothing after
+        /// the first call.
+        /// </summary>
+        /// <param name="from">The state to predict from.</param>
+        /// <param name="points">Where to write the points, m.</param>
+        /// <param name="sampleInterval">Time between points, s; finite and &gt; 0.</param>
+        /// <returns>How many points were written.</returns>
+        public int Predict(in FlightState from, Span<Vector3d> points, double sampleInterval)
+        {
+            if (!(sampleInterval > 0) || double.IsInfinity(sampleInterval))
+            {
+                throw new ArgumentOutOfRangeException(nameof(sampleInterval), sampleInterval, $"sampleInterval must be finite and > 0 s; got {sampleInterval}.");
+            }
+
+            if (_predictor == null)
+            {
+                _predictor = CreateDriver(from);
+            }
+            else
+            {
+                _predictor.Reset(from);
+            }
+
+            int count = 0;
+            Append(points, ref count, from.Position);
+            double next = from.Time + sampleInterval;
+            double end = from.Time + MaxFlightSeconds;
+            while (count < points.Length && !_predictor.HasLanded && _predictor.State.Time < end)
+            {
+                _predictor.Advance(Settings.FixedStep);
+                if (_predictor.State.Time >= next || _predictor.HasLanded)
+                {
+                    Append(points, ref count, _predictor.State.Position);
+                    while (next <= _predictor.State.Time)
+                    {
+                        next += sampleInterval;
+                    }
+                }
+            }
+
+            return count;
         }
 
         private static void Append(Span<Vector3d> path, ref int count, in Vector3d point)
