@@ -210,13 +210,14 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(lost, Is.EqualTo(3), "the apex, the net crossing and the landing");
         }
 
-        [Test]
-        public void AWholeFlight_AllocatesNothing()
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AWholeFlight_AllocatesNothing(bool bouncing)
         {
             var planes = new[] { new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) };
             var events = new FrameEvent[4];
             double[] deltas = DriverShots.Jittery(7, 64);
-            FixedStepDriver driver = NewDriver(planes: planes);
+            FixedStepDriver driver = NewDriver(planes: planes, bounce: bouncing ? CrossBounce.Clay : null);
             Fly(driver, events, deltas); // warm up: JIT and static initialisation
 
             driver.Reset(DriverShots.Drive);
