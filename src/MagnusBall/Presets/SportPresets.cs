@@ -134,13 +134,13 @@ namespace MagnusBall.Presets
         public const double GolfSpinDecayTimeConstant = 24.496;
 
         /// <summary>Every preset, in the order of <see cref="Names"/>.</summary>
-        public static IReadOnlyList<SportPreset> All { get; } = new[]
+        public static IReadOnlyList<SportPreset> All { get; } = Array.AsReadOnly(new[]
         {
             Tennis, TennisFreeFlight, Soccer, Baseball, Golf, GolfSmitsSmith, TableTennis, Basketball,
-        };
+        });
 
         /// <summary>The names <see cref="FromName"/> accepts.</summary>
-        public static IReadOnlyList<string> Names { get; } = All.Select(p => p.Name).ToArray();
+        public static IReadOnlyList<string> Names { get; } = Array.AsReadOnly(All.Select(p => p.Name).ToArray());
 
         /// <summary>
         /// The preset called <paramref name="name"/>: case-insensitive, with '_' or ' ' accepted for '-'

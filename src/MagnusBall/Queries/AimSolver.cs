@@ -107,8 +107,9 @@ namespace MagnusBall.Queries
     /// crosses the target plane along its normal before it lands on the ground.</para>
     /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
     /// target and the target plane passes through the target with that normal. Heights are measured along
-    /// up. The elevation scan runs upward from the lower limit, so the lowest solution is returned (a drive,
-    /// not a lob).</para>
+    /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
+    /// solution is returned (a drive, not a lob); a solution window narrower than the scan width can be
+    /// missed, and when even the lower limit works, the lower limit is returned.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed class AimSolver
@@ -141,7 +142,7 @@ namespace MagnusBall.Queries
             double maximumFlightTime = 10,
             double minimumElevationDegrees = -45,
             double maximumElevationDegrees = 80,
-            double elevationScanDegrees = 0.5,
+            double elevationScanDegrees = 2,
             double maximumSpeed = 100)
         {
             Require.NotNull(model, nameof(model));
@@ -484,18 +485,28 @@ namespace MagnusBall.Queries
         {
             failed = false;
             int side = 0;
+            double checkpoint = Math.Abs(b - a);
+            bool bisect = false;
             for (int i = 0; i < 200 && Math.Abs(b - a) > tolerance; i++)
             {
                 double width = b - a;
-                double x;
-                double t = double.IsFinite(fa) && double.IsFinite(fb) && fb > fa ? -fa / (fb - fa) : 0.5;
-                double guard = Math.Max(0.01, 0.25 * tolerance / Math.Abs(width));
-                if (i % 4 == 3 || !(t > guard && t < 1 - guard))
+                if (i % 3 == 2)
                 {
-                    t = 0.5;
+                    // Safeguard: if three steps did not halve the bracket, bisect once.
+                    bisect = Math.Abs(width) > 0.5 * checkpoint;
+                    checkpoint = Math.Abs(width);
                 }
 
-                x = a + width * t;
+                double t = 0.5;
+                if (!bisect && double.IsFinite(fa) && double.IsFinite(fb) && fb > fa)
+                {
+                    // Regula falsi, kept at least a quarter of the tolerance inside the bracket.
+                    double margin = Math.Min(0.25, 0.25 * tolerance / Math.Abs(width));
+                    t = Math.Max(margin, Math.Min(1 - margin, -fa / (fb - fa)));
+                }
+
+                bisect = false;
+                double x = a + width * t;
                 double fx = f.Evaluate(x);
                 if (double.IsNaN(fx))
                 {
@@ -564,7 +575,11 @@ namespace MagnusBall.Queries
             double endTime = launch.Time + MaximumFlightTime;
             while (stepper.State.Time < endTime)
             {
-                stepper.Step(Step);
+                if (!stepper.TryStep(Step))
+                {
+                    break; // diverged: this trial fails (margin -infinity), the solve goes on
+                }
+
                 HermiteSegment segment = stepper.LastSegment;
                 bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, out double crossing);
                 bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double landing);
@@ -578,6 +593,15 @@ namespace MagnusBall.Queries
                 if (down)
                 {
                     arrival = segment.StateAt(landing);
+                    landed = true;
+                    return false;
+                }
+
+                if (Ground.SignedDistance(segment.End.Position) < 0)
+                {
+                    // Launched from on (or under) the ground going down: it never crossed from above, but it is
+                    // in the ground all the same.
+                    arrival = segment.End;
                     landed = true;
                     return false;
                 }

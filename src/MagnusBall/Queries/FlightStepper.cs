@@ -93,9 +93,34 @@ namespace MagnusBall.Queries
         /// </summary>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <returns>The number of events inside the step.</returns>
-        /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
+        /// <exception cref="InvalidOperationException">
+        /// No state was given yet (<see cref="Reset"/>), or the step diverged (see <see cref="TryStep"/>); the state is left unchanged.
+        /// </exception>
         /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive.</exception>
         public int Step(double step)
+        {
+            if (!TryStep(step))
+            {
+                throw new InvalidOperationException(
+                    $"The step of {Require.Format(step)} s diverged (the state would not be finite): it is beyond {Integrator.Name}'s " +
+                    $"stability limit for this ball and speed (explicit methods need roughly step < 2.8 / (k C_D s), k = {Require.Format(Model.AerodynamicFactor)} 1/m). " +
+                    "Use a smaller step.");
+            }
+
+            return _eventCount;
+        }
+
+        /// <summary>
+        /// Advances the flight by <paramref name="step"/> seconds and locates the events inside the step,
+        /// unless the step diverges (the new state would have a non-finite component, as when the step is
+        /// far beyond the integrator's stability limit): then it returns false and leaves the state unchanged.
+        /// Allocates nothing.
+        /// </summary>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <returns>True when the step was taken (<see cref="Events"/> holds its events).</returns>
+        /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive.</exception>
+        public bool TryStep(double step)
         {
             if (!_started)
             {
@@ -106,14 +131,21 @@ namespace MagnusBall.Queries
             FlightState next = Integrator.Step(Model, _state, _derivative, step);
             StateDerivative nextDerivative = Model.Derivative(next);
             DerivativeEvaluations += Integrator.DerivativeEvaluationsPerStep;
-            StepCount++;
+            if (!next.IsFinite || !(next.Time > _state.Time) || !IsFinite(nextDerivative))
+            {
+                _eventCount = 0;
+                return false;
+            }
 
+            StepCount++;
             _segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
             _state = next;
             _derivative = nextDerivative;
             _eventCount = EventSet == null ? 0 : EventSet.Scan(_segment, _events);
-            return _eventCount;
+            return true;
         }
+
+        private static bool IsFinite(in StateDerivative d) => d.Velocity.IsFinite && d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite;
 
         /// <summary>The first event of one of the <paramref name="kinds"/> inside the last step.</summary>
         /// <param name="kinds">The kinds to look for.</param>

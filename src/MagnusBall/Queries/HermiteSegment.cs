@@ -83,6 +83,11 @@ namespace MagnusBall.Queries
         public Vector3d PositionAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.Position; // the default segment (no step yet)
+            }
+
             return Cubic(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, (time - Start.Time) / h);
         }
 
@@ -91,6 +96,11 @@ namespace MagnusBall.Queries
         public Vector3d VelocityAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.Velocity;
+            }
+
             return Cubic(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, (time - Start.Time) / h);
         }
 
@@ -99,6 +109,11 @@ namespace MagnusBall.Queries
         public Vector3d AngularVelocityAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.AngularVelocity;
+            }
+
             return Cubic(
                 Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h,
                 (time - Start.Time) / h);
@@ -108,7 +123,7 @@ namespace MagnusBall.Queries
         /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
         public FlightState StateAt(double time)
         {
-            if (time == Start.Time)
+            if (time == Start.Time || !(Duration > 0))
             {
                 return Start;
             }

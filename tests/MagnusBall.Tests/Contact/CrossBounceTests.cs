@@ -135,7 +135,10 @@ namespace MagnusBall.Tests.Contact
             BounceOutcome edge = Court.ZUp.Bounce(model, Tennis, 20, lo, 0);
             double vx2 = Court.ZUp.Forward(edge.Velocity);
             double rw2 = Tennis.Radius * Vector3d.Dot(edge.AngularVelocity, Court.ZUp.TopspinAxis);
-            TestContext.Out.WriteLine($"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}");
+            BounceOutcome gripSide = Court.ZUp.Bounce(model, Tennis, 20, hi, 0);
+            TestContext.Out.WriteLine(
+                $"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}; across it vx2 jumps by " +
+                $"{Court.ZUp.Forward(gripSide.Velocity) - vx2:F4} m/s, angle by {Court.ZUp.AngleDegrees(gripSide) - Court.ZUp.AngleDegrees(edge):F3} deg");
             // The bisection leaves the angle within ~1e-14 deg; the slip there is rounding-level.
             Assert.That(vx2 - rw2, Is.EqualTo(0).Within(1e-9));
 
@@ -323,6 +326,45 @@ namespace MagnusBall.Tests.Contact
                     BounceOutcome o = Court.ZUp.Bounce(new CrossBounce(surface), ball, 30, 40, 3000, 500);
                     Assert.That(o.Velocity.IsFinite && o.AngularVelocity.IsFinite, Is.True);
                     Assert.That(Court.ZUp.Up(o.Velocity), Is.GreaterThanOrEqualTo(0));
+                }
+            }
+        }
+
+        [TestCaseSource(nameof(AllSurfaces))]
+        public void NearlyVerticalDrop_LeavesNearlyVertically(Surface surface)
+        {
+            // The offset torque resists rolling and cannot reverse it, so the bounce is continuous as the
+            // tangential speed goes to zero: 1 um/s in, at most about that out.
+            var model = new CrossBounce(surface);
+            BounceOutcome o = model.Bounce(Tennis, Vector3d.UnitZ, new Vector3d(1e-6, 0, -10), Vector3d.Zero);
+            double tangential = Math.Sqrt(o.Velocity.X * o.Velocity.X + o.Velocity.Y * o.Velocity.Y);
+            Assert.That(tangential, Is.LessThanOrEqualTo(1e-6));
+            Assert.That(Tennis.Radius * o.AngularVelocity.Length, Is.LessThanOrEqualTo(1e-6));
+        }
+
+        [Test]
+        public void ExtremeButFiniteInput_GivesFiniteOutput()
+        {
+            double[] magnitudes = { 0, 1e-300, 1e-12, 1, 1e6, 1e100, 1e150 };
+            foreach (Surface surface in Surface.All)
+            {
+                var model = new CrossBounce(surface);
+                foreach (double speed in magnitudes)
+                {
+                    foreach (double spin in magnitudes)
+                    {
+                        foreach (Vector3d normal in new[] { Vector3d.UnitZ, new Vector3d(1e-150, 0, 1e-150), new Vector3d(3e100, -1e100, 2e100) })
+                        {
+                            Vector3d v = new Vector3d(0.8, 0.3, -0.5) * speed;
+                            if (Vector3d.Dot(v, normal) > 0)
+                            {
+                                v = -v;
+                            }
+
+                            BounceOutcome o = model.Bounce(Tennis, normal, v, new Vector3d(0.2, -0.9, 0.4) * spin);
+                            Assert.That(o.Velocity.IsFinite && o.AngularVelocity.IsFinite, Is.True, $"{surface.Name}: |v| {speed}, |w| {spin}, n {normal}");
+                        }
+                    }
                 }
             }
         }

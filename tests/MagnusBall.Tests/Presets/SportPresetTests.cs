@@ -72,6 +72,31 @@ namespace MagnusBall.Tests.Presets
         }
 
         [Test]
+        public void EveryPreset_StepsWithoutAllocating()
+        {
+            foreach (SportPreset preset in SportPresets.All)
+            {
+                FlightModel model = preset.CreateModel(Air.SeaLevel.WithLogarithmicWind(new Vector3d(3, 0, 1)), Gravity.YUp);
+                var start = new FlightState(new Vector3d(0, 1, 0), new Vector3d(25, 8, 1), new Vector3d(50, 10, 300));
+                Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 100); // warm up
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                FlightState end = Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 2000);
+                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                Assert.That(allocated, Is.EqualTo(0), preset.Name);
+                Assert.That(end.IsFinite, Is.True, preset.Name);
+            }
+        }
+
+        [Test]
+        public void BadPresetArguments_AreRefusedNamingTheParameter()
+        {
+            Assert.That(() => new SportPreset("", Ball.Tennis, null, null, null, "x 2000"), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("name"));
+            Assert.That(() => new SportPreset("x", null!, null, null, null, "x 2000"), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("ball"));
+            Assert.That(() => new SportPreset("x", Ball.Tennis, null, null, null, " "), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("source"));
+            Assert.That(() => SportPresets.Golf.CreateModel(null!, Gravity.ZUp), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("air"));
+        }
+
+        [Test]
         public void Overrides_ReplaceOnePartAndKeepTheRest()
         {
             SportPreset golf = SportPresets.Golf;

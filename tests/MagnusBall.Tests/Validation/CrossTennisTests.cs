@@ -58,6 +58,9 @@ namespace MagnusBall.Tests.Validation
                 result[i] = solutions[i].ElevationDegrees;
             }
 
+            TestContext.Out.WriteLine(
+                $"flights per solve: {solutions[0].Simulations}, {solutions[1].Simulations}, {solutions[2].Simulations}, {solutions[3].Simulations}");
+
             return result;
         }
 

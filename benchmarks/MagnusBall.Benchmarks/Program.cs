@@ -1,0 +1,33 @@
+using System;
+using System.IO;
+using BenchmarkDotNet.Running;
+
+namespace MagnusBall.Benchmarks
+{
+    /// <summary>
+    /// Entry point. With no mode or a BenchmarkDotNet argument (--filter ...), runs the benchmarks; otherwise one of the
+    /// report modes: "extremes" (full matrix), "extremes-quick", "blowup", "work-precision", "peers-check".
+    /// </summary>
+    public static class Program
+    {
+        public static int Main(string[] args)
+        {
+            string mode = args.Length > 0 ? args[0] : string.Empty;
+            switch (mode)
+            {
+                case "extremes":
+                    Console.WriteLine(ExtremesReport.Matrix(quick: false));
+                    return 0;
+                case "extremes-quick":
+                    Console.WriteLine(ExtremesReport.Matrix(quick: true));
+                    return 0;
+                case "blowup":
+                    Console.WriteLine(ExtremesReport.BlowUp());
+                    return 0;
+                default:
+                    BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args);
+                    return 0;
+            }
+        }
+    }
+}
