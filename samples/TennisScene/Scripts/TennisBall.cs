@@ -22,6 +22,22 @@ namespace MagnusBall.Samples.TennisScene.Unity
         RungeKutta4,
     }
 
+    /// <summary>The court surface the ball bounces on (the inspector's drop-down).</summary>
+    public enum CourtSurface
+    {
+        /// <summary>No bounce: the flight ends where the ball first touches the court.</summary>
+        None,
+
+        /// <summary>Hard court (Cross 2020 values).</summary>
+        Hard,
+
+        /// <summary>Clay.</summary>
+        Clay,
+
+        /// <summary>Grass.</summary>
+        Grass,
+    }
+
     /// <summary>How the launch spin is entered in the inspector.</summary>
     public enum SpinInput
     {
@@ -75,6 +91,8 @@ namespace MagnusBall.Samples.TennisScene.Unity
         public float radius = 0.033f;
         [Tooltip("kg/m^3 (thesis: 1.29, 'pure air'; Cross 2011: 1.21)")]
         public float airDensity = 1.21f;
+        [Tooltip("The court the ball bounces on (Cross's slide/grip bounce), or None to stop at the first landing.")]
+        public CourtSurface surface = CourtSurface.Hard;
 
         [Header("Stepping")]
         public IntegratorChoice integrator = IntegratorChoice.RungeKutta4;
@@ -107,8 +125,8 @@ namespace MagnusBall.Samples.TennisScene.Unity
         /// <summary>True while the ball is in the air.</summary>
         public bool IsFlying => _flying;
 
-        /// <summary>Raised with the landing event when the ball reaches the court.</summary>
-        public event Action<FrameEvent> Landed;
+        /// <summary>Raised at every touch of the court: each bounce, then the landing where the flight ends.</summary>
+        public event Action<FrameEvent> Touched;
 
         private void Start()
         {
@@ -162,12 +180,9 @@ namespace MagnusBall.Samples.TennisScene.Unity
         {
             _settings = new SceneSettings(
                 mass, radius, airDensity, useStepanekCoefficients, dragCoefficient, magnusCoefficient,
-                IntegratorName(integrator), fixedStep);
+                IntegratorName(integrator), fixedStep, surface.ToString().ToLowerInvariant());
             _simulation = new ShotSimulation(_settings);
-            FlightState start = LaunchState();
-            _driver = new FixedStepDriver(
-                _settings.Model, _settings.Integrator, _settings.FixedStep, start, _simulation.GroundPoint,
-                new[] { ShotSimulation.NetPlane }, maxFrameDelta);
+            _driver = _simulation.CreateDriver(LaunchState(), maxFrameDelta);
             _flying = true;
         }
 
@@ -196,18 +211,24 @@ namespace MagnusBall.Samples.TennisScene.Unity
             for (int i = 0; i < result.EventCount; i++)
             {
                 FrameEvent e = _events[i];
-                if (e.Kind == FrameEventKind.PlaneCrossing)
+                switch (e.Kind)
                 {
-                    double clearance = e.Position.Y - radius - TennisCourt.NetHeightAt(e.Position.Z);
-                    Debug.Log($"net: ball passes {clearance:F2} m above the cord at t = {e.Time:F3} s");
-                }
-                else if (e.Kind == FrameEventKind.Landing)
-                {
-                    Debug.Log($"landing at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s, {e.State.Velocity.Length:F1} m/s");
-                    _flying = false;
-                    Landed?.Invoke(e);
+                    case FrameEventKind.PlaneCrossing:
+                        Debug.Log($"net: the ball passes {_simulation.NetClearance(e.Position):F2} m above the cord at t = {e.Time:F3} s");
+                        break;
+                    case FrameEventKind.Bounce:
+                        Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
+                                  $"{e.State.Velocity.Length:F1} m/s in, {e.AfterBounce.Velocity.Length:F1} m/s out ({e.Regime})");
+                        Touched?.Invoke(e);
+                        break;
+                    case FrameEventKind.Landing:
+                        Debug.Log($"comes to rest at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
+                        Touched?.Invoke(e);
+                        break;
                 }
             }
+
+            _flying = !_driver.IsFinished;
         }
 
         private void ShowSpin(Vector3d angularVelocity, float frameDelta)

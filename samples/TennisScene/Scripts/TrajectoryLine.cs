@@ -4,19 +4,18 @@ using UnityEngine;
 namespace MagnusBall.Samples.TennisScene.Unity
 {
     /// <summary>
-    /// Draws the ball's predicted path to its landing with a <see cref="LineRenderer"/>: before the launch
-    /// from the inspector's launch state, in flight from the ball's current fixed state. The prediction uses
-    /// the same model, integrator and fixed step as the ball, so the ball follows the line exactly.
+    /// Draws the ball's predicted path to its next touch of the court with a <see cref="LineRenderer"/>,
+    /// from the library's TrajectoryPredictor: before the launch from the inspector's launch state, in flight
+    /// from the ball's current fixed state (after a bounce, the next arc). The prediction uses the same model,
+    /// integrator and fixed step as the ball, so the ball follows the line exactly.
     /// </summary>
     /// <remarks>Buffers are allocated once; predicting allocates nothing per frame.</remarks>
     [RequireComponent(typeof(LineRenderer))]
     public class TrajectoryLine : MonoBehaviour
     {
         public TennisBall ball;
-        [Tooltip("Most points drawn.")]
-        public int maxPoints = 400;
-        [Tooltip("Seconds between drawn points.")]
-        public float sampleInterval = 1f / 60f;
+        [Tooltip("Most points drawn (one per fixed step).")]
+        public int maxPoints = 2048;
 
         private LineRenderer _line;
         private ShotSimulation _simulation;
@@ -45,7 +44,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 _simulation = new ShotSimulation(ball.Settings); // only when the ball is relaunched with new settings
             }
 
-            int count = _simulation.Predict(from, _path, sampleInterval);
+            int count = _simulation.Predict(from, _path);
             _line.positionCount = count;
             for (int i = 0; i < count; i++)
             {

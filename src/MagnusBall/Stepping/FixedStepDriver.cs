@@ -1,5 +1,7 @@
 using System;
+using MagnusBall.Contact;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 
 namespace MagnusBall.Stepping
 {
@@ -21,30 +23,40 @@ namespace MagnusBall.Stepping
     /// <para>The seed thesis (Agrawal 2023, section 3.1.3) stepped its ODE once per frame with Unity's
     /// <c>Time.deltaTime</c>, so its landing point depended on the frame rate; docs/unity.md puts numbers
     /// on that difference.</para>
-    /// <para>Events (the landing, plane crossings) are located inside the step where they happen on the
-    /// cubic Hermite interpolant of the step's two end states and derivatives (no extra derivative
-    /// evaluation), and reported in a caller-provided buffer. Nothing here allocates after construction.</para>
-    /// <para>Without a bounce model the flight ends at the landing: the state stays at the landing state
-    /// and <see cref="HasLanded"/> turns true. A driver owns its state and is not thread-safe; the model and
-    /// integrator it steps are immutable and may be shared by any number of drivers on any threads.</para>
+    /// <para>Events (landing, bounces, apex, plane crossings) are located inside the step where they happen
+    /// by <see cref="FlightEventSet.Scan"/> on the step's cubic Hermite (<see cref="HermiteSegment"/>; no extra
+    /// derivative evaluation) and written to a caller-provided buffer. With a bounce model the step is cut at
+    /// the contact time, the bounce applied there and stepping resumed from the bounce; the frame time the
+    /// cut step did not use goes back into the accumulator, so the ball stays on the wall clock. Nothing
+    /// here allocates after construction.</para>
+    /// <para>A driver owns its state and is not thread-safe; the model, integrator, event set and bounce
+    /// model it uses are immutable and may be shared by any number of drivers on any threads.</para>
     /// </remarks>
     public sealed class FixedStepDriver
     {
         /// <summary>The default frame-time clamp, 0.25 s (Fiedler 2004).</summary>
         public const double DefaultMaxFrameDeltaSeconds = 0.25;
 
-        private readonly Vector3d _groundPoint;
+        /// <summary>
+        /// The default rest speed, 0.5 m/s: a bounce that leaves the ground slower than this along the normal
+        /// would rise less than v^2 / 2g = 1.3 cm, so the flight ends there (rolling is not modelled).
+        /// </summary>
+        public const double DefaultRestNormalSpeed = 0.5;
+
+        private readonly FlightEventSet? _eventSet;
+        private readonly FlightEvent[] _scratch;
+        private readonly IBounceModel? _bounce;
         private readonly Vector3d _groundNormal;
-        private readonly bool _hasGround;
-        private readonly FlightPlane[] _planes;
 
         private FlightState _state;
         private StateDerivative _derivative;
-        private FlightState _previous;
-        private StateDerivative _previousDerivative;
+        private HermiteSegment _latest;
+        private HermiteSegment _older;
+        private int _segmentCount;
         private double _accumulator;
-        private bool _landed;
+        private bool _finished;
         private long _totalSteps;
+        private int _bounces;
 
         /// <summary>
         /// Creates a driver for one ball.
@@ -53,34 +65,42 @@ namespace MagnusBall.Stepping
         /// <param name="integrator">The integrator (shared, stateless).</param>
         /// <param name="fixedStep">The fixed step, s; finite and &gt; 0 (for example 1/240).</param>
         /// <param name="start">The launch state; every component finite.</param>
-        /// <param name="groundPoint">
-        /// A point of the ground plane, m; its normal is the model's up (-gravity). Put it one ball radius above
-        /// the court to land when the ball touches the court rather than when its centre reaches it.
+        /// <param name="events">
+        /// What to look for in each step: the ground (landing or bounce), the apex and any planes. Null (the
+        /// default) means <see cref="FlightEventSet.ForModel"/>: the ground through the origin normal to the
+        /// model's up, and the apex; or no events at all when the model has no gravity.
         /// </param>
-        /// <param name="planes">Planes whose crossings are reported (copied once here); null for none.</param>
+        /// <param name="bounce">
+        /// The bounce model, or null (the default): the flight ends at the first landing. With one, the ball
+        /// bounces off the event set's ground until a bounce leaves slower than <paramref name="restNormalSpeed"/>.
+        /// </param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0. Default 0.25 s.</param>
         /// <param name="maxStepsPerAdvance">
         /// The most fixed steps one <see cref="Advance(double, Span{FrameEvent})"/> call takes; &gt;= 1, or 0
         /// (the default) for ceil(maxFrameDeltaSeconds / fixedStep) + 1, so that the clamp binds first.
         /// </param>
+        /// <param name="restNormalSpeed">Bounces leaving the ground slower than this along the normal end the flight, m/s; finite, &gt;= 0.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
-        /// <exception cref="ArgumentException">A number is out of its range; the message names it.</exception>
+        /// <exception cref="ArgumentException">
+        /// A number is out of its range (the message names it), or there is a bounce model but no ground.
+        /// </exception>
         public FixedStepDriver(
             FlightModel model,
             IIntegrator integrator,
             double fixedStep,
             in FlightState start,
-            Vector3d groundPoint = default,
-            FlightPlane[]? planes = null,
+            FlightEventSet? events = null,
+            IBounceModel? bounce = null,
             double maxFrameDeltaSeconds = DefaultMaxFrameDeltaSeconds,
-            int maxStepsPerAdvance = 0)
+            int maxStepsPerAdvance = 0,
+            double restNormalSpeed = DefaultRestNormalSpeed)
         {
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
             FixedStep = Require.Step(fixedStep, nameof(fixedStep));
             RequireFiniteState(start, nameof(start));
-            _groundPoint = Require.Finite(groundPoint, nameof(groundPoint));
             MaxFrameDeltaSeconds = Require.Positive(maxFrameDeltaSeconds, nameof(maxFrameDeltaSeconds));
+            RestNormalSpeed = Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
             if (maxStepsPerAdvance < 0)
             {
                 throw new ArgumentOutOfRangeException(
@@ -90,9 +110,19 @@ namespace MagnusBall.Stepping
             double defaultSteps = Math.Ceiling(maxFrameDeltaSeconds / fixedStep) + 1;
             MaxStepsPerAdvance = maxStepsPerAdvance > 0 ? maxStepsPerAdvance : (int)Math.Min(defaultSteps, int.MaxValue);
 
-            _groundNormal = model.Up;
-            _hasGround = model.Up.LengthSquared > 0;
-            _planes = planes == null ? Array.Empty<FlightPlane>() : (FlightPlane[])planes.Clone();
+            _eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
+            _scratch = new FlightEvent[_eventSet?.MaximumEventsPerStep ?? 0];
+            _bounce = bounce;
+            if (bounce != null)
+            {
+                if (_eventSet?.Ground == null)
+                {
+                    throw new ArgumentException("bounce needs a ground plane to bounce on: give events with a ground (or a model with gravity).", nameof(bounce));
+                }
+
+                _groundNormal = _eventSet.Ground.Value.Normal;
+            }
+
             Reset(start);
         }
 
@@ -111,42 +141,75 @@ namespace MagnusBall.Stepping
         /// <summary>The most fixed steps one Advance call takes.</summary>
         public int MaxStepsPerAdvance { get; }
 
-        /// <summary>The planes whose crossings are reported (a copy; changing it changes nothing).</summary>
-        public FlightPlane[] Planes => (FlightPlane[])_planes.Clone();
+        /// <summary>Bounces leaving the ground slower than this along its normal end the flight, m/s.</summary>
+        public double RestNormalSpeed { get; }
 
-        /// <summary>The latest fixed state (the simulation's "now"); the landing state once landed.</summary>
+        /// <summary>What the driver looks for in each step (null: nothing).</summary>
+        public FlightEventSet? Events => _eventSet;
+
+        /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
+        public IBounceModel? BounceModel => _bounce;
+
+        /// <summary>The latest fixed state (the simulation's "now"): after a bounce, the state leaving the ground; at the end, the landing state.</summary>
         public FlightState State => _state;
 
-        /// <summary>The fixed state before <see cref="State"/> (equal to it right after a reset).</summary>
-        public FlightState PreviousState => _previous;
+        /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
+        public FlightState PreviousState => _segmentCount > 0 ? _latest.Start : _state;
 
-        /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>).</summary>
+        /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
 
-        /// <summary>How far the render state is from <see cref="PreviousState"/> toward <see cref="State"/>, accumulator / step, in [0, 1].</summary>
+        /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
-        /// <summary>True once the ball has crossed the ground: the flight has ended and Advance takes no more steps.</summary>
-        public bool HasLanded => _landed;
+        /// <summary>True once the flight has ended (landed, or came to rest after bounces): Advance takes no more steps.</summary>
+        public bool IsFinished => _finished;
 
         /// <summary>Fixed steps taken since the last reset.</summary>
         public long TotalSteps => _totalSteps;
 
-        /// <summary>
-        /// The simulation time the renderer should show, s: <see cref="PreviousState"/>'s time plus the
-        /// accumulator, never past <see cref="State"/>'s time.
-        /// </summary>
-        public double RenderTime => RenderFraction() * (_state.Time - _previous.Time) + _previous.Time;
+        /// <summary>Bounces since the last reset.</summary>
+        public int Bounces => _bounces;
 
         /// <summary>
-        /// The state to draw this frame: the cubic Hermite interpolant between <see cref="PreviousState"/>
-        /// and <see cref="State"/> (both ends' derivatives, so the drawn path is C1 and keeps the
-        /// curvature a linear blend would cut), evaluated at alpha = accumulator / step.
+        /// The simulation time the renderer should show, s: one fixed step behind the simulation,
+        /// State.Time - step + accumulator, never past <see cref="State"/> and never before the start.
         /// </summary>
-        public FlightState RenderState => CubicHermite.Interpolate(_previous, _previousDerivative, _state, _derivative, RenderFraction());
+        public double RenderTime => RenderState.Time;
 
         /// <summary>
-        /// Restarts the flight from <paramref name="start"/>: clears the accumulator and the landed flag.
+        /// The state to draw this frame, at <see cref="RenderTime"/>: on the cubic Hermite of the step it falls
+        /// in (both ends' states and derivatives, so the drawn path is C1 and keeps the curvature a linear blend
+        /// of the two fixed states would cut). Allocates nothing.
+        /// </summary>
+        public FlightState RenderState
+        {
+            get
+            {
+                if (_segmentCount == 0)
+                {
+                    return _state;
+                }
+
+                double time = Math.Min(_state.Time, _state.Time - FixedStep + _accumulator);
+                HermiteSegment segment = _latest;
+                if (time < segment.StartTime && _segmentCount > 1)
+                {
+                    segment = _older;
+                }
+
+                if (time <= segment.StartTime)
+                {
+                    return segment.Start;
+                }
+
+                // At or past the latest segment's end: the current state (after a bounce, the state leaving the ground).
+                return time >= segment.EndTime ? (segment.EndTime == _latest.EndTime ? _state : segment.End) : segment.StateAt(time);
+            }
+        }
+
+        /// <summary>
+        /// Restarts the flight from <paramref name="start"/>: clears the accumulator, the finished flag and the counts.
         /// </summary>
         /// <param name="start">The launch state; every component finite.</param>
         /// <exception cref="ArgumentException">The state is not finite (nothing is changed).</exception>
@@ -155,16 +218,17 @@ namespace MagnusBall.Stepping
             RequireFiniteState(start, nameof(start));
             _state = start;
             _derivative = Model.Derivative(start);
-            _previous = start;
-            _previousDerivative = _derivative;
+            _latest = default;
+            _older = default;
+            _segmentCount = 0;
             _accumulator = 0;
-            _landed = false;
+            _finished = false;
             _totalSteps = 0;
+            _bounces = 0;
         }
 
         /// <summary>
-        /// Consumes one frame's time without reporting events (the landing still ends the flight; read
-        /// <see cref="HasLanded"/>).
+        /// Consumes one frame's time without reporting events (they still happen: read <see cref="IsFinished"/>).
         /// </summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0.</param>
         /// <exception cref="ArgumentOutOfRangeException">The delta is negative, NaN or infinite (nothing is changed).</exception>
@@ -197,9 +261,9 @@ namespace MagnusBall.Stepping
                 frameDeltaSeconds = MaxFrameDeltaSeconds;
             }
 
-            if (_landed)
+            if (_finished)
             {
-                // The flight is over: let the render state run to the landing and stay there.
+                // The flight is over: let the render state run to the end and stay there.
                 _accumulator = Math.Min(_accumulator + frameDeltaSeconds, FixedStep);
                 return new AdvanceResult(0, 0, 0, dropped + frameDeltaSeconds);
             }
@@ -225,101 +289,89 @@ namespace MagnusBall.Stepping
                 _totalSteps++;
                 _accumulator -= FixedStep;
 
-                bool landed = LocateEvents(next, nextDerivative, events, ref written, ref lost, out FlightState landing);
-                _previous = _state;
-                _previousDerivative = _derivative;
-                if (landed)
+                var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
+                int found = _eventSet == null ? 0 : _eventSet.Scan(segment, _scratch);
+                int landingIndex = -1;
+                for (int i = 0; i < found && landingIndex < 0; i++)
                 {
-                    _state = landing;
-                    _derivative = Model.Derivative(landing);
-                    _landed = true;
-                    break;
+                    if (_scratch[i].Kind == FlightEventKinds.Landing)
+                    {
+                        landingIndex = i;
+                    }
                 }
 
-                _state = next;
-                _derivative = nextDerivative;
+                // Events before the touchdown (those after it lie on the part of the step that never happens).
+                int before = landingIndex >= 0 ? landingIndex : found;
+                for (int i = 0; i < before; i++)
+                {
+                    FlightEvent e = _scratch[i];
+                    FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
+                    Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
+                }
+
+                if (landingIndex < 0)
+                {
+                    Push(segment);
+                    _state = next;
+                    _derivative = nextDerivative;
+                    continue;
+                }
+
+                // Touchdown inside this step: cut the step there.
+                FlightState touch = _scratch[landingIndex].State;
+                StateDerivative touchDerivative = Model.Derivative(touch);
+                if (touch.Time > _state.Time)
+                {
+                    Push(new HermiteSegment(_state, _derivative, touch, touchDerivative));
+                }
+
+                if (_bounce != null)
+                {
+                    BounceOutcome outcome = _bounce.Bounce(Model.Ball, _groundNormal, touch.Velocity, touch.AngularVelocity);
+                    var after = new FlightState(touch.Position, outcome.Velocity, outcome.AngularVelocity, touch.Time);
+                    bool rests = outcome.Regime == BounceRegime.None || Vector3d.Dot(outcome.Velocity, _groundNormal) < RestNormalSpeed;
+                    Write(new FrameEvent(rests ? FrameEventKind.Landing : FrameEventKind.Bounce, -1, touch, after, outcome.Regime), events, ref written, ref lost);
+                    if (!rests)
+                    {
+                        // Fly on from the bounce; the part of the step after the touchdown goes back to the accumulator.
+                        _bounces++;
+                        _accumulator += next.Time - touch.Time;
+                        _state = after;
+                        _derivative = Model.Derivative(after);
+                        continue;
+                    }
+                }
+                else
+                {
+                    Write(new FrameEvent(FrameEventKind.Landing, -1, touch), events, ref written, ref lost);
+                }
+
+                _state = touch;
+                _derivative = touchDerivative;
+                _finished = true;
+                break;
             }
 
             return new AdvanceResult(steps, written, lost, dropped);
         }
 
-        /// <summary>
-        /// Finds the events in the step from the current state to <paramref name="next"/>, writes them in
-        /// time order, and says whether the ball landed in it (plane crossings after the landing are not
-        /// reported: the flight ends there).
-        /// </summary>
-        private bool LocateEvents(
-            in FlightState next, in StateDerivative nextDerivative, Span<FrameEvent> events, ref int written, ref int lost, out FlightState landing)
+        private void Push(in HermiteSegment segment)
         {
-            landing = default;
-            double landingFraction = double.PositiveInfinity;
-            if (_hasGround)
-            {
-                double h0 = Vector3d.Dot(_state.Position - _groundPoint, _groundNormal);
-                double h1 = Vector3d.Dot(next.Position - _groundPoint, _groundNormal);
-                if (h0 >= 0 && h1 < 0)
-                {
-                    landingFraction = CubicHermite.Crossing(_state, _derivative, next, nextDerivative, _groundPoint, _groundNormal);
-                    landing = CubicHermite.Interpolate(_state, _derivative, next, nextDerivative, landingFraction);
-                }
-            }
-
-            int firstOfStep = written;
-            for (int i = 0; i < _planes.Length; i++)
-            {
-                FlightPlane plane = _planes[i];
-                double d0 = Vector3d.Dot(_state.Position - plane.Point, plane.Normal);
-                double d1 = Vector3d.Dot(next.Position - plane.Point, plane.Normal);
-                if (d0 < 0 && d1 >= 0)
-                {
-                    double fraction = CubicHermite.Crossing(_state, _derivative, next, nextDerivative, plane.Point, plane.Normal, upward: true);
-                    if (fraction <= landingFraction)
-                    {
-                        var crossing = new FrameEvent(
-                            FrameEventKind.PlaneCrossing, i, CubicHermite.Interpolate(_state, _derivative, next, nextDerivative, fraction));
-                        Write(crossing, events, firstOfStep, ref written, ref lost);
-                    }
-                }
-            }
-
-            if (landingFraction <= 1)
-            {
-                Write(new FrameEvent(FrameEventKind.Landing, -1, landing), events, firstOfStep, ref written, ref lost);
-                return true;
-            }
-
-            return false;
+            _older = _latest;
+            _latest = segment;
+            _segmentCount = Math.Min(_segmentCount + 1, 2);
         }
 
-        /// <summary>Inserts an event among this step's events, keeping them sorted by time (insertion sort, no allocation).</summary>
-        private static void Write(in FrameEvent item, Span<FrameEvent> events, int firstOfStep, ref int written, ref int lost)
+        private static void Write(in FrameEvent item, Span<FrameEvent> events, ref int written, ref int lost)
         {
-            if (written >= events.Length)
+            if (written < events.Length)
+            {
+                events[written++] = item;
+            }
+            else
             {
                 lost++;
-                return;
             }
-
-            int i = written;
-            while (i > firstOfStep && events[i - 1].Time > item.Time)
-            {
-                events[i] = events[i - 1];
-                i--;
-            }
-
-            events[i] = item;
-            written++;
-        }
-
-        private double RenderFraction()
-        {
-            double span = _state.Time - _previous.Time;
-            if (!(span > 0))
-            {
-                return 0;
-            }
-
-            return Math.Min(_accumulator, span) / span;
         }
 
         private static void RequireFiniteState(in FlightState state, string name)
