@@ -426,6 +426,34 @@ namespace MagnusBall.Tests.Contact
             }
         }
 
+        [Test]
+        public void ABounce_AllocatesNothing()
+        {
+            // Slides, grips and turning slips (side spin), on every preset.
+            IBounceModel[] models = { CrossBounce.Hard, CrossBounce.Clay, CrossBounce.Grass, CrossBounce.Frictionless };
+            Vector3d n = Vector3d.UnitZ;
+            double sum = 0;
+            for (int pass = 0; pass < 2; pass++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                for (int i = 0; i < 10_000; i++)
+                {
+                    var v = new Vector3d(5 + i % 25, 0.1 * (i % 7), -2 - i % 13);
+                    var w = new Vector3d(40 * (i % 9) - 160, 30 * (i % 11) - 150, i % 5);
+                    BounceOutcome o = models[i % models.Length].Bounce(Tennis, n, v, w);
+                    sum += o.Velocity.X;
+                }
+
+                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                if (pass == 1)
+                {
+                    Assert.That(allocated, Is.EqualTo(0), "bytes allocated by 10,000 bounces after warm-up");
+                }
+            }
+
+            Assert.That(double.IsFinite(sum), Is.True);
+        }
+
         public static Surface[] AllSurfaces => Surface.All;
 
         public static Surface[] Courts => Surface.Courts;
