@@ -125,7 +125,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
         /// <summary>True while the ball is in the air.</summary>
         public bool IsFlying => _flying;
 
-        /// <summary>Raised at every touch of the court: each bounce, then the landing where the flight ends.</summary>
+        /// <summary>Raised at every touch of the court: each bounce (or, with no surface, the landing that ends the flight).</summary>
         public event Action<FrameEvent> Touched;
 
         private void Start()
@@ -218,12 +218,16 @@ namespace MagnusBall.Samples.TennisScene.Unity
                         break;
                     case FrameEventKind.Bounce:
                         Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
-                                  $"{e.State.Velocity.Length:F1} m/s in, {e.AfterBounce.Velocity.Length:F1} m/s out ({e.Regime})");
+                                  $"{e.State.Velocity.Length:F1} m/s in, {e.AfterBounce.Velocity.Length:F1} m/s out ({e.Regime})" +
+                                  (e.StartsRolling ? ", now rolling" : string.Empty));
                         Touched?.Invoke(e);
                         break;
                     case FrameEventKind.Landing:
-                        Debug.Log($"comes to rest at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
+                        Debug.Log($"lands at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s (no bounce model)");
                         Touched?.Invoke(e);
+                        break;
+                    case FrameEventKind.Stop:
+                        Debug.Log($"stops at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
                         break;
                 }
             }

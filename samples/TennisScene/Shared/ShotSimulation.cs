@@ -97,8 +97,8 @@ namespace MagnusBall.Samples.TennisScene
 
     /// <summary>
     /// Flies tennis shots through the library's <see cref="FixedStepDriver"/>, as the Unity ball does frame by
-    /// frame, bouncing them on the court with the Cross bounce model, and measures them. Shared by the Unity
-    /// scripts and the headless runner.
+    /// frame, bouncing them on the court (Cross's bounce model through the library's BouncingFlight), and
+    /// measures them. Shared by the Unity scripts and the headless runner.
     /// </summary>
     public sealed class ShotSimulation
     {
@@ -181,7 +181,7 @@ namespace MagnusBall.Samples.TennisScene
 
                             break;
                         case FrameEventKind.Bounce:
-                        case FrameEventKind.Landing:
+                        case FrameEventKind.Landing: // the flight's end when the scene has no bounce model
                             Append(path, ref count, e.Position);
                             if (first == null)
                             {

@@ -25,10 +25,11 @@ namespace MagnusBall.Stepping
     /// on that difference.</para>
     /// <para>Events (landing, bounces, apex, plane crossings) are located inside the step where they happen
     /// by <see cref="FlightEventSet.Scan"/> on the step's cubic Hermite (<see cref="HermiteSegment"/>; no extra
-    /// derivative evaluation) and written to a caller-provided buffer. With a bounce model the step is cut at
-    /// the contact time, the bounce applied there and stepping resumed from the bounce; the frame time the
-    /// cut step did not use goes back into the accumulator, so the ball stays on the wall clock. Nothing
-    /// here allocates after construction.</para>
+    /// derivative evaluation) and written to a caller-provided buffer. Without a bounce model the flight ends
+    /// at the first landing (the last step is cut there). With one, each fixed step is a
+    /// <see cref="BouncingFlight.Step"/>: contacts are located on the step's Hermite, the bounce is applied at
+    /// the contact time and the step finished from there, so the fixed time grid is kept; the ball rolls once
+    /// a bounce is too weak and the flight ends when it stops. Nothing here allocates after construction.</para>
     /// <para>A driver owns its state and is not thread-safe; the model, integrator, event set and bounce
     /// model it uses are immutable and may be shared by any number of drivers on any threads.</para>
     /// </remarks>
@@ -37,16 +38,11 @@ namespace MagnusBall.Stepping
         /// <summary>The default frame-time clamp, 0.25 s (Fiedler 2004).</summary>
         public const double DefaultMaxFrameDeltaSeconds = 0.25;
 
-        /// <summary>
-        /// The default rest speed, 0.5 m/s: a bounce that leaves the ground slower than this along the normal
-        /// would rise less than v^2 / 2g = 1.3 cm, so the flight ends there (rolling is not modelled).
-        /// </summary>
-        public const double DefaultRestNormalSpeed = 0.5;
-
         private readonly FlightEventSet? _eventSet;
         private readonly FlightEvent[] _scratch;
         private readonly IBounceModel? _bounce;
-        private readonly Vector3d _groundNormal;
+        private readonly BouncingFlight? _flight;
+        private readonly BounceEvent[] _bounceScratch;
 
         private FlightState _state;
         private StateDerivative _derivative;
@@ -56,7 +52,6 @@ namespace MagnusBall.Stepping
         private double _accumulator;
         private bool _finished;
         private long _totalSteps;
-        private int _bounces;
 
         /// <summary>
         /// Creates a driver for one ball.
@@ -72,14 +67,17 @@ namespace MagnusBall.Stepping
         /// </param>
         /// <param name="bounce">
         /// The bounce model, or null (the default): the flight ends at the first landing. With one, the ball
-        /// bounces off the event set's ground until a bounce leaves slower than <paramref name="restNormalSpeed"/>.
+        /// bounces off the court whose ball-centre plane is the event set's ground (the court itself lies one
+        /// radius below it) through a <see cref="BouncingFlight"/>, rolls when a bounce leaves slower than
+        /// <paramref name="restNormalSpeed"/>, and the flight ends when it stops.
         /// </param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0. Default 0.25 s.</param>
         /// <param name="maxStepsPerAdvance">
         /// The most fixed steps one <see cref="Advance(double, Span{FrameEvent})"/> call takes; &gt;= 1, or 0
         /// (the default) for ceil(maxFrameDeltaSeconds / fixedStep) + 1, so that the clamp binds first.
         /// </param>
-        /// <param name="restNormalSpeed">Bounces leaving the ground slower than this along the normal end the flight, m/s; finite, &gt;= 0.</param>
+        /// <param name="restNormalSpeed">With a bounce model: bounces leaving slower than this along the normal start rolling, m/s; finite, &gt;= 0.</param>
+        /// <param name="rollingResistance">With a bounce model: the rolling-resistance coefficient (see <see cref="BouncingFlight"/>); finite, &gt;= 0.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
         /// <exception cref="ArgumentException">
         /// A number is out of its range (the message names it), or there is a bounce model but no ground.
@@ -93,14 +91,16 @@ namespace MagnusBall.Stepping
             IBounceModel? bounce = null,
             double maxFrameDeltaSeconds = DefaultMaxFrameDeltaSeconds,
             int maxStepsPerAdvance = 0,
-            double restNormalSpeed = DefaultRestNormalSpeed)
+            double restNormalSpeed = BouncingFlight.DefaultRestNormalSpeed,
+            double rollingResistance = BouncingFlight.DefaultRollingResistance)
         {
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
             FixedStep = Require.Step(fixedStep, nameof(fixedStep));
             RequireFiniteState(start, nameof(start));
             MaxFrameDeltaSeconds = Require.Positive(maxFrameDeltaSeconds, nameof(maxFrameDeltaSeconds));
-            RestNormalSpeed = Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
+            Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
+            Require.NonNegative(rollingResistance, nameof(rollingResistance));
             if (maxStepsPerAdvance < 0)
             {
                 throw new ArgumentOutOfRangeException(
@@ -113,6 +113,7 @@ namespace MagnusBall.Stepping
             _eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
             _scratch = new FlightEvent[_eventSet?.MaximumEventsPerStep ?? 0];
             _bounce = bounce;
+            _bounceScratch = new BounceEvent[bounce == null ? 0 : BouncingFlight.MaxSegmentsPerStep];
             if (bounce != null)
             {
                 if (_eventSet?.Ground == null)
@@ -120,7 +121,10 @@ namespace MagnusBall.Stepping
                     throw new ArgumentException("bounce needs a ground plane to bounce on: give events with a ground (or a model with gravity).", nameof(bounce));
                 }
 
-                _groundNormal = _eventSet.Ground.Value.Normal;
+                // The event set's ground is where the ball's centre touches down; the court lies one radius below.
+                Plane ground = _eventSet.Ground.Value;
+                var court = new Plane(ground.Point - ground.Normal * model.Ball.Radius, ground.Normal);
+                _flight = new BouncingFlight(model, integrator, bounce, court, start, restNormalSpeed, rollingResistance);
             }
 
             Reset(start);
@@ -141,20 +145,20 @@ namespace MagnusBall.Stepping
         /// <summary>The most fixed steps one Advance call takes.</summary>
         public int MaxStepsPerAdvance { get; }
 
-        /// <summary>Bounces leaving the ground slower than this along its normal end the flight, m/s.</summary>
-        public double RestNormalSpeed { get; }
-
         /// <summary>What the driver looks for in each step (null: nothing).</summary>
         public FlightEventSet? Events => _eventSet;
 
         /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
         public IBounceModel? BounceModel => _bounce;
 
-        /// <summary>The latest fixed state (the simulation's "now"): after a bounce, the state leaving the ground; at the end, the landing state.</summary>
-        public FlightState State => _state;
+        /// <summary>With a bounce model, the bouncing flight stepped underneath (flying, rolling or stopped); otherwise null.</summary>
+        public BouncingFlight? BouncingFlight => _flight;
+
+        /// <summary>The latest fixed state (the simulation's "now"); without a bounce model, the landing state at the end.</summary>
+        public FlightState State => _flight != null ? _flight.State : _state;
 
         /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
-        public FlightState PreviousState => _segmentCount > 0 ? _latest.Start : _state;
+        public FlightState PreviousState => _flight != null ? _flight.PreviousState : _segmentCount > 0 ? _latest.Start : _state;
 
         /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
@@ -162,14 +166,14 @@ namespace MagnusBall.Stepping
         /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
-        /// <summary>True once the flight has ended (landed, or came to rest after bounces): Advance takes no more steps.</summary>
+        /// <summary>True once the flight has ended (landed without a bounce model, or stopped after bounces and rolling): Advance takes no more steps.</summary>
         public bool IsFinished => _finished;
 
         /// <summary>Fixed steps taken since the last reset.</summary>
         public long TotalSteps => _totalSteps;
 
         /// <summary>Bounces since the last reset.</summary>
-        public int Bounces => _bounces;
+        public int Bounces => _flight?.BounceCount ?? 0;
 
         /// <summary>
         /// The simulation time the renderer should show, s: one fixed step behind the simulation,
@@ -186,6 +190,13 @@ namespace MagnusBall.Stepping
         {
             get
             {
+                if (_flight != null)
+                {
+                    // BouncingFlight keeps the Hermite pieces of its last step, split at its bounces.
+                    FlightState now = _flight.State;
+                    return _totalSteps == 0 ? now : _flight.StateAt(Math.Min(now.Time, now.Time - FixedStep + _accumulator));
+                }
+
                 if (_segmentCount == 0)
                 {
                     return _state;
@@ -224,7 +235,7 @@ namespace MagnusBall.Stepping
             _accumulator = 0;
             _finished = false;
             _totalSteps = 0;
-            _bounces = 0;
+            _flight?.Reset(start);
         }
 
         /// <summary>
@@ -283,6 +294,19 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
+                if (_flight != null)
+                {
+                    steps++;
+                    _totalSteps++;
+                    _accumulator -= FixedStep;
+                    if (StepBouncing(events, ref written, ref lost))
+                    {
+                        break;
+                    }
+
+                    continue;
+                }
+
                 FlightState next = Integrator.Step(Model, _state, _derivative, FixedStep);
                 StateDerivative nextDerivative = Model.Derivative(next);
                 steps++;
@@ -325,27 +349,7 @@ namespace MagnusBall.Stepping
                     Push(new HermiteSegment(_state, _derivative, touch, touchDerivative));
                 }
 
-                if (_bounce != null)
-                {
-                    BounceOutcome outcome = _bounce.Bounce(Model.Ball, _groundNormal, touch.Velocity, touch.AngularVelocity);
-                    var after = new FlightState(touch.Position, outcome.Velocity, outcome.AngularVelocity, touch.Time);
-                    bool rests = outcome.Regime == BounceRegime.None || Vector3d.Dot(outcome.Velocity, _groundNormal) < RestNormalSpeed;
-                    Write(new FrameEvent(rests ? FrameEventKind.Landing : FrameEventKind.Bounce, -1, touch, after, outcome.Regime), events, ref written, ref lost);
-                    if (!rests)
-                    {
-                        // Fly on from the bounce; the part of the step after the touchdown goes back to the accumulator.
-                        _bounces++;
-                        _accumulator += next.Time - touch.Time;
-                        _state = after;
-                        _derivative = Model.Derivative(after);
-                        continue;
-                    }
-                }
-                else
-                {
-                    Write(new FrameEvent(FrameEventKind.Landing, -1, touch), events, ref written, ref lost);
-                }
-
+                Write(new FrameEvent(FrameEventKind.Landing, -1, touch), events, ref written, ref lost);
                 _state = touch;
                 _derivative = touchDerivative;
                 _finished = true;
@@ -353,6 +357,56 @@ namespace MagnusBall.Stepping
             }
 
             return new AdvanceResult(steps, written, lost, dropped);
+        }
+
+        /// <summary>
+        /// One fixed step of the bouncing flight; reports its bounces, and its apex and plane crossings when the
+        /// step had no bounce (in a step with a bounce only the bounces are reported). True when the ball stopped.
+        /// </summary>
+        private bool StepBouncing(Span<FrameEvent> events, ref int written, ref int lost)
+        {
+            BouncingFlight flight = _flight!;
+            FlightState before = flight.State;
+            StateDerivative beforeDerivative = flight.Derivative;
+            bool wasFlying = flight.Phase == FlightPhase.Flying;
+            int bounces = flight.Step(FixedStep, _bounceScratch);
+
+            if (bounces == 0 && wasFlying && flight.Phase == FlightPhase.Flying && _eventSet != null)
+            {
+                int found = _eventSet.Scan(new HermiteSegment(before, beforeDerivative, flight.State, flight.Derivative), _scratch);
+                for (int i = 0; i < found; i++)
+                {
+                    FlightEvent e = _scratch[i];
+                    if (e.Kind != FlightEventKinds.Landing)
+                    {
+                        FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
+                        Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
+                    }
+                }
+            }
+
+            for (int i = 0; i < bounces; i++)
+            {
+                if (i >= _bounceScratch.Length)
+                {
+                    lost += bounces - i;
+                    break;
+                }
+
+                BounceEvent b = _bounceScratch[i];
+                var incoming = new FlightState(b.Position, b.IncomingVelocity, b.IncomingAngularVelocity, b.Time);
+                var outgoing = new FlightState(b.Position, b.Outcome.Velocity, b.Outcome.AngularVelocity, b.Time);
+                Write(new FrameEvent(FrameEventKind.Bounce, -1, incoming, outgoing, b.Outcome.Regime, b.StartedRolling), events, ref written, ref lost);
+            }
+
+            if (flight.Phase == FlightPhase.Stopped)
+            {
+                Write(new FrameEvent(FrameEventKind.Stop, -1, flight.State), events, ref written, ref lost);
+                _finished = true;
+                return true;
+            }
+
+            return false;
         }
 
         private void Push(in HermiteSegment segment)

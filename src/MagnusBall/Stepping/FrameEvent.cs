@@ -6,10 +6,7 @@ namespace MagnusBall.Stepping
     /// <summary>What happened at a <see cref="FrameEvent"/>.</summary>
     public enum FrameEventKind
     {
-        /// <summary>
-        /// The ball came down on the ground plane and the flight ended there: there is no bounce model, or
-        /// the bounce left the ground slower than <see cref="FixedStepDriver.RestNormalSpeed"/>.
-        /// </summary>
+        /// <summary>The ball came down on the ground plane and, without a bounce model, the flight ended there.</summary>
         Landing = 0,
 
         /// <summary>The ball's centre crossed one of the watched planes along the plane's normal (a net, a line, a wall).</summary>
@@ -18,8 +15,11 @@ namespace MagnusBall.Stepping
         /// <summary>The top of the flight: the velocity along up changed sign.</summary>
         Apex = 2,
 
-        /// <summary>The ball bounced off the ground and flies on (only with a bounce model).</summary>
+        /// <summary>The ball bounced off the court (only with a bounce model); it flies on, or rolls if <see cref="FrameEvent.StartsRolling"/>.</summary>
         Bounce = 3,
+
+        /// <summary>The ball stopped rolling: the flight has ended (only with a bounce model).</summary>
+        Stop = 4,
     }
 
     /// <summary>
@@ -43,8 +43,11 @@ namespace MagnusBall.Stepping
         /// <summary>The state at the event (for a bounce: just before it). Its time is the event time, s.</summary>
         public readonly FlightState State;
 
-        /// <summary>For a <see cref="FrameEventKind.Bounce"/> (and a landing that came to rest): the state just after the bounce.</summary>
+        /// <summary>For a <see cref="FrameEventKind.Bounce"/>: the state just after the bounce (default otherwise).</summary>
         public readonly FlightState AfterBounce;
+
+        /// <summary>For a bounce: true when it was too weak to leave the court and the ball started rolling.</summary>
+        public readonly bool StartsRolling;
 
         /// <summary>For a bounce: whether the contact point slid or gripped (<see cref="BounceRegime.None"/> otherwise).</summary>
         public readonly BounceRegime Regime;
@@ -55,8 +58,12 @@ namespace MagnusBall.Stepping
         /// <param name="state">The state at the event (before a bounce).</param>
         /// <param name="afterBounce">The state after a bounce (default otherwise).</param>
         /// <param name="regime">The bounce regime (None otherwise).</param>
-        public FrameEvent(FrameEventKind kind, int planeIndex, in FlightState state, in FlightState afterBounce = default, BounceRegime regime = BounceRegime.None)
+        /// <param name="startsRolling">For a bounce: whether the ball started rolling.</param>
+        public FrameEvent(
+            FrameEventKind kind, int planeIndex, in FlightState state, in FlightState afterBounce = default, BounceRegime regime = BounceRegime.None,
+            bool startsRolling = false)
         {
+            StartsRolling = startsRolling;
             Kind = kind;
             PlaneIndex = planeIndex;
             State = state;
@@ -77,7 +84,7 @@ namespace MagnusBall.Stepping
     /// <summary>What one call of <see cref="FixedStepDriver.Advance(double, System.Span{FrameEvent})"/> did.</summary>
     public readonly struct AdvanceResult
     {
-        /// <summary>Fixed steps taken in this call (a step cut short by a landing or a bounce counts as one).</summary>
+        /// <summary>Fixed steps taken in this call (a last step cut short by a landing counts as one).</summary>
         public readonly int StepsTaken;
 
         /// <summary>Events written to the caller's buffer, in time order.</summary>

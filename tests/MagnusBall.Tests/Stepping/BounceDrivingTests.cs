@@ -15,6 +15,7 @@ namespace MagnusBall.Tests.Stepping
         private const double Step = 1.0 / 240;
 
         private static FixedStepDriver NewDriver() =>
+            // The driver's ground is where the ball's centre touches (here y = 0), so the court is one radius below.
             new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard);
 
         private static List<FrameEvent> Fly(FixedStepDriver driver, double[] deltas, Action<FixedStepDriver>? perFrame = null)
@@ -27,7 +28,7 @@ namespace MagnusBall.Tests.Stepping
                 Assert.That(result.EventsNotReported, Is.EqualTo(0));
                 for (int i = 0; i < result.EventCount; i++)
                 {
-                    if (events[i].Kind == FrameEventKind.Bounce || events[i].Kind == FrameEventKind.Landing)
+                    if (events[i].Kind == FrameEventKind.Bounce || events[i].Kind == FrameEventKind.Stop)
                     {
                         all.Add(events[i]);
                     }
@@ -37,6 +38,7 @@ namespace MagnusBall.Tests.Stepping
             }
 
             Assert.That(driver.IsFinished, Is.True, "the ball comes to rest");
+            Assert.That(driver.BouncingFlight!.Phase, Is.EqualTo(FlightPhase.Stopped));
             return all;
         }
 
@@ -44,10 +46,12 @@ namespace MagnusBall.Tests.Stepping
         public void ABounce_IsTheBounceModelAppliedAtTheContactTime()
         {
             List<FrameEvent> touches = Fly(NewDriver(), DriverShots.FixedRate(60, 1));
-            TestContext.Out.WriteLine($"{touches.Count - 1} bounces, then rest at {touches[touches.Count - 1].Position}");
-            Assert.That(touches.Count, Is.GreaterThanOrEqualTo(3), "at least two bounces before rest");
+            TestContext.Out.WriteLine($"{touches.Count - 1} bounces, then stops at {touches[touches.Count - 1].Position} at t = {touches[touches.Count - 1].Time:F2} s");
+            Assert.That(touches.Count, Is.GreaterThanOrEqualTo(3), "at least two bounces before it stops");
             Assert.That(touches[0].Kind, Is.EqualTo(FrameEventKind.Bounce));
-            Assert.That(touches[touches.Count - 1].Kind, Is.EqualTo(FrameEventKind.Landing));
+            Assert.That(touches[0].StartsRolling, Is.False);
+            Assert.That(touches[touches.Count - 2].StartsRolling, Is.True, "the last bounce starts the roll");
+            Assert.That(touches[touches.Count - 1].Kind, Is.EqualTo(FrameEventKind.Stop));
 
             FrameEvent first = touches[0];
             BounceOutcome expected = CrossBounce.Hard.Bounce(Ball.Tennis, DriverShots.Up, first.State.Velocity, first.State.AngularVelocity);
@@ -57,9 +61,9 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(first.AfterBounce.Time, Is.EqualTo(first.Time));
             // 1e-12 m: the contact is located to 1e-12 s (queries' HermiteSegment tolerance) at a few m/s down.
             Assert.That(first.Position.Y, Is.EqualTo(0).Within(1e-10));
-            Assert.That(first.AfterBounce.Velocity.Y, Is.GreaterThan(FixedStepDriver.DefaultRestNormalSpeed));
+            Assert.That(first.AfterBounce.Velocity.Y, Is.GreaterThan(BouncingFlight.DefaultRestNormalSpeed));
 
-            // Each bounce leaves from where the last flight touched down, and the bounces move on down the court.
+            // The bounces, and then the stop, move on down the court.
             for (int i = 1; i < touches.Count; i++)
             {
                 Assert.That(touches[i].Time, Is.GreaterThan(touches[i - 1].Time));
@@ -83,6 +87,7 @@ namespace MagnusBall.Tests.Stepping
                     Assert.That(touches[i].Position, Is.EqualTo(reference[i].Position), $"touch {i}");
                     Assert.That(touches[i].Time, Is.EqualTo(reference[i].Time), $"touch {i}");
                     Assert.That(touches[i].AfterBounce.Velocity, Is.EqualTo(reference[i].AfterBounce.Velocity), $"touch {i}");
+                    Assert.That(touches[i].Kind, Is.EqualTo(reference[i].Kind), $"touch {i}");
                 }
             }
         }
@@ -91,7 +96,7 @@ namespace MagnusBall.Tests.Stepping
         public void TheDrawnBall_MovesSmoothlyThroughTheBounce()
         {
             // At 144 FPS the drawn ball never moves more than the fastest speed times a frame, and never goes
-            // below the ground, also in the frames around each bounce.
+            // below the ground, also in the frames around each bounce and while it rolls.
             double frame = 1.0 / 144;
             Vector3d last = DriverShots.Drive.Position;
             double maxSpeed = DriverShots.Drive.Velocity.Length;

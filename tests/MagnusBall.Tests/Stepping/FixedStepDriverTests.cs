@@ -276,6 +276,7 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, maxFrameDeltaSeconds: 0))!.ParamName, Is.EqualTo("maxFrameDeltaSeconds"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, maxStepsPerAdvance: -1))!.ParamName, Is.EqualTo("maxStepsPerAdvance"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, restNormalSpeed: -1))!.ParamName, Is.EqualTo("restNormalSpeed"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, rollingResistance: double.NaN))!.ParamName, Is.EqualTo("rollingResistance"));
             var noGround = new FlightEventSet(DriverShots.Up);
             Assert.That(Assert.Throws<ArgumentException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, noGround, CrossBounce.Hard))!.ParamName, Is.EqualTo("bounce"));
 
