@@ -104,7 +104,10 @@ namespace MagnusBall.Queries
     /// <remarks>
     /// <para>Every trial is a full flight with the solver's model, integrator and fixed step, with the plane
     /// crossing located on the step's cubic Hermite (<see cref="HermiteSegment"/>). A trial "arrives" when it
-    /// crosses the target plane along its normal before it lands on the ground.</para>
+    /// crosses the target plane along its normal before it lands on the ground. A trial launched from exactly
+    /// on the ground into it lands at once (see <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>);
+    /// the launch point should not be below the ground, where a trial lands only after rising through it and
+    /// coming back down.</para>
     /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
     /// target and the target plane passes through the target with that normal. Heights are measured along
     /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
@@ -581,8 +584,9 @@ namespace MagnusBall.Queries
                 }
 
                 HermiteSegment segment = stepper.LastSegment;
-                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, out double crossing);
-                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double landing);
+                bool first = stepper.StepCount == 1; // launched from on the ground into it: lands at once
+                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, first, out double crossing);
+                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, first, out double landing);
                 if (crossed && (!down || crossing <= landing))
                 {
                     arrival = segment.StateAt(crossing);
@@ -593,15 +597,6 @@ namespace MagnusBall.Queries
                 if (down)
                 {
                     arrival = segment.StateAt(landing);
-                    landed = true;
-                    return false;
-                }
-
-                if (Ground.SignedDistance(segment.End.Position) < 0)
-                {
-                    // Launched from on (or under) the ground going down: it never crossed from above, but it is
-                    // in the ground all the same.
-                    arrival = segment.End;
                     landed = true;
                     return false;
                 }
