@@ -212,14 +212,14 @@ namespace MagnusBall.Queries
         /// <paramref name="speed"/> crosses <paramref name="plane"/> (along its normal, before landing) at least
         /// <paramref name="height"/> above the ground: the minimum angle that clears a net.
         /// </summary>
-        /// <param name="position">Launch point, m; finite, on the negative side of the plane.</param>
+        /// <param name="position">Launch point, m; finite, on the negative side of the plane (signed distance &lt; 0).</param>
         /// <param name="speed">Launch speed, m/s; finite and &gt; 0.</param>
         /// <param name="azimuthRadians">Azimuth from the plane's normal (its horizontal part) toward the frame's side, rad; finite.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="plane">The plane to clear (a net); its normal must not be vertical.</param>
         /// <param name="height">Height above the ground the ball's centre must pass at, m; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
         public AimSolution MinimumElevationToClear(
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
         {
@@ -236,6 +236,14 @@ namespace MagnusBall.Queries
             if (Math.Abs(Vector3d.Dot(plane.Normal, up)) > 1 - 1e-9)
             {
                 throw new ArgumentException("plane must not be horizontal: clearing is measured by height at the crossing.", nameof(plane));
+            }
+
+            double side = plane.SignedDistance(position);
+            if (!(side < 0))
+            {
+                throw new ArgumentException(
+                    $"position must be on the negative side of plane (signed distance < 0 m), from where the ball crosses it along its normal; got {Require.Format(side)} m. Flip the plane (Plane.Flipped) to clear it the other way.",
+                    nameof(position));
             }
 
             var frame = new LaunchFrame(up, plane.Normal);

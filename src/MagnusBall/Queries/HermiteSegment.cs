@@ -53,9 +53,16 @@ namespace MagnusBall.Queries
         /// <param name="startDerivative">Derivative at the start of the step.</param>
         /// <param name="end">State at the end of the step; its time must be later than the start's.</param>
         /// <param name="endDerivative">Derivative at the end of the step.</param>
-        /// <exception cref="ArgumentException">The end is not later than the start, or a time is not finite.</exception>
+        /// <exception cref="ArgumentException">
+        /// The end is not later than the start, a time is not finite, or a state or derivative has a non-finite
+        /// component (for example a step that diverged); the message names which.
+        /// </exception>
         public HermiteSegment(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
         {
+            RequireFinite(start, nameof(start));
+            RequireFinite(startDerivative, nameof(startDerivative));
+            RequireFinite(end, nameof(end));
+            RequireFinite(endDerivative, nameof(endDerivative));
             if (!double.IsFinite(start.Time) || !double.IsFinite(end.Time) || !(end.Time > start.Time))
             {
                 throw new ArgumentException(
@@ -201,6 +208,24 @@ namespace MagnusBall.Queries
             double f1 = Vector3d.Dot(End.Velocity, up);
             double m1 = Vector3d.Dot(EndDerivative.Acceleration, up) * h;
             return FirstFall(f0, m0, f1, m1, false, out time);
+        }
+
+        private static void RequireFinite(in FlightState state, string name)
+        {
+            if (!state.IsFinite)
+            {
+                throw new ArgumentException($"{name} must have finite position, velocity, angular velocity and time; got {state}.", name);
+            }
+        }
+
+        private static void RequireFinite(in StateDerivative derivative, string name)
+        {
+            if (!derivative.Velocity.IsFinite || !derivative.Acceleration.IsFinite || !derivative.AngularAcceleration.IsFinite)
+            {
+                throw new ArgumentException(
+                    $"{name} must have finite velocity, acceleration and angular acceleration; got v={derivative.Velocity}, a={derivative.Acceleration}, dw/dt={derivative.AngularAcceleration}.",
+                    name);
+            }
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
