@@ -100,26 +100,15 @@ namespace MagnusBall.Cli
                         $"the flight diverged (non-finite state after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step");
                 }
 
-                // Events come in time order; nothing after the landing counts.
-                ReadOnlySpan<FlightEvent> events = stepper.Events;
-                double landingTime = double.PositiveInfinity;
-                foreach (FlightEvent e in events)
+                // Events come in time order; nothing after the landing counts (the library's one rule for it).
+                ReadOnlySpan<FlightEvent> events = stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent touchdown);
+                if (landed)
                 {
-                    if (e.Kind == FlightEventKinds.Landing)
-                    {
-                        landing = e.State;
-                        landingTime = e.Time;
-                        break;
-                    }
+                    landing = touchdown.State;
                 }
 
                 foreach (FlightEvent e in events)
                 {
-                    if (e.Time > landingTime)
-                    {
-                        break;
-                    }
-
                     if (e.Kind == FlightEventKinds.Apex && apex is null)
                     {
                         apex = e.State;

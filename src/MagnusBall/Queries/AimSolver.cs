@@ -583,6 +583,9 @@ namespace MagnusBall.Queries
             _simulations++;
             FlightStepper stepper = _stepper;
             stepper.Reset(launch);
+            Span<Plane> planes = stackalloc Plane[1];
+            planes[0] = plane;
+            Span<FlightEvent> found = stackalloc FlightEvent[3];
             double endTime = launch.Time + MaximumFlightTime;
             while (stepper.State.Time < endTime)
             {
@@ -591,20 +594,23 @@ namespace MagnusBall.Queries
                     break; // diverged: this trial fails (margin -infinity), the solve goes on
                 }
 
-                HermiteSegment segment = stepper.LastSegment;
-                bool first = stepper.StepCount == 1; // launched from on the ground into it: lands at once
-                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, first, out double crossing);
-                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, first, out double landing);
-                if (crossed && (!down || crossing <= landing))
+                // The first step counts a launch from on the ground into it as a landing at once.
+                int n = FlightEventSet.ScanPlanes(stepper.LastSegment, Vector3d.Zero, Ground, planes, found, stepper.StepCount == 1);
+                ReadOnlySpan<FlightEvent> events = found.Slice(0, n);
+                int count = FlightEventSet.CountUntil(events, FlightEventKinds.Landing, out int landing);
+                for (int i = 0; i < count; i++)
                 {
-                    arrival = segment.StateAt(crossing);
-                    landed = false;
-                    return true;
+                    if (events[i].Kind == FlightEventKinds.PlaneCrossing)
+                    {
+                        arrival = events[i].State;
+                        landed = false;
+                        return true;
+                    }
                 }
 
-                if (down)
+                if (landing >= 0)
                 {
-                    arrival = segment.StateAt(landing);
+                    arrival = events[landing].State;
                     landed = true;
                     return false;
                 }
@@ -628,6 +634,25 @@ namespace MagnusBall.Queries
             }
 
             return landed ? Math.Min(plane.SignedDistance(arrival.Position), -double.Epsilon) : double.NegativeInfinity;
+        }
+
+        /// <summary>
+        /// One trial launch at the given speed, elevation and azimuth: its margin (see <see cref="ArrivalMargin"/>)
+        /// and the solution it stands for. <paramref name="missToTarget"/>: Miss is the distance from the arrival
+        /// to the target; otherwise the margin (the clearance above the wanted height).
+        /// </summary>
+        private double Trial(
+            in Vector3d position, in LaunchFrame frame, double speed, double elevation, double azimuth, in LaunchSpin launchSpin, in Plane plane,
+            in Vector3d target, bool missToTarget, out AimSolution solution)
+        {
+            Vector3d direction = frame.Direction(elevation, azimuth);
+            Vector3d velocity = direction * speed;
+            Vector3d spin = launchSpin.AngularVelocity(direction, frame);
+            double margin = ArrivalMargin(new FlightState(position, velocity, spin), plane, target, out FlightState arrival);
+            double miss = missToTarget ? Vector3d.Distance(arrival.Position, target) : margin;
+            solution = new AimSolution(
+                margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, elevation, azimuth, velocity, spin, arrival, miss, _simulations);
+            return margin;
         }
 
         private interface IMargin
@@ -667,14 +692,8 @@ namespace MagnusBall.Queries
 
             public double Evaluate(double elevation)
             {
-                Vector3d direction = _frame.Direction(elevation, _azimuth);
-                Vector3d velocity = direction * _speed;
-                Vector3d spin = _spin.AngularVelocity(direction, _frame);
-                double margin = _solver.ArrivalMargin(new FlightState(_position, velocity, spin), _plane, _target, out FlightState arrival);
-                double miss = _missToTarget ? Vector3d.Distance(arrival.Position, _target) : margin;
-                Last = new AimSolution(
-                    margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, _speed, elevation, _azimuth, velocity, spin, arrival, miss,
-                    _solver._simulations);
+                double margin = _solver.Trial(_position, _frame, _speed, elevation, _azimuth, _spin, _plane, _target, _missToTarget, out AimSolution solution);
+                Last = solution;
                 return margin;
             }
         }
@@ -751,13 +770,8 @@ namespace MagnusBall.Queries
 
             public double Evaluate(double speed)
             {
-                Vector3d direction = _frame.Direction(_elevation, _azimuth);
-                Vector3d velocity = direction * speed;
-                Vector3d spin = _spin.AngularVelocity(direction, _frame);
-                double margin = _solver.ArrivalMargin(new FlightState(_position, velocity, spin), _plane, _target, out FlightState arrival);
-                Last = new AimSolution(
-                    margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, _elevation, _azimuth, velocity, spin, arrival,
-                    Vector3d.Distance(arrival.Position, _target), _solver._simulations);
+                double margin = _solver.Trial(_position, _frame, speed, _elevation, _azimuth, _spin, _plane, _target, true, out AimSolution solution);
+                Last = solution;
                 return margin;
             }
         }

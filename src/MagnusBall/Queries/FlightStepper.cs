@@ -182,6 +182,25 @@ namespace MagnusBall.Queries
             return false;
         }
 
+        /// <summary>
+        /// The events inside the last step that happen when the flight ends at the first event of the
+        /// <paramref name="stopAt"/> kinds: those up to it and any at the same instant, in time order (see
+        /// <see cref="FlightEventSet.CountUntil"/>). For a flight that ends at the landing: the apex and the plane
+        /// crossings before the landing count, nothing after it. Allocates nothing.
+        /// </summary>
+        /// <param name="stopAt">The kinds that end the flight (None: every event of the step).</param>
+        /// <param name="stopped">True when an event of those kinds happened in the last step.</param>
+        /// <param name="stopEvent">The first such event; default when none.</param>
+        /// <returns>The events that happen, in time order (the stop event among them).</returns>
+        public ReadOnlySpan<FlightEvent> EventsUntil(FlightEventKinds stopAt, out bool stopped, out FlightEvent stopEvent)
+        {
+            ReadOnlySpan<FlightEvent> events = Events;
+            int count = FlightEventSet.CountUntil(events, stopAt, out int stopIndex);
+            stopped = stopIndex >= 0;
+            stopEvent = stopped ? events[stopIndex] : default;
+            return events.Slice(0, count);
+        }
+
         private void SetStateUnchecked(in FlightState state)
         {
             _state = state;

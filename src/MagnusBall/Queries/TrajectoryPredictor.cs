@@ -126,7 +126,7 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// Predicts full states: writes the start state, every step's end state and the end state into
-        /// <paramref name="samples"/>, and every located event up to and including the stop event, in time
+        /// <paramref name="samples"/>, and every located event up to and including the stop event (and any at the same instant), in time
         /// order, into <paramref name="events"/>.
         /// </summary>
         /// <param name="start">The start state; every component finite.</param>
@@ -163,7 +163,7 @@ namespace MagnusBall.Queries
                         stepper.StepCount, stepper.DerivativeEvaluations, diverged: true);
                 }
 
-                ReadOnlySpan<FlightEvent> found = stepper.Events;
+                ReadOnlySpan<FlightEvent> found = stepper.EventsUntil(stopAt, out bool stopped, out FlightEvent stop);
                 for (int i = 0; i < found.Length; i++)
                 {
                     if (eventCount < events.Length)
@@ -174,14 +174,14 @@ namespace MagnusBall.Queries
                     {
                         eventsTruncated = true;
                     }
+                }
 
-                    if ((found[i].Kind & stopAt) != 0)
-                    {
-                        Write(found[i].State, positions, states, ref sampleCount, ref samplesTruncated);
-                        return new Prediction(
-                            found[i].State, true, found[i], sampleCount, samplesTruncated, eventCount, eventsTruncated,
-                            stepper.StepCount, stepper.DerivativeEvaluations);
-                    }
+                if (stopped)
+                {
+                    Write(stop.State, positions, states, ref sampleCount, ref samplesTruncated);
+                    return new Prediction(
+                        stop.State, true, stop, sampleCount, samplesTruncated, eventCount, eventsTruncated,
+                        stepper.StepCount, stepper.DerivativeEvaluations);
                 }
 
                 Write(stepper.State, positions, states, ref sampleCount, ref samplesTruncated);
