@@ -32,7 +32,7 @@ shot options (court frame: x from the net toward the far baseline, y up, z to th
   --z M               hitting position across the court
   --target AREA       court | deuce | ad  (what counts as in)
 scene options:
-  --integrator NAME   euler | semi-implicit-euler | heun | rk4 (default rk4)
+  --integrator NAME   euler | semi-implicit-euler | heun | rk4 | stable-rk4 (default rk4)
   --step S            fixed step (default 1/240)
   --density RHO       air density, kg/m^3 (default 1.21)
   --thesis-coefficients  constant C_D 0.55 and C_M 0.175 (Agrawal 2023) instead of Stepanek's

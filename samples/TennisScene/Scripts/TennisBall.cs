@@ -20,6 +20,9 @@ namespace MagnusBall.Samples.TennisScene.Unity
 
         /// <summary>Classic RK4 (fourth order; the thesis's default).</summary>
         RungeKutta4,
+
+        /// <summary>RK4 with stability-safe substeps (StableIntegrator): for large fixed steps with light, fast balls.</summary>
+        StableRungeKutta4,
     }
 
     /// <summary>The court surface the ball bounces on (the inspector's drop-down).</summary>
@@ -257,6 +260,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 case IntegratorChoice.Euler: return ExplicitEuler.Instance.Name;
                 case IntegratorChoice.SemiImplicitEuler: return SemiImplicitEuler.Instance.Name;
                 case IntegratorChoice.Heun: return Heun.Instance.Name;
+                case IntegratorChoice.StableRungeKutta4: return StableIntegrator.RungeKutta4.Name;
                 default: return RungeKutta4.Instance.Name;
             }
         }
