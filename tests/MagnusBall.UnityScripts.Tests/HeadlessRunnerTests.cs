@@ -71,6 +71,8 @@ namespace MagnusBall.UnityScripts.Tests
         [TestCase("--integrator", "verlet", "integrator must be one of")]
         [TestCase("--frobnicate", null, "unknown option '--frobnicate'")]
         [TestCase("--step", null, "--step needs a value")]
+        [TestCase("--aim", "9.5", "--aim must be two finite numbers X,Z")]
+        [TestCase("--aim", "60,0", "cannot be reached")]
         public void BadOptions_ExitWithCode2_AndSayWhatIsWrong(string option, string? value, string message)
         {
             (int code, string output, string error) = value == null ? Run(option, "--no-svg") : Run(option, value, "--no-svg");
@@ -82,6 +84,17 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(code, Is.EqualTo(2));
             Assert.That(error, Does.Contain(message));
             Assert.That(output, Is.Empty);
+        }
+
+        [Test]
+        public void Aim_SolvesTheAngles_SoTheBallLandsOnTheTarget()
+        {
+            // The kick serve's speed and spin (with sidespin, so the sidespin sign convention is exercised), aimed
+            // at a point in the deuce box; the table prints the landing to the centimetre.
+            (int code, string output, string error) = Run("--shot", "kick serve", "--aim", "5.5,3", "--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            string row = output.Split('\n').Single(r => r.StartsWith("custom shot", StringComparison.Ordinal));
+            Assert.That(row, Does.Contain("  5.50,  3.00 in"), row);
         }
 
         [Test]
