@@ -93,7 +93,7 @@ namespace MagnusBall.Benchmarks
                     outcome.Diverged = true;
                 }
 
-                if (LandingLocator.TryLocate(state, next, Scenarios.Up, step, out Vector3d landing, out _))
+                if (LandingLocator.TryLocate(state, derivative, next, end, out Vector3d landing))
                 {
                     outcome.Landed = true;
                     outcome.Landing = landing;

@@ -1,60 +1,28 @@
 using System;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 
 namespace MagnusBall.Benchmarks
 {
     /// <summary>
-    /// Locates the landing (first downward crossing of height 0 along up) inside one step, on the cubic Hermite
-    /// through the step's end states and end velocities. The one place to swap for the queries API
-    /// (HermiteSegment.TryFindCrossing) once it is on main.
+    /// Locates the landing (first crossing of the ground plane through the origin, against up) inside one step, on the
+    /// cubic Hermite of the step: the queries API's <see cref="HermiteSegment.TryFindCrossing"/>.
     /// </summary>
     internal static class LandingLocator
     {
-        public static bool TryLocate(in FlightState start, in FlightState end, in Vector3d up, double step, out Vector3d landing, out double time)
+        public static readonly Plane Ground = new Plane(default, Scenarios.Up);
+
+        public static bool TryLocate(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, out Vector3d landing)
         {
-            double f0 = Vector3d.Dot(start.Position, up);
-            double f1 = Vector3d.Dot(end.Position, up);
-            if (!(f0 >= 0 && f1 < 0))
+            var segment = new HermiteSegment(start, startDerivative, end, endDerivative);
+            if (segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double time))
             {
-                landing = default;
-                time = double.NaN;
-                return false;
+                landing = segment.PositionAt(time);
+                return true;
             }
 
-            double d0 = Vector3d.Dot(start.Velocity, up) * step;
-            double d1 = Vector3d.Dot(end.Velocity, up) * step;
-
-            // Bisection on the height cubic, then polish: 80 halvings reach double precision in theta.
-            double lo = 0, hi = 1;
-            for (int i = 0; i < 80 && hi - lo > 1e-16; i++)
-            {
-                double mid = 0.5 * (lo + hi);
-                if (Height(f0, f1, d0, d1, mid) >= 0)
-                {
-                    lo = mid;
-                }
-                else
-                {
-                    hi = mid;
-                }
-            }
-
-            double theta = 0.5 * (lo + hi);
-            landing = Position(start, end, step, theta);
-            time = start.Time + theta * step;
-            return true;
-        }
-
-        private static double Height(double f0, double f1, double d0, double d1, double t)
-        {
-            double t2 = t * t, t3 = t2 * t;
-            return (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * d1;
-        }
-
-        private static Vector3d Position(in FlightState a, in FlightState b, double h, double t)
-        {
-            double t2 = t * t, t3 = t2 * t;
-            return a.Position * (2 * t3 - 3 * t2 + 1) + a.Velocity * ((t3 - 2 * t2 + t) * h) + b.Position * (-2 * t3 + 3 * t2) + b.Velocity * ((t3 - t2) * h);
+            landing = default;
+            return false;
         }
     }
 
@@ -71,14 +39,15 @@ namespace MagnusBall.Benchmarks
             while (state.Time < maxTime)
             {
                 FlightState next = integrator.Step(model, state, derivative, step);
+                StateDerivative end = model.Derivative(next);
                 evaluations += perStep;
-                if (LandingLocator.TryLocate(state, next, Scenarios.Up, step, out landing, out _))
+                if (LandingLocator.TryLocate(state, derivative, next, end, out landing))
                 {
                     return true;
                 }
 
                 state = next;
-                derivative = model.Derivative(state);
+                derivative = end;
             }
 
             landing = default;
@@ -96,7 +65,7 @@ namespace MagnusBall.Benchmarks
             {
                 FlightState next = StableStepping.Step(integrator, model, state, derivative, step, out StateDerivative end, out int substeps);
                 evaluations += (long)perStep * substeps;
-                if (LandingLocator.TryLocate(state, next, Scenarios.Up, step, out landing, out _))
+                if (LandingLocator.TryLocate(state, derivative, next, end, out landing))
                 {
                     return true;
                 }

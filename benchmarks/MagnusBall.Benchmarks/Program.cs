@@ -21,6 +21,12 @@ namespace MagnusBall.Benchmarks
                 case "extremes-quick":
                     Console.WriteLine(ExtremesReport.Matrix(quick: true));
                     return 0;
+                case "quick-timing":
+                    QuickTiming.Run();
+                    return 0;
+                case "work-precision":
+                    WorkPrecisionReport.Run(args.Length > 1 ? args[1] : "docs");
+                    return 0;
                 case "blowup":
                     Console.WriteLine(ExtremesReport.BlowUp());
                     return 0;

@@ -184,8 +184,7 @@ namespace MagnusBall.Cli
 
         private static string Write(List<(AimRequest Request, AimSolution Solution)> solutions)
         {
-            using var buffer = new MemoryStream();
-            using (var w = new Utf8JsonWriter(buffer, new JsonWriterOptions { Indented = true, Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
+            return JsonOutput.Write(w =>
             {
                 w.WriteStartObject();
                 w.WriteStartArray("results");
@@ -215,9 +214,7 @@ namespace MagnusBall.Cli
 
                 w.WriteEndArray();
                 w.WriteEndObject();
-            }
-
-            return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
+            });
         }
 
         private static void WriteVector(Utf8JsonWriter w, string name, Vector3d v)

@@ -92,7 +92,8 @@ namespace MagnusBall.Cli
                 }
 
                 double before = stepper.State.Time;
-                if (!stepper.TryStep(h))
+                // TryStep refuses a step that blows up (the state is kept), so the error can name the step.
+                if (!stepper.TryStep(h) || !stepper.State.IsFinite)
                 {
                     throw new InputError(
                         $"scenarios[{scenario.Index}].step",

@@ -293,6 +293,17 @@ namespace MagnusBall.Cli.Tests
         }
 
         [Test]
+        public void Json_IsValid_AndKeepsNamesExactly()
+        {
+            JsonObject root = CliRun.Drive();
+            S(root)["name"] = "drive \"flat\" \\ \u00e9\u00e8 \n <&>";
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.FirstResult().GetProperty("name").GetString(), Is.EqualTo("drive \"flat\" \\ \u00e9\u00e8 \n <&>"));
+            Assert.That(run.Stdout, Does.Contain("\"position\": [0, 0, 1]").Or.Contain("\"position\": [11.885, 0,"), "vectors on one line");
+            Assert.That(run.Stdout, Does.EndWith("}\n"));
+        }
+
+        [Test]
         public void CsvQuotesNamesWithCommas()
         {
             JsonObject root = CliRun.Drive();

@@ -211,7 +211,10 @@ namespace MagnusBall.Contact
         /// <summary>Derivative evaluations of the flight model since the last <see cref="Reset"/>, the one at the start state included.</summary>
         public long DerivativeEvaluations => _derivativeEvaluations;
 
-        /// <summary>Starts again from <paramref name="start"/>, flying.</summary>
+        /// <summary>
+        /// Starts again from <paramref name="start"/>: flying, or rolling when the ball is placed on the surface
+        /// (centre at most one radius above it) without moving away from it, where gravity presses it into the surface.
+        /// </summary>
         /// <param name="start">The launch state; every component finite.</param>
         /// <exception cref="ArgumentException">The state is not finite (nothing is changed).</exception>
         public void Reset(in FlightState start)
@@ -225,6 +228,11 @@ namespace MagnusBall.Contact
             _phase = FlightPhase.Flying;
             _bounceCount = 0;
             _lastBounce = default;
+            if (_gravityHolds && _contactPlane.SignedDistance(start.Position) <= 0 && Vector3d.Dot(start.Velocity, _normal) <= 0)
+            {
+                // Placed on the surface (or in it) and not leaving it: it rolls from there, or rests.
+                StartRolling(_contactPlane.Project(start.Position), start.Velocity, start.AngularVelocity, start.Time);
+            }
         }
 
         /// <summary>
@@ -284,7 +292,7 @@ namespace MagnusBall.Contact
                 found++;
                 if (roll)
                 {
-                    StartRolling(centre, outcome, contactTime);
+                    StartRolling(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
                     break;
                 }
 
@@ -335,14 +343,13 @@ namespace MagnusBall.Contact
             return _state;
         }
 
-        private void StartRolling(in Vector3d centre, in BounceOutcome outcome, double time)
+        private void StartRolling(in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity, double time)
         {
             // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
-            Vector3d v = outcome.Velocity;
-            Vector3d vt = v - _normal * Vector3d.Dot(v, _normal);
-            Vector3d lambda = vt - Vector3d.Cross(_normal, outcome.AngularVelocity) * (_radius * _inertiaFactor);
+            Vector3d vt = velocity - _normal * Vector3d.Dot(velocity, _normal);
+            Vector3d lambda = vt - Vector3d.Cross(_normal, angularVelocity) * (_radius * _inertiaFactor);
             Vector3d rolling = lambda / (1 + _inertiaFactor);
-            Vector3d spinNormal = _normal * Vector3d.Dot(outcome.AngularVelocity, _normal);
+            Vector3d spinNormal = _normal * Vector3d.Dot(angularVelocity, _normal);
             _phase = FlightPhase.Rolling;
             SetRolling(new FlightState(centre, rolling, RollingSpin(rolling, spinNormal), time));
         }

@@ -91,22 +91,20 @@ namespace MagnusBall.Queries
         /// Advances the flight by <paramref name="step"/> seconds and locates the events inside the step
         /// (see <see cref="Events"/>). Allocates nothing.
         /// </summary>
+        /// <remarks>
+        /// A step far beyond the integrator's stability limit for this ball and speed (explicit methods need
+        /// roughly step &lt; 2.8 / (k C_D s), k = <see cref="FlightModel.AerodynamicFactor"/>) makes the state
+        /// overflow. <see cref="Step"/> still takes it, reports no events, and leaves the non-finite state in
+        /// <see cref="State"/> for the caller to detect (<see cref="FlightState.IsFinite"/>); the next step then
+        /// throws. <see cref="TryStep"/> refuses such a step instead and keeps the last finite state.
+        /// </remarks>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <returns>The number of events inside the step.</returns>
-        /// <exception cref="InvalidOperationException">
-        /// No state was given yet (<see cref="Reset"/>), or the step diverged (see <see cref="TryStep"/>); the state is left unchanged.
-        /// </exception>
-        /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive.</exception>
+        /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
+        /// <exception cref="ArgumentException">The step is not finite and positive, or the current state is not finite (a previous step diverged).</exception>
         public int Step(double step)
         {
-            if (!TryStep(step))
-            {
-                throw new InvalidOperationException(
-                    $"The step of {Require.Format(step)} s diverged (the state would not be finite): it is beyond {Integrator.Name}'s " +
-                    $"stability limit for this ball and speed (explicit methods need roughly step < 2.8 / (k C_D s), k = {Require.Format(Model.AerodynamicFactor)} 1/m). " +
-                    "Use a smaller step.");
-            }
-
+            Advance(step, acceptDivergence: true);
             return _eventCount;
         }
 
@@ -120,7 +118,9 @@ namespace MagnusBall.Queries
         /// <returns>True when the step was taken (<see cref="Events"/> holds its events).</returns>
         /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
         /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive.</exception>
-        public bool TryStep(double step)
+        public bool TryStep(double step) => Advance(step, acceptDivergence: false);
+
+        private bool Advance(double step, bool acceptDivergence)
         {
             if (!_started)
             {
@@ -134,6 +134,14 @@ namespace MagnusBall.Queries
             if (!next.IsFinite || !(next.Time > _state.Time) || !IsFinite(nextDerivative))
             {
                 _eventCount = 0;
+                if (acceptDivergence)
+                {
+                    StepCount++;
+                    _segment = default;
+                    _state = next;
+                    _derivative = nextDerivative;
+                }
+
                 return false;
             }
 

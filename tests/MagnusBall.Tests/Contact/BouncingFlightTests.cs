@@ -298,6 +298,35 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void ABallPlacedOnTheCourt_RestsThere_OrRollsToAStop()
+        {
+            var model = Tennis(Gravity.YUp);
+            double r = Ball.Tennis.Radius;
+            var resting = new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, Plane.Ground(model),
+                new FlightState(new Vector3d(1, r, 2), Vector3d.Zero, Vector3d.Zero));
+            Assert.That(resting.Phase, Is.EqualTo(FlightPhase.Rolling));
+            resting.Step(1.0 / 60, Span<BounceEvent>.Empty);
+            Assert.That(resting.Phase, Is.EqualTo(FlightPhase.Stopped));
+            Assert.That(resting.State.Position, Is.EqualTo(new Vector3d(1, r, 2)));
+
+            // Pushed along the court at 2 m/s without spin: it rolls at 2/(1 + alpha) and stops (no drag in vacuum).
+            var vacuum = FlightModel.Vacuum(Ball.Tennis, Gravity.YUp);
+            var pushed = new BouncingFlight(vacuum, RungeKutta4.Instance, CrossBounce.Hard, Plane.Ground(vacuum),
+                new FlightState(new Vector3d(0, r, 0), new Vector3d(0, 0, 2), Vector3d.Zero));
+            Assert.That(pushed.State.Velocity.Z, Is.EqualTo(2 / (1 + Ball.Tennis.InertiaFactor)).Within(1e-15));
+            for (int i = 0; i < 60 * 30 && pushed.Phase != FlightPhase.Stopped; i++)
+            {
+                pushed.Step(1.0 / 60, Span<BounceEvent>.Empty);
+            }
+
+            double v = 2 / (1 + Ball.Tennis.InertiaFactor);
+            Assert.That(pushed.Phase, Is.EqualTo(FlightPhase.Stopped));
+            // Closed form on level ground: rounding only.
+            Assert.That(pushed.State.Position.Z, Is.EqualTo(v * v / (2 * BouncingFlight.DefaultRollingResistance * Gravity.Standard)).Within(1e-12));
+            Assert.That(pushed.State.Position.Y, Is.EqualTo(r).Within(1e-15));
+        }
+
+        [Test]
         public void StateAt_FollowsTheBounce_InsideTheStep()
         {
             var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);

@@ -15,7 +15,7 @@ namespace MagnusBall.Tests.Queries
         private static readonly FlightState Absurd = new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e5, 0, 1e4), default);
 
         [Test]
-        public void Stepper_StepThrows_TryStepReportsAndKeepsTheState()
+        public void Stepper_TryStepRefusesAndKeepsTheState_StepShowsIt()
         {
             var stepper = new FlightStepper(Shots.StepanekTennis(Gravity.ZUp), RungeKutta4.Instance);
             stepper.Reset(Absurd);
@@ -29,8 +29,12 @@ namespace MagnusBall.Tests.Queries
 
             Assert.That(stepper.State.IsFinite, Is.True);
             Assert.That(stepper.State.Time, Is.EqualTo(last.Time));
-            Assert.Throws<InvalidOperationException>(() => stepper.Step(1.0 / 60));
-            Assert.That(stepper.State.IsFinite, Is.True);
+
+            // Step takes the diverging step and leaves the non-finite state for the caller to see; the next
+            // step refuses to start from it.
+            Assert.That(stepper.Step(1.0 / 60), Is.EqualTo(0));
+            Assert.That(stepper.State.IsFinite, Is.False);
+            Assert.That(Assert.Throws<ArgumentException>(() => stepper.Step(1.0 / 60))!.ParamName, Is.EqualTo("state"));
         }
 
         [Test]

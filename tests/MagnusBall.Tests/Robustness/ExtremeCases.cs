@@ -1,6 +1,7 @@
 using System;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 
 namespace MagnusBall.Tests.Robustness
 {
@@ -64,7 +65,7 @@ namespace MagnusBall.Tests.Robustness
                                     g * Math.Max(state.Position.Length, next.Position.Length) + g);
                 outcome.MaxEnergyRise = Math.Max(outcome.MaxEnergyRise, (model.MechanicalEnergy(next) - model.MechanicalEnergy(state)) / scale);
                 outcome.Diverged |= next.Velocity.Length > s0 + g * next.Time + 1e-9;
-                if (TryLand(state, next, step, out outcome.Landing))
+                if (TryLand(state, derivative, next, end, out outcome.Landing))
                 {
                     outcome.Landed = true;
                     return outcome;
@@ -118,35 +119,20 @@ namespace MagnusBall.Tests.Robustness
             throw new InvalidOperationException("the reference flight did not land");
         }
 
-        /// <summary>The first downward crossing of height 0 inside a step, on the step's cubic Hermite.</summary>
-        public static bool TryLand(in FlightState a, in FlightState b, double h, out Vector3d landing)
+        private static readonly Plane Ground = new Plane(default, Up);
+
+        /// <summary>The first crossing of the ground inside a step, on the step's cubic Hermite (the queries API).</summary>
+        public static bool TryLand(in FlightState a, in StateDerivative da, in FlightState b, in StateDerivative db, out Vector3d landing)
         {
-            double f0 = Vector3d.Dot(a.Position, Up), f1 = Vector3d.Dot(b.Position, Up);
-            if (!(f0 >= 0 && f1 < 0))
+            var segment = new HermiteSegment(a, da, b, db);
+            if (segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double time))
             {
-                landing = default;
-                return false;
+                landing = segment.PositionAt(time);
+                return true;
             }
 
-            double d0 = Vector3d.Dot(a.Velocity, Up) * h, d1 = Vector3d.Dot(b.Velocity, Up) * h;
-            double lo = 0, hi = 1;
-            for (int i = 0; i < 80 && hi - lo > 1e-16; i++)
-            {
-                double t = 0.5 * (lo + hi), t2 = t * t, t3 = t2 * t;
-                double height = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * d1;
-                if (height >= 0)
-                {
-                    lo = t;
-                }
-                else
-                {
-                    hi = t;
-                }
-            }
-
-            double s = 0.5 * (lo + hi), s2 = s * s, s3 = s2 * s;
-            landing = a.Position * (2 * s3 - 3 * s2 + 1) + a.Velocity * ((s3 - 2 * s2 + s) * h) + b.Position * (-2 * s3 + 3 * s2) + b.Velocity * ((s3 - s2) * h);
-            return true;
+            landing = default;
+            return false;
         }
     }
 }
