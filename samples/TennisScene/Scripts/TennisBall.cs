@@ -163,7 +163,9 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 Step(Time.deltaTime);
             }
 
-            // Draw the state interpolated between the last two fixed steps (alpha = accumulator / step).
+            // Update mode: draw the state interpolated between the last two fixed steps (alpha = accumulator / step).
+            // FixedUpdate mode: draw the latest fixed state, the one Unity's own FixedUpdate physics sees (no
+            // interpolation: the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
             FlightState render = stepInFixedUpdate ? _driver.State : _driver.RenderState;
             transform.position = UnityFrame.ToUnity(render.Position);
             ShowSpin(render.AngularVelocity, Time.deltaTime);
