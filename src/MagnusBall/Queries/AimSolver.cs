@@ -104,7 +104,10 @@ namespace MagnusBall.Queries
     /// <remarks>
     /// <para>Every trial is a full flight with the solver's model, integrator and fixed step, with the plane
     /// crossing located on the step's cubic Hermite (<see cref="HermiteSegment"/>). A trial "arrives" when it
-    /// crosses the target plane along its normal before it lands on the ground.</para>
+    /// crosses the target plane along its normal before it lands on the ground. A trial launched from exactly
+    /// on the ground into it lands at once (see <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>);
+    /// the launch point should not be below the ground, where a trial lands only after rising through it and
+    /// coming back down.</para>
     /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
     /// target and the target plane passes through the target with that normal. Heights are measured along
     /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
@@ -209,14 +212,14 @@ namespace MagnusBall.Queries
         /// <paramref name="speed"/> crosses <paramref name="plane"/> (along its normal, before landing) at least
         /// <paramref name="height"/> above the ground: the minimum angle that clears a net.
         /// </summary>
-        /// <param name="position">Launch point, m; finite, on the negative side of the plane.</param>
+        /// <param name="position">Launch point, m; finite, on the negative side of the plane (signed distance &lt; 0).</param>
         /// <param name="speed">Launch speed, m/s; finite and &gt; 0.</param>
         /// <param name="azimuthRadians">Azimuth from the plane's normal (its horizontal part) toward the frame's side, rad; finite.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="plane">The plane to clear (a net); its normal must not be vertical.</param>
         /// <param name="height">Height above the ground the ball's centre must pass at, m; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
         public AimSolution MinimumElevationToClear(
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
         {
@@ -233,6 +236,14 @@ namespace MagnusBall.Queries
             if (Math.Abs(Vector3d.Dot(plane.Normal, up)) > 1 - 1e-9)
             {
                 throw new ArgumentException("plane must not be horizontal: clearing is measured by height at the crossing.", nameof(plane));
+            }
+
+            double side = plane.SignedDistance(position);
+            if (!(side < 0))
+            {
+                throw new ArgumentException(
+                    $"position must be on the negative side of plane (signed distance < 0 m), from where the ball crosses it along its normal; got {Require.Format(side)} m. Flip the plane (Plane.Flipped) to clear it the other way.",
+                    nameof(position));
             }
 
             var frame = new LaunchFrame(up, plane.Normal);
@@ -581,8 +592,9 @@ namespace MagnusBall.Queries
                 }
 
                 HermiteSegment segment = stepper.LastSegment;
-                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, out double crossing);
-                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double landing);
+                bool first = stepper.StepCount == 1; // launched from on the ground into it: lands at once
+                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, first, out double crossing);
+                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, first, out double landing);
                 if (crossed && (!down || crossing <= landing))
                 {
                     arrival = segment.StateAt(crossing);
@@ -593,15 +605,6 @@ namespace MagnusBall.Queries
                 if (down)
                 {
                     arrival = segment.StateAt(landing);
-                    landed = true;
-                    return false;
-                }
-
-                if (Ground.SignedDistance(segment.End.Position) < 0)
-                {
-                    // Launched from on (or under) the ground going down: it never crossed from above, but it is
-                    // in the ground all the same.
-                    arrival = segment.End;
                     landed = true;
                     return false;
                 }

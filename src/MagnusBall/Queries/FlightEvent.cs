@@ -115,14 +115,20 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// Finds the events inside one step and writes them to <paramref name="events"/> in time order: the
-        /// first landing, the first apex and the first crossing of each plane inside (StartTime, EndTime].
-        /// Allocates nothing.
+        /// first landing, the first apex and the first crossing of each plane inside (StartTime, EndTime] (for
+        /// the first step of a flight, a landing or crossing at StartTime too). Allocates nothing.
         /// </summary>
         /// <param name="segment">The step's dense output.</param>
         /// <param name="events">Where to write; at least <see cref="MaximumEventsPerStep"/> long.</param>
+        /// <param name="startsFlight">
+        /// True for the first step of a flight (after a reset or a replaced state): a ball that starts exactly on
+        /// the ground or a watched plane and heads through it crosses it at the step's start (see
+        /// <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>). False (the
+        /// default) for a step that continues a flight, whose start was the previous step's end.
+        /// </param>
         /// <returns>How many events were written.</returns>
         /// <exception cref="ArgumentException">The buffer is shorter than <see cref="MaximumEventsPerStep"/>.</exception>
-        public int Scan(in HermiteSegment segment, Span<FlightEvent> events)
+        public int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
         {
             if (events.Length < MaximumEventsPerStep)
             {
@@ -132,7 +138,7 @@ namespace MagnusBall.Queries
 
             int count = 0;
             double time;
-            if (Ground.HasValue && segment.TryFindCrossing(Ground.Value, CrossingDirection.AgainstNormal, out time))
+            if (Ground.HasValue && segment.TryFindCrossing(Ground.Value, CrossingDirection.AgainstNormal, startsFlight, out time))
             {
                 events[count++] = new FlightEvent(FlightEventKinds.Landing, -1, segment.StateAt(time));
             }
@@ -144,7 +150,7 @@ namespace MagnusBall.Queries
 
             for (int i = 0; i < _planes.Length; i++)
             {
-                if (segment.TryFindCrossing(_planes[i], CrossingDirection.AlongNormal, out time))
+                if (segment.TryFindCrossing(_planes[i], CrossingDirection.AlongNormal, startsFlight, out time))
                 {
                     events[count++] = new FlightEvent(FlightEventKinds.PlaneCrossing, i, segment.StateAt(time));
                 }

@@ -23,6 +23,7 @@ namespace MagnusBall.Queries
         private HermiteSegment _segment;
         private int _eventCount;
         private bool _started;
+        private bool _startsFlight; // the next step is the first since Reset/SetState: a start on a plane heading through it counts
 
         /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
         /// <param name="model">The flight model.</param>
@@ -64,7 +65,11 @@ namespace MagnusBall.Queries
         /// <summary>Derivative evaluations since the last <see cref="Reset"/> (including the one at the start state).</summary>
         public long DerivativeEvaluations { get; private set; }
 
-        /// <summary>Starts a new flight from <paramref name="state"/>: sets the state, evaluates its derivative, zeroes the counters.</summary>
+        /// <summary>
+        /// Starts a new flight from <paramref name="state"/>: sets the state, evaluates its derivative, zeroes the
+        /// counters. A ball placed exactly on the ground or a watched plane and heading through it crosses it at
+        /// the start of the next step (a ball launched from the ground into it lands at once).
+        /// </summary>
         /// <param name="state">The start state; every component finite.</param>
         /// <exception cref="ArgumentException">The state is not finite.</exception>
         public void Reset(in FlightState state)
@@ -77,7 +82,9 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// Replaces the current state mid-flight (after a bounce, a hit, a teleport) without zeroing the
-        /// counters. Evaluates the new state's derivative (one evaluation) and clears the last step's events.
+        /// counters. Evaluates the new state's derivative (one evaluation) and clears the last step's events. As
+        /// after <see cref="Reset"/>, a state exactly on a plane and heading through it crosses it at the start of
+        /// the next step; a ball leaving the plane (after a bounce) does not.
         /// </summary>
         /// <param name="state">The new state; every component finite.</param>
         /// <exception cref="ArgumentException">The state is not finite.</exception>
@@ -149,7 +156,8 @@ namespace MagnusBall.Queries
             _segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
             _state = next;
             _derivative = nextDerivative;
-            _eventCount = EventSet == null ? 0 : EventSet.Scan(_segment, _events);
+            _eventCount = EventSet == null ? 0 : EventSet.Scan(_segment, _events, _startsFlight);
+            _startsFlight = false;
             return true;
         }
 
@@ -182,6 +190,7 @@ namespace MagnusBall.Queries
             _segment = default;
             _eventCount = 0;
             _started = true;
+            _startsFlight = true;
         }
 
         private static void CheckState(in FlightState state)

@@ -314,7 +314,7 @@ namespace MagnusBall.Stepping
                 _accumulator -= FixedStep;
 
                 var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
-                int found = _eventSet == null ? 0 : _eventSet.Scan(segment, _scratch);
+                int found = _eventSet == null ? 0 : _eventSet.Scan(segment, _scratch, startsFlight: _totalSteps == 1);
                 int landingIndex = -1;
                 for (int i = 0; i < found && landingIndex < 0; i++)
                 {

@@ -85,10 +85,11 @@ namespace MagnusBall.Tests.Queries
                 Is.EqualTo(AimStatus.Unreachable));
             Assert.That(solver.SpeedToReach(default, -30 * Degree, 0, LaunchSpin.None, new Vector3d(20, 0, 5)).Status, Is.EqualTo(AimStatus.Unreachable));
 
-            // A plane behind the player is never crossed along its normal.
-            AimSolution behind = solver.MinimumElevationToClear(new Vector3d(10, 0, 1), 20, 0, LaunchSpin.None, new Plane(default, Vector3d.UnitX), 1);
-            Assert.That(behind.IsSolved, Is.False);
-            Assert.That(double.IsNaN(behind.ElevationRadians), Is.False);
+            // A plane behind the player is never crossed along its normal: that is a wrong argument (most likely the
+            // plane's normal points the wrong way), not an unreachable shot (LaunchAndSegmentInputTests).
+            var behind = Assert.Throws<ArgumentException>(
+                () => solver.MinimumElevationToClear(new Vector3d(10, 0, 1), 20, 0, LaunchSpin.None, new Plane(default, Vector3d.UnitX), 1));
+            Assert.That(behind!.ParamName, Is.EqualTo("position"));
         }
 
         [Test]

@@ -17,10 +17,10 @@ namespace MagnusBall.Tests.Validation
     [Category("Validation")]
     public class FreeKickTests
     {
-        private JsonElement _data;
+        private JsonElement _published;
 
         [OneTimeSetUp]
-        public void Load() => _data = ReferenceData.Load("javorova2018_freekick.json");
+        public void Load() => _published = PublishedCases.Load("javorova2018_freekick.json");
 
         /// <summary>One frame's view of the case: gravity, up, forward (toward goal) and side (toward the target).</summary>
         internal readonly struct Frame
@@ -61,7 +61,7 @@ namespace MagnusBall.Tests.Validation
 
         internal Kick Run(Frame frame)
         {
-            var ball = new Ball(_data.Number("ball", "mass_kg"), _data.Number("ball", "radius_m"), Ball.ThinShellInertiaFactor);
+            var ball = new Ball(_published.Number("ball", "mass_kg"), _published.Number("ball", "radius_m"), Ball.ThinShellInertiaFactor);
             // Soccer coefficients from the literature, not fitted to this case (../shared/physics-references.md
             // section 2): Goff & Carre (2010, Eur. J. Phys. 31:775) drag, the larger of their no-spin drag-crisis
             // curve and their spinning-ball fit 0.4127 S^0.3056 (here S ~ 0.25-0.4, so the spin fit, C_D ~ 0.27-0.30);
@@ -75,13 +75,13 @@ namespace MagnusBall.Tests.Validation
             double r = ball.Radius;
             Vector3d start = frame.Point(0, 0, r);
             var ground = new Plane(start, frame.Up);
-            double goalLine = _data.Number("goal_line_distance_m");
-            Vector3d target = frame.Point(goalLine, _data.Number("target_at_goal_line", "lateral_m"), _data.Number("target_at_goal_line", "height_m"));
-            var spin = new LaunchSpin(0, _data.Number("spin_radps")); // pure sidespin, curving toward the target's side
+            double goalLine = _published.Number("goal_line_distance_m");
+            Vector3d target = frame.Point(goalLine, _published.Number("target_at_goal_line", "lateral_m"), _published.Number("target_at_goal_line", "height_m"));
+            var spin = new LaunchSpin(0, _published.Number("spin_radps")); // pure sidespin, curving toward the target's side
 
             // RK4 at 1/240 s; events on the Hermite are good to 1e-10 m at this step.
             var solver = new AimSolver(model, RungeKutta4.Instance, 1.0 / 240, ground);
-            double[] speeds = { _data.GetProperty("speeds_mps")[0].GetDouble(), _data.GetProperty("speeds_mps")[1].GetDouble(), _data.GetProperty("speeds_mps")[2].GetDouble() };
+            double[] speeds = { _published.GetProperty("speeds_mps")[0].GetDouble(), _published.GetProperty("speeds_mps")[1].GetDouble(), _published.GetProperty("speeds_mps")[2].GetDouble() };
             AimSolution aim = solver.AnglesToReach(start, speeds[1], spin, target);
             Assert.That(aim.IsSolved, Is.True, "the 24.15 m/s kick can be aimed at the target");
 
@@ -117,8 +117,8 @@ namespace MagnusBall.Tests.Validation
         public void OnlyTheMiddleKickScores()
         {
             Kick kick = Run(ZUp);
-            double crossbar = _data.Number("goal", "crossbar_m");
-            double goalLine = _data.Number("goal_line_distance_m");
+            double crossbar = _published.Number("goal", "crossbar_m");
+            double goalLine = _published.Number("goal_line_distance_m");
             string[] speeds = { "19.32", "24.15", "28.91" };
 
             TestContext.Out.WriteLine($"aim: {kick.Aim}");
@@ -137,8 +137,8 @@ namespace MagnusBall.Tests.Validation
 
             // The 24.15 m/s kick through the target: 1 cm is the bound (the solver itself converges to ~1e-7 m).
             Assert.That(kick.Flights[1].StopEvent.Kind, Is.EqualTo(FlightEventKinds.PlaneCrossing));
-            Assert.That(kick.GoalLineSides[1], Is.EqualTo(_data.Number("target_at_goal_line", "lateral_m")).Within(0.01));
-            Assert.That(kick.GoalLineHeights[1], Is.EqualTo(_data.Number("target_at_goal_line", "height_m")).Within(0.01));
+            Assert.That(kick.GoalLineSides[1], Is.EqualTo(_published.Number("target_at_goal_line", "lateral_m")).Within(0.01));
+            Assert.That(kick.GoalLineHeights[1], Is.EqualTo(_published.Number("target_at_goal_line", "height_m")).Within(0.01));
 
             // 19.32 m/s: on the ground before the goal line.
             Assert.That(kick.Flights[0].StopEvent.Kind, Is.EqualTo(FlightEventKinds.Landing));
