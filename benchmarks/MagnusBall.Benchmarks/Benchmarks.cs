@@ -142,6 +142,7 @@ namespace MagnusBall.Benchmarks
         private FlightState _start;
         private FlightState[] _samples = null!;
         private FlightEvent[] _events = null!;
+        private readonly DormandPrince54 _dp54 = new DormandPrince54(1e-6, 1e-6);
 
         [GlobalSetup]
         public void Setup()
@@ -163,7 +164,7 @@ namespace MagnusBall.Benchmarks
         [Benchmark(Description = "DP54 adaptive rtol=atol=1e-6 to the landing, dense-output landing")]
         public double PredictDp54()
         {
-            Flight.TryLandReference(_model, _start, 2.0, 1e-6, out Vector3d landing, out _);
+            Flight.TryLandReference(_model, _start, 2.0, _dp54, out Vector3d landing, out _);
             return landing.X;
         }
     }

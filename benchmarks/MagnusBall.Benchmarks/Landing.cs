@@ -82,9 +82,12 @@ namespace MagnusBall.Benchmarks
         /// The reference landing: adaptive Dormand-Prince 5(4) at rtol = atol = <paramref name="tolerance"/>, the crossing
         /// located by bisection on its own fourth-order dense output.
         /// </summary>
-        public static bool TryLandReference(FlightModel model, FlightState state, double maxTime, double tolerance, out Vector3d landing, out long evaluations)
+        public static bool TryLandReference(FlightModel model, FlightState state, double maxTime, double tolerance, out Vector3d landing, out long evaluations) =>
+            TryLandReference(model, state, maxTime, new DormandPrince54(tolerance, tolerance), out landing, out evaluations);
+
+        /// <summary>As above, with a given method (no allocation).</summary>
+        public static bool TryLandReference(FlightModel model, FlightState state, double maxTime, DormandPrince54 method, out Vector3d landing, out long evaluations)
         {
-            var method = new DormandPrince54(tolerance, tolerance);
             StateDerivative derivative = model.Derivative(state);
             double step = method.InitialStep(model, state, derivative, 0.01);
             evaluations = 2;

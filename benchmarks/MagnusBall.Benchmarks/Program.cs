@@ -27,6 +27,8 @@ namespace MagnusBall.Benchmarks
                 case "work-precision":
                     WorkPrecisionReport.Run(args.Length > 1 ? args[1] : "docs");
                     return 0;
+                case "kernel":
+                    return Kernel.Run(args[1], long.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture));
                 case "blowup":
                     Console.WriteLine(ExtremesReport.BlowUp());
                     return 0;

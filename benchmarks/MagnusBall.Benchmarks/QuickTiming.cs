@@ -14,11 +14,18 @@ namespace MagnusBall.Benchmarks
             peers.Setup();
             var full = new StepCost { Method = "rk4", Model = "full" };
             full.Setup();
+            var vac = new StepCost { Method = "rk4", Model = "vacuum" };
+            vac.Setup();
+
             for (int round = 0; round < 3; round++)
             {
                 Console.WriteLine($"MagnusBall RK4 (thesis model): {Time(() => peers.MagnusBallRk4(), 480):F1} ns/step");
                 Console.WriteLine($"MagnusBall RK4 (full model):   {Time(() => full.Step(), 480):F1} ns/step");
-                Console.WriteLine($"thesis-style:                  {Time(() => peers.ThesisStyle(), 480):F1} ns/step");
+                Console.WriteLine($"MagnusBall RK4 (vacuum):       {Time(() => vac.Step(), 480):F1} ns/step");
+                long a0 = GC.GetAllocatedBytesForCurrentThread();
+                peers.ThesisStyle();
+                long thesisBytes = GC.GetAllocatedBytesForCurrentThread() - a0;
+                Console.WriteLine($"thesis-style:                  {Time(() => peers.ThesisStyle(), 480):F1} ns/step, {thesisBytes / 480.0:F0} B/step (first call)");
                 Console.WriteLine($"MathNet:                       {Time(() => peers.MathNet(), 480):F1} ns/step");
                 FlightModel model = Scenarios.ThesisTennis();
                 FlightState s = Scenarios.TennisDrive();
@@ -36,20 +43,74 @@ namespace MagnusBall.Benchmarks
                 sink += body();
             }
 
-            int calls = 20_000_00 / perCall;
-            var watch = Stopwatch.StartNew();
+            int calls = 4_000_000 / perCall;
+            var process = Process.GetCurrentProcess();
+            TimeSpan cpu0 = process.TotalProcessorTime;
             for (int i = 0; i < calls; i++)
             {
                 sink += body();
             }
 
-            watch.Stop();
+            process.Refresh();
+            TimeSpan cpu = process.TotalProcessorTime - cpu0;
             if (sink == 42)
             {
                 Console.WriteLine();
             }
 
-            return watch.Elapsed.TotalMilliseconds * 1e6 / ((double)calls * perCall);
+            // CPU time of this process (not wall time): less disturbed by the other jobs on the shared machine.
+            return cpu.TotalMilliseconds * 1e6 / ((double)calls * perCall);
+        }
+    }
+}
+
+namespace MagnusBall.Benchmarks
+{
+    /// <summary>
+    /// Mode "kernel NAME CALLS": runs one kernel CALLS times after a warm-up, for counting CPU cycles with
+    /// `perf stat -e cycles:u` (a run with CALLS = 0 gives the fixed start-up cost to subtract). Cycles spent in this
+    /// process do not depend on what else the shared machine runs, unlike wall-clock time.
+    /// </summary>
+    internal static class Kernel
+    {
+        public static int Run(string name, long calls)
+        {
+            var peers = new Peers();
+            peers.Setup();
+            Func<double> body;
+            int stepsPerCall = 480;
+            switch (name)
+            {
+                case "rk4-thesis": body = peers.MagnusBallRk4; break;
+                case "thesis-style": body = peers.ThesisStyle; break;
+                case "mathnet": body = peers.MathNet; break;
+                default:
+                    string[] parts = name.Split(':'); // e.g. step:rk4:full
+                    var step = new StepCost { Method = parts[1], Model = parts[2] };
+                    step.Setup();
+                    body = step.Step;
+                    break;
+            }
+
+            double sink = 0;
+            for (int i = 0; i < 3000; i++)
+            {
+                sink += body();
+            }
+
+            System.Threading.Thread.Sleep(200); // let tiered compilation finish in the background
+            for (int i = 0; i < 1000; i++)
+            {
+                sink += body();
+            }
+
+            for (long i = 0; i < calls; i++)
+            {
+                sink += body();
+            }
+
+            Console.WriteLine($"{name}: {calls} calls x {stepsPerCall} steps ({sink:E1})");
+            return 0;
         }
     }
 }

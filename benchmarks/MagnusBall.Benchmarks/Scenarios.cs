@@ -91,7 +91,7 @@ namespace MagnusBall.Benchmarks
 
             if (sideSpinRate != 0)
             {
-                spin += Spin.Toward(velocity, Vector3d.UnitY, sideSpinRate);
+                spin += Spin.Toward(velocity, sideSpinRate > 0 ? Vector3d.UnitY : -Vector3d.UnitY, Math.Abs(sideSpinRate));
             }
 
             return new FlightState(new Vector3d(0, 0, height), velocity, spin);

@@ -20,6 +20,9 @@ namespace MagnusBall.Samples.TennisScene.Unity
 
         /// <summary>Classic RK4 (fourth order; the thesis's default).</summary>
         RungeKutta4,
+
+        /// <summary>RK4 with stability-safe substeps (StableIntegrator): for large fixed steps with light, fast balls.</summary>
+        StableRungeKutta4,
     }
 
     /// <summary>The court surface the ball bounces on (the inspector's drop-down).</summary>
@@ -160,7 +163,9 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 Step(Time.deltaTime);
             }
 
-            // Draw the state interpolated between the last two fixed steps (alpha = accumulator / step).
+            // Update mode: draw the state interpolated between the last two fixed steps (alpha = accumulator / step).
+            // FixedUpdate mode: draw the latest fixed state, the one Unity's own FixedUpdate physics sees (no
+            // interpolation: the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
             FlightState render = stepInFixedUpdate ? _driver.State : _driver.RenderState;
             transform.position = UnityFrame.ToUnity(render.Position);
             ShowSpin(render.AngularVelocity, Time.deltaTime);
@@ -257,6 +262,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 case IntegratorChoice.Euler: return ExplicitEuler.Instance.Name;
                 case IntegratorChoice.SemiImplicitEuler: return SemiImplicitEuler.Instance.Name;
                 case IntegratorChoice.Heun: return Heun.Instance.Name;
+                case IntegratorChoice.StableRungeKutta4: return StableIntegrator.RungeKutta4.Name;
                 default: return RungeKutta4.Instance.Name;
             }
         }

@@ -23,7 +23,7 @@ namespace MagnusBall.Samples.TennisScene
         /// </param>
         /// <param name="dragCoefficient">Constant C_D when not using Stepanek's (thesis: 0.55).</param>
         /// <param name="magnusCoefficient">Constant C_M (lift) when not using Stepanek's (thesis: 0.175).</param>
-        /// <param name="integrator">Integrator name: euler, semi-implicit-euler, heun, rk4 (see <see cref="Integrators.Names"/>).</param>
+        /// <param name="integrator">Integrator name: euler, semi-implicit-euler, heun, rk4 (see <see cref="Integrators.Names"/>) or stable-rk4.</param>
         /// <param name="fixedStep">Fixed step, s.</param>
         /// <param name="surface">
         /// The court: hard, clay or grass (the Cross bounce on <see cref="Surface"/>'s presets), or none (the
@@ -46,7 +46,11 @@ namespace MagnusBall.Samples.TennisScene
             UseStepanekCoefficients = useStepanekCoefficients;
             DragCoefficient = dragCoefficient;
             MagnusCoefficient = magnusCoefficient;
-            Integrator = Integrators.FromName(integrator);
+            // "stable-rk4": RK4 with the library's stability-safe substeps (worth it at a large fixed step, e.g.
+            // FixedUpdate's 0.02 s, with light fast balls); otherwise one of Integrators.Names.
+            Integrator = string.Equals(integrator, StableIntegrator.RungeKutta4.Name, StringComparison.OrdinalIgnoreCase)
+                ? StableIntegrator.RungeKutta4
+                : Integrators.FromName(integrator);
             if (!(fixedStep > 0) || double.IsInfinity(fixedStep))
             {
                 throw new ArgumentOutOfRangeException(nameof(fixedStep), fixedStep, $"fixedStep must be finite and > 0 s; got {fixedStep}.");

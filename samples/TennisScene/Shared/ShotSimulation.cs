@@ -220,6 +220,42 @@ namespace MagnusBall.Samples.TennisScene
             return _predictor.Predict(from, MaxFlightSeconds, points).SampleCount;
         }
 
+        /// <summary>
+        /// The same shot (speed, spin, hitting point) with its elevation and azimuth solved by the library's
+        /// <see cref="AimSolver"/> so that it first touches the court at (<paramref name="x"/>, <paramref name="z"/>);
+        /// null when no elevation in [-45, 80] deg and azimuth within 45 deg of the target direction does it.
+        /// </summary>
+        /// <param name="shot">The shot to aim.</param>
+        /// <param name="x">Target contact point along the court, m.</param>
+        /// <param name="z">Target contact point across the court, m.</param>
+        public TennisShot? Aim(TennisShot shot, double x, double z)
+        {
+            if (shot == null)
+            {
+                throw new ArgumentNullException(nameof(shot));
+            }
+
+            var solver = new AimSolver(Settings.Model, Settings.Integrator, Settings.FixedStep, Events.Ground!.Value, MaxFlightSeconds);
+
+            // LaunchSpin's side is normalize(up x forward): toward -z here (the hitter's right), so the shot's
+            // sidespin toward +z is a negative LaunchSpin sidespin. Both build the spin by effect, so they agree.
+            var spin = new LaunchSpin(Spin.FromRpm(shot.TopspinRpm), -Spin.FromRpm(shot.SidespinRpm));
+
+            // The ball's centre touches down one radius above the contact point.
+            var target = new Vector3d(x, 0, z) + TennisCourt.Up * Settings.Ball.Radius;
+            AimSolution solution = solver.AnglesToReach(shot.Start, shot.Speed, spin, target);
+            if (!solution.IsSolved)
+            {
+                return null;
+            }
+
+            // Back to the shot's own angles: elevation above the horizontal, azimuth from +x toward +z.
+            Vector3d v = solution.Velocity;
+            double elevation = Math.Asin(Vector3d.Dot(v, TennisCourt.Up) / v.Length) * (180 / Math.PI);
+            double azimuth = Math.Atan2(Vector3d.Dot(v, TennisCourt.Left), Vector3d.Dot(v, TennisCourt.Downrange)) * (180 / Math.PI);
+            return shot.WithAngles(elevation, azimuth);
+        }
+
         private static void Append(Span<Vector3d> path, ref int count, in Vector3d point)
         {
             if (count < path.Length)

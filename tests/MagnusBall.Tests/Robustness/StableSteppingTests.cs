@@ -39,8 +39,9 @@ namespace MagnusBall.Tests.Robustness
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, new ConstantDrag(0.5));
             var state = new FlightState(default, new Vector3d(50, 0, 0), default);
             double sigma = StableStepping.StiffnessRate(model, state, 1e-9);
-            double expected = 2 * model.AerodynamicFactor * 0.5 * 50;
-            // 1e-6 relative: the h = 1e-9 s speed-growth term g h / s = 2e-10, plus rounding.
+            double expected = 1.1 * 2 * model.AerodynamicFactor * 0.5 * 50;
+            // 1e-6 relative: the h = 1e-9 s speed-growth term g h / s = 2e-10, plus rounding (1.1: the one-sided margin
+            // the criterion takes when the speed changes by less than 10 % within the step).
             Assert.That(sigma, Is.EqualTo(expected).Within(1e-6).Percent);
             Assert.That(StableStepping.StiffnessRate(FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp), state, 0.1), Is.EqualTo(0));
         }
