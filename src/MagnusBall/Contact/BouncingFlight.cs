@@ -243,9 +243,19 @@ namespace MagnusBall.Contact
         /// <param name="bounces">Where to write the step's bounces; those that do not fit are still applied (see <see cref="LastBounce"/>).</param>
         /// <returns>The number of bounces inside the step (may exceed <paramref name="bounces"/>' length).</returns>
         /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive (nothing is changed).</exception>
+        /// <exception cref="InvalidOperationException">
+        /// The step diverged (the integrator produced a non-finite state: the step is far beyond its stability
+        /// limit for this ball and speed; use <see cref="MagnusBall.Integration.StableIntegrator"/> or a smaller
+        /// step). The ball's state, phase and counts are left as they were before the call.
+        /// </exception>
         public int Step(double step, Span<BounceEvent> bounces)
         {
             Require.Step(step, nameof(step));
+            FlightState savedState = _state, savedPrevious = _previous;
+            StateDerivative savedDerivative = _derivative;
+            int savedBounceCount = _bounceCount;
+            BounceEvent savedLastBounce = _lastBounce;
+            long savedEvaluations = _derivativeEvaluations;
             double endTime = _state.Time + step;
             _previous = _state;
             _segmentCount = 0;
@@ -262,6 +272,21 @@ namespace MagnusBall.Contact
 
                 FlightState next = Integrator.Step(Model, _state, _derivative, h);
                 StateDerivative nextDerivative = Model.Derivative(next);
+                if (!next.IsFinite || !nextDerivative.Acceleration.IsFinite || !nextDerivative.AngularAcceleration.IsFinite)
+                {
+                    // Only flying sub-steps can diverge, so the phase is still Flying: put back what this call changed.
+                    _state = savedState;
+                    _previous = savedPrevious;
+                    _derivative = savedDerivative;
+                    _bounceCount = savedBounceCount;
+                    _lastBounce = savedLastBounce;
+                    _derivativeEvaluations = savedEvaluations;
+                    _segmentCount = 0;
+                    throw new InvalidOperationException(
+                        $"The step of {Require.Format(h)} s diverged (the state would not be finite): it is beyond {Integrator.Name}'s " +
+                        "stability limit for this ball and speed. Use StableIntegrator.RungeKutta4 or a smaller step.");
+                }
+
                 _derivativeEvaluations += Integrator.DerivativeEvaluationsPerStep;
                 var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
                 if (found >= MaxSegmentsPerStep - 1 || !segment.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, out double contactTime))

@@ -40,6 +40,7 @@ namespace MagnusBall.Stepping
 
         private readonly FlightEventSet? _eventSet;
         private readonly FlightEvent[] _scratch;
+        private readonly FlightStepper? _stepper;
         private readonly IBounceModel? _bounce;
         private readonly BouncingFlight? _flight;
         private readonly BounceEvent[] _bounceScratch;
@@ -54,10 +55,30 @@ namespace MagnusBall.Stepping
         private long _totalSteps;
 
         /// <summary>
+        /// Creates a driver for one ball with the safe default integrator, <see cref="StableIntegrator.RungeKutta4"/>:
+        /// RK4, substepped where a light, fast ball would make the fixed step unstable (docs/integrators.md).
+        /// </summary>
+        /// <param name="model">The flight model (shared, immutable).</param>
+        /// <param name="fixedStep">The fixed step, s; finite and &gt; 0 (for example 1/240).</param>
+        /// <param name="start">The launch state; every component finite.</param>
+        /// <param name="events">What to look for in each step (see the full constructor); null for the ground and the apex.</param>
+        /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
+        /// <exception cref="ArgumentNullException">model is null.</exception>
+        /// <exception cref="ArgumentException">A number is out of its range (the message names it).</exception>
+        public FixedStepDriver(FlightModel model, double fixedStep, in FlightState start, FlightEventSet? events = null, IBounceModel? bounce = null)
+            : this(model, StableIntegrator.RungeKutta4, fixedStep, start, events, bounce)
+        {
+        }
+
+        /// <summary>
         /// Creates a driver for one ball.
         /// </summary>
         /// <param name="model">The flight model (shared, immutable).</param>
-        /// <param name="integrator">The integrator (shared, stateless).</param>
+        /// <param name="integrator">
+        /// The integrator (shared, stateless). A plain explicit method can blow up when the fixed step is long
+        /// against the drag time scale of a light, fast ball; <see cref="StableIntegrator.RungeKutta4"/> (the
+        /// default of the shorter constructor) cannot.
+        /// </param>
         /// <param name="fixedStep">The fixed step, s; finite and &gt; 0 (for example 1/240).</param>
         /// <param name="start">The launch state; every component finite.</param>
         /// <param name="events">
@@ -125,6 +146,11 @@ namespace MagnusBall.Stepping
                 Plane ground = _eventSet.Ground.Value;
                 var court = new Plane(ground.Point - ground.Normal * model.Ball.Radius, ground.Normal);
                 _flight = new BouncingFlight(model, integrator, bounce, court, start, restNormalSpeed, rollingResistance);
+            }
+
+            else
+            {
+                _stepper = new FlightStepper(model, integrator, _eventSet);
             }
 
             Reset(start);
@@ -236,6 +262,7 @@ namespace MagnusBall.Stepping
             _finished = false;
             _totalSteps = 0;
             _flight?.Reset(start);
+            _stepper?.Reset(start);
         }
 
         /// <summary>
@@ -256,6 +283,10 @@ namespace MagnusBall.Stepping
         /// <param name="events">Where to write the events; those that do not fit are counted in the result.</param>
         /// <returns>Steps taken, events written and lost, and frame time dropped.</returns>
         /// <exception cref="ArgumentOutOfRangeException">The delta is negative, NaN or infinite (nothing is changed).</exception>
+        /// <exception cref="InvalidOperationException">
+        /// A fixed step diverged (a plain explicit integrator far beyond its stability limit); the driver is left at
+        /// the last good fixed state, with the failed step's time still in the accumulator.
+        /// </exception>
         public AdvanceResult Advance(double frameDeltaSeconds, Span<FrameEvent> events)
         {
             if (!double.IsFinite(frameDeltaSeconds) || frameDeltaSeconds < 0)
@@ -296,10 +327,12 @@ namespace MagnusBall.Stepping
 
                 if (_flight != null)
                 {
+                    // StepBouncing throws before changing anything when the step diverges.
+                    bool stopped = StepBouncing(events, ref written, ref lost);
                     steps++;
                     _totalSteps++;
                     _accumulator -= FixedStep;
-                    if (StepBouncing(events, ref written, ref lost))
+                    if (stopped)
                     {
                         break;
                     }
@@ -307,42 +340,40 @@ namespace MagnusBall.Stepping
                     continue;
                 }
 
-                FlightState next = Integrator.Step(Model, _state, _derivative, FixedStep);
-                StateDerivative nextDerivative = Model.Derivative(next);
+                if (!_stepper!.TryStep(FixedStep))
+                {
+                    // A refused step changes nothing: the stepper keeps its state, the step's time stays in the accumulator.
+                    throw new InvalidOperationException(
+                        $"The fixed step of {Require.Format(FixedStep)} s diverged at t = {Require.Format(_state.Time)} s (the state would not be finite): " +
+                        $"it is beyond {Integrator.Name}'s stability limit for this ball and speed. Use StableIntegrator.RungeKutta4 " +
+                        "(the default of the constructor without an integrator) or a smaller fixed step.");
+                }
+
                 steps++;
                 _totalSteps++;
                 _accumulator -= FixedStep;
 
-                var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
-                int found = _eventSet == null ? 0 : _eventSet.Scan(segment, _scratch, startsFlight: _totalSteps == 1);
-                int landingIndex = -1;
-                for (int i = 0; i < found && landingIndex < 0; i++)
+                // Events up to the touchdown (those after it lie on the part of the step that never happens).
+                ReadOnlySpan<FlightEvent> found = _stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent landing);
+                foreach (FlightEvent e in found)
                 {
-                    if (_scratch[i].Kind == FlightEventKinds.Landing)
+                    if (e.Kind != FlightEventKinds.Landing)
                     {
-                        landingIndex = i;
+                        FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
+                        Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
                     }
                 }
 
-                // Events before the touchdown (those after it lie on the part of the step that never happens).
-                int before = landingIndex >= 0 ? landingIndex : found;
-                for (int i = 0; i < before; i++)
+                if (!landed)
                 {
-                    FlightEvent e = _scratch[i];
-                    FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
-                    Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
-                }
-
-                if (landingIndex < 0)
-                {
-                    Push(segment);
-                    _state = next;
-                    _derivative = nextDerivative;
+                    Push(_stepper.LastSegment);
+                    _state = _stepper.State;
+                    _derivative = _stepper.Derivative;
                     continue;
                 }
 
                 // Touchdown inside this step: cut the step there.
-                FlightState touch = _scratch[landingIndex].State;
+                FlightState touch = landing.State;
                 StateDerivative touchDerivative = Model.Derivative(touch);
                 if (touch.Time > _state.Time)
                 {
@@ -373,7 +404,7 @@ namespace MagnusBall.Stepping
 
             if (bounces == 0 && wasFlying && flight.Phase == FlightPhase.Flying && _eventSet != null)
             {
-                int found = _eventSet.Scan(new HermiteSegment(before, beforeDerivative, flight.State, flight.Derivative), _scratch);
+                int found = _eventSet.Scan(new HermiteSegment(before, beforeDerivative, flight.State, flight.Derivative), _scratch, startsFlight: _totalSteps == 0);
                 for (int i = 0; i < found; i++)
                 {
                     FlightEvent e = _scratch[i];
