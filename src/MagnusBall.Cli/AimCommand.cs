@@ -1,11 +1,235 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Text;
+using System.Text.Encodings.Web;
+using System.Text.Json;
+using MagnusBall.Queries;
+
 namespace MagnusBall.Cli
 {
-    /// <summary>The `aim` command: the library's aim solvers behind a JSON file (docs/cli.md).</summary>
+    /// <summary>
+    /// `magnusball aim FILE`: the library's <see cref="AimSolver"/> behind a JSON file. Each entry of "aims"
+    /// has the flight fields of a scenario (ball, air, gravity, aero, spinDecay, integrator, step, maxTime,
+    /// ground), a "launch" (position and spin by effect) and a "find" object naming the solve and its inputs.
+    /// See docs/cli.md.
+    /// </summary>
     internal static class AimCommand
     {
+        /// <summary>The solves "find.kind" names, after the <see cref="AimSolver"/> methods.</summary>
+        public static readonly string[] Kinds =
+        {
+            "minimum-elevation-to-clear", "elevation-to-reach", "angles-to-reach", "speed-to-reach",
+        };
+
+        private const double DegreesToRadians = Math.PI / 180;
+
+        private sealed record AimRequest(string Name, string Path, AimSolver Solver, Vector3d Position, LaunchSpin Spin, Func<AimSolver, AimSolution> Solve);
+
         public static string Run(string json)
         {
-            throw new UsageError("aim is not available yet: the library's aim solvers are not in this build");
+            var requests = Read(json);
+            var solutions = new List<(AimRequest Request, AimSolution Solution)>();
+            foreach (AimRequest request in requests)
+            {
+                AimSolution solution;
+                try
+                {
+                    solution = request.Solve(request.Solver);
+                }
+                catch (ArgumentException e)
+                {
+                    // The solver checks geometry the reader cannot (a target straight above the launch, a horizontal plane).
+                    throw new InputError(request.Path + ".find", FirstSentence(e.Message));
+                }
+
+                solutions.Add((request, solution));
+            }
+
+            return Write(solutions);
+        }
+
+        private static List<AimRequest> Read(string json)
+        {
+            using JsonDocument document = JsonInput.Parse(json);
+            JsonFields root = JsonFields.Of(document.RootElement, string.Empty);
+            JsonElement list = root.Required("aims");
+            root.RejectUnknown();
+            if (list.ValueKind != JsonValueKind.Array || list.GetArrayLength() == 0)
+            {
+                throw new InputError("aims", "must be a non-empty array of aim objects; got " + JsonFields.Describe(list));
+            }
+
+            var requests = new List<AimRequest>();
+            int index = 0;
+            foreach (JsonElement item in list.EnumerateArray())
+            {
+                requests.Add(ReadAim(JsonFields.Of(item, $"aims[{index}]"), index));
+                index++;
+            }
+
+            return requests;
+        }
+
+        private static AimRequest ReadAim(JsonFields a, int index)
+        {
+            string name = a.String("name", $"aim-{index}");
+            FlightSetup setup = ScenarioReader.ReadSetup(a);
+            if (setup.Model.Up.LengthSquared == 0)
+            {
+                throw new InputError(a.PathOf("gravity"), "must not be zero for aiming (elevation is measured from the horizontal, up = -gravity)");
+            }
+
+            if (setup.Ground is not NamedPlane ground)
+            {
+                throw new InputError(a.PathOf("ground"), "must not be null for aiming (a trial that lands before its plane falls short)");
+            }
+
+            JsonFields launch = a.Object("launch");
+            Vector3d position = launch.Vector("position");
+            LaunchSpin spin = LaunchSpin.None;
+            JsonFields? spinFields = launch.OptionalObject("spin");
+            if (spinFields != null)
+            {
+                spin = new LaunchSpin(spinFields.Number("topspin", 0), spinFields.Number("sidespin", 0), spinFields.Number("gyro", 0));
+                spinFields.RejectUnknown();
+            }
+
+            launch.RejectUnknown();
+
+            JsonFields? limits = a.OptionalObject("limits");
+            double minElevation = -45, maxElevation = 80, scan = 0.5, maxSpeed = 100;
+            if (limits != null)
+            {
+                minElevation = InRange(limits, "minimumElevationDegrees", -45, -89, 89);
+                maxElevation = InRange(limits, "maximumElevationDegrees", 80, -89, 89);
+                if (!(maxElevation > minElevation))
+                {
+                    throw new InputError(limits.PathOf("maximumElevationDegrees"),
+                        $"must be above minimumElevationDegrees ({JsonFields.Format(minElevation)}); got {JsonFields.Format(maxElevation)}");
+                }
+
+                scan = InRange(limits, "elevationScanDegrees", 0.5, 1e-6, 10);
+                maxSpeed = limits.Positive("maximumSpeed", 100);
+                limits.RejectUnknown();
+            }
+
+            var solver = new AimSolver(
+                setup.Model, setup.Integrator, setup.Step, new Plane(ground.Point, ground.Normal), setup.MaxTime, minElevation, maxElevation, scan, maxSpeed);
+
+            JsonFields find = a.Object("find");
+            string kind = find.String("kind");
+            Func<AimSolver, AimSolution> solve;
+            switch (kind)
+            {
+                case "minimum-elevation-to-clear":
+                {
+                    double speed = find.Positive("speed");
+                    double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
+                    JsonFields planeFields = find.Object("plane");
+                    var p = new Plane(planeFields.Vector("point"), planeFields.Direction("normal"));
+                    planeFields.RejectUnknown();
+                    double height = find.Number("height");
+                    solve = s => s.MinimumElevationToClear(position, speed, azimuth, spin, p, height);
+                    break;
+                }
+
+                case "elevation-to-reach":
+                {
+                    double speed = find.Positive("speed");
+                    Vector3d target = find.Vector("target");
+                    double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
+                    solve = s => s.ElevationToReach(position, speed, spin, target, azimuth);
+                    break;
+                }
+
+                case "angles-to-reach":
+                {
+                    double speed = find.Positive("speed");
+                    Vector3d target = find.Vector("target");
+                    double maxAzimuth = InRange(find, "maximumAzimuthDegrees", 45, 1e-9, 89);
+                    solve = s => s.AnglesToReach(position, speed, spin, target, maxAzimuth);
+                    break;
+                }
+
+                case "speed-to-reach":
+                {
+                    double elevation = InRange(find, "elevationDegrees", double.NaN, -89.999, 89.999) * DegreesToRadians;
+                    double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
+                    Vector3d target = find.Vector("target");
+                    solve = s => s.SpeedToReach(position, elevation, azimuth, spin, target);
+                    break;
+                }
+
+                default:
+                    throw new InputError(find.PathOf("kind"), $"unknown kind '{kind}'; expected one of: {string.Join(", ", Kinds)}");
+            }
+
+            find.RejectUnknown();
+            a.RejectUnknown();
+            return new AimRequest(name, a.Path, solver, position, spin, solve);
+        }
+
+        // A number in [min, max]; NaN as the fallback makes the field required.
+        private static double InRange(JsonFields fields, string name, double fallback, double min, double max)
+        {
+            double value = double.IsNaN(fallback) ? fields.Number(name) : fields.Number(name, fallback);
+            if (value < min || value > max)
+            {
+                throw new InputError(fields.PathOf(name), $"must be in [{JsonFields.Format(min)}, {JsonFields.Format(max)}]; got {JsonFields.Format(value)}");
+            }
+
+            return value;
+        }
+
+        private static string Write(List<(AimRequest Request, AimSolution Solution)> solutions)
+        {
+            return JsonOutput.Write(w =>
+            {
+                w.WriteStartObject();
+                w.WriteStartArray("results");
+                foreach ((AimRequest request, AimSolution s) in solutions)
+                {
+                    w.WriteStartObject();
+                    w.WriteString("name", request.Name);
+                    w.WriteString("status", s.IsSolved ? "solved" : "unreachable");
+                    if (s.IsSolved)
+                    {
+                        w.WriteNumber("speed", s.Speed);
+                        w.WriteNumber("elevationDegrees", s.ElevationDegrees);
+                        w.WriteNumber("azimuthDegrees", s.AzimuthDegrees);
+                        WriteVector(w, "velocity", s.Velocity);
+                        WriteVector(w, "angularVelocity", s.AngularVelocity);
+                        w.WriteStartObject("arrival");
+                        w.WriteNumber("time", s.Arrival.Time);
+                        WriteVector(w, "position", s.Arrival.Position);
+                        WriteVector(w, "velocity", s.Arrival.Velocity);
+                        w.WriteEndObject();
+                        w.WriteNumber("miss", s.Miss);
+                    }
+
+                    w.WriteNumber("simulations", s.Simulations);
+                    w.WriteEndObject();
+                }
+
+                w.WriteEndArray();
+                w.WriteEndObject();
+            });
+        }
+
+        private static void WriteVector(Utf8JsonWriter w, string name, Vector3d v)
+        {
+            w.WriteStartArray(name);
+            w.WriteNumberValue(v.X);
+            w.WriteNumberValue(v.Y);
+            w.WriteNumberValue(v.Z);
+            w.WriteEndArray();
+        }
+
+        private static string FirstSentence(string message)
+        {
+            int cut = message.IndexOf(" (Parameter '", StringComparison.Ordinal);
+            return (cut > 0 ? message.Substring(0, cut) : message).TrimEnd('.');
         }
     }
 }

@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
+using MagnusBall.Queries;
 
 namespace MagnusBall.Cli
 {
@@ -52,7 +54,7 @@ namespace MagnusBall.Cli
             }
 
             StepPoint a = points[lo], b = points[hi];
-            return StepEvents.Interpolate(a.State, a.Derivative, b.State, b.Derivative, time);
+            return new HermiteSegment(a.State, a.Derivative, b.State, b.Derivative).StateAt(time);
         }
     }
 
@@ -65,80 +67,65 @@ namespace MagnusBall.Cli
     {
         public static FlightResult Simulate(Scenario scenario, bool recordSteps)
         {
-            var model = scenario.Model;
-            var integrator = scenario.Integrator;
-            Vector3d up = model.Up;
+            FlightModel model = scenario.Model;
             double endTime = scenario.Initial.Time + scenario.MaxTime;
 
-            FlightState state = scenario.Initial;
-            StateDerivative derivative = model.Derivative(state);
-            long evaluations = 1;
-            int steps = 0;
-            var points = recordSteps ? new List<StepPoint> { new StepPoint(state, derivative) } : null;
+            // The library's shared stepping loop: each step's end derivative is the next step's start, the cubic
+            // Hermite of the step costs nothing more, and the events are located on it to 1e-12 s.
+            Plane? ground = scenario.Ground is NamedPlane g ? new Plane(g.Point, g.Normal) : null;
+            var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
+            var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
+            stepper.Reset(scenario.Initial);
+
+            var points = recordSteps ? new List<StepPoint> { new StepPoint(stepper.State, stepper.Derivative) } : null;
             var crossings = new List<Crossing>();
             FlightState? apex = null;
             FlightState? landing = null;
 
-            while (state.Time < endTime && landing is null)
+            while (stepper.State.Time < endTime && landing is null)
             {
                 // Fixed steps; the last one is shortened to end exactly at maxTime.
-                double h = Math.Min(scenario.Step, endTime - state.Time);
+                double h = Math.Min(scenario.Step, endTime - stepper.State.Time);
                 if (!(h > 1e-9 * scenario.Step))
                 {
                     break;
                 }
 
-                FlightState next = integrator.Step(model, state, derivative, h);
-                if (!next.IsFinite)
+                double before = stepper.State.Time;
+                // TryStep refuses a step that blows up (the state is kept), so the error can name the step.
+                if (!stepper.TryStep(h) || !stepper.State.IsFinite)
                 {
                     throw new InputError(
-                        PathOfStep(scenario),
-                        $"the flight diverged (non-finite state after t = {JsonFields.Format(state.Time)} s with {integrator.Name}); use a smaller step");
+                        $"scenarios[{scenario.Index}].step",
+                        $"the flight diverged (non-finite state after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step");
                 }
 
-                StateDerivative nextDerivative = model.Derivative(next);
-                evaluations += integrator.DerivativeEvaluationsPerStep;
-                steps++;
-
-                double stepEnd = next.Time;
-                if (scenario.Ground is NamedPlane ground &&
-                    StepEvents.TryPlaneCrossing(state, derivative, next, nextDerivative, ground.Point, ground.Normal, along: false, out FlightState touch))
+                // Events come in time order; nothing after the landing counts (the library's one rule for it).
+                ReadOnlySpan<FlightEvent> events = stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent touchdown);
+                if (landed)
                 {
-                    landing = touch;
-                    stepEnd = touch.Time;
+                    landing = touchdown.State;
                 }
 
-                if (apex is null && up.LengthSquared > 0 &&
-                    StepEvents.TryApex(state, derivative, next, nextDerivative, up, out FlightState top) && top.Time <= stepEnd)
+                foreach (FlightEvent e in events)
                 {
-                    apex = top;
-                }
-
-                int firstNew = crossings.Count;
-                foreach (NamedPlane plane in scenario.Planes)
-                {
-                    if (StepEvents.TryPlaneCrossing(state, derivative, next, nextDerivative, plane.Point, plane.Normal, along: true, out FlightState at) &&
-                        at.Time <= stepEnd)
+                    if (e.Kind == FlightEventKinds.Apex && apex is null)
                     {
-                        crossings.Add(new Crossing(plane.Name, at, plane.Bounds?.Contains(at.Position, plane.Point)));
+                        apex = e.State;
+                    }
+                    else if (e.Kind == FlightEventKinds.PlaneCrossing)
+                    {
+                        NamedPlane plane = scenario.Planes[e.PlaneIndex];
+                        crossings.Add(new Crossing(plane.Name, e.State, plane.Bounds?.Contains(e.Position, plane.Point)));
                     }
                 }
 
-                if (crossings.Count - firstNew > 1)
-                {
-                    crossings.Sort(firstNew, crossings.Count - firstNew, Comparer<Crossing>.Create((a, b) => a.State.Time.CompareTo(b.State.Time)));
-                }
-
-                state = next;
-                derivative = nextDerivative;
-                points?.Add(new StepPoint(state, derivative));
+                points?.Add(new StepPoint(stepper.State, stepper.Derivative));
             }
 
             // The last step point may lie past the landing: it stays for the interpolant, but the flight ends at the landing.
-            FlightState end = landing ?? state;
-            return new FlightResult(scenario, landing, apex, crossings, steps, evaluations, end, points);
+            FlightState end = landing ?? stepper.State;
+            return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, end, points);
         }
-
-        private static string PathOfStep(Scenario scenario) => $"scenarios[{scenario.Index}].step";
     }
 }

@@ -10,20 +10,13 @@ namespace MagnusBall.Cli
     /// <summary>Writes flight results as the JSON and CSV formats of docs/cli.md.</summary>
     internal static class ResultWriter
     {
-        private static readonly JsonWriterOptions WriterOptions = new JsonWriterOptions
-        {
-            Indented = true,
-            Encoder = JavaScriptEncoder.UnsafeRelaxedJsonEscaping,
-        };
-
         /// <summary>
         /// {"results": [{"name", "landing", "apex", "crossings", "steps", "derivativeEvaluations"}]}, plus
         /// "samples" when <paramref name="samples"/> is given.
         /// </summary>
         public static string Json(IReadOnlyList<FlightResult> results, int? samples)
         {
-            using var buffer = new MemoryStream();
-            using (var w = new Utf8JsonWriter(buffer, WriterOptions))
+            return JsonOutput.Write(w =>
             {
                 w.WriteStartObject();
                 w.WriteStartArray("results");
@@ -94,9 +87,7 @@ namespace MagnusBall.Cli
 
                 w.WriteEndArray();
                 w.WriteEndObject();
-            }
-
-            return Encoding.UTF8.GetString(buffer.ToArray()) + "\n";
+            });
         }
 
         /// <summary>

@@ -15,6 +15,9 @@ namespace MagnusBall.Cli
         IReadOnlyList<NamedPlane> Planes,
         double MaxTime);
 
+    /// <summary>The flight parts a scenario and an aim share: the model, how to step it, the ground, the time limit.</summary>
+    internal sealed record FlightSetup(FlightModel Model, IIntegrator Integrator, double Step, NamedPlane? Ground, double MaxTime);
+
     /// <summary>
     /// A named plane through <paramref name="Point"/> with unit normal <paramref name="Normal"/>, and an
     /// optional rectangle on it (<paramref name="Bounds"/>) such as a net or a goal mouth.

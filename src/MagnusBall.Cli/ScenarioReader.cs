@@ -4,6 +4,7 @@ using System.Linq;
 using System.Text.Json;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
+using MagnusBall.Presets;
 
 namespace MagnusBall.Cli
 {
@@ -62,47 +63,7 @@ namespace MagnusBall.Cli
         private static Scenario ReadScenario(JsonFields s, int index)
         {
             string name = s.String("name", $"scenario-{index}");
-
-            JsonFields ballFields = s.Object("ball");
-            double mass = ballFields.Positive("mass");
-            double radius = ballFields.Positive("radius");
-            double inertia = ballFields.Positive("inertiaFactor", Ball.SolidSphereInertiaFactor);
-            if (inertia > 1)
-            {
-                throw new InputError(ballFields.PathOf("inertiaFactor"), "must be in (0, 1]; got " + JsonFields.Format(inertia));
-            }
-
-            ballFields.RejectUnknown();
-            var ball = new Ball(mass, radius, inertia);
-
-            Air air;
-            JsonFields? airFields = s.OptionalObject("air");
-            if (airFields is null)
-            {
-                air = new Air(DefaultDensity);
-            }
-            else
-            {
-                double density = airFields.NonNegative("density", DefaultDensity);
-                Vector3d wind = airFields.Vector("wind", Vector3d.Zero);
-                double viscosity = airFields.Positive("dynamicViscosity", Air.SeaLevelDynamicViscosity);
-                airFields.RejectUnknown();
-                air = new Air(density, wind, viscosity);
-            }
-
-            Vector3d gravity = s.Vector("gravity", DefaultGravity);
-
-            IDragModel? drag = null;
-            ILiftModel? lift = null;
-            JsonFields? aero = s.OptionalObject("aero");
-            if (aero != null)
-            {
-                drag = ReadDrag(aero.OptionalObject("drag"));
-                lift = ReadLift(aero.OptionalObject("lift"));
-                aero.RejectUnknown();
-            }
-
-            ISpinDecayModel? spinDecay = ReadSpinDecay(s.OptionalObject("spinDecay"));
+            FlightSetup setup = ReadSetup(s);
 
             JsonFields initialFields = s.Object("initial");
             var initial = new FlightState(
@@ -111,6 +72,64 @@ namespace MagnusBall.Cli
                 initialFields.Vector("angularVelocity", Vector3d.Zero),
                 initialFields.Number("time", 0));
             initialFields.RejectUnknown();
+
+            var planes = new List<NamedPlane>();
+            JsonElement? planeList = s.Optional("planes");
+            if (planeList.HasValue)
+            {
+                if (planeList.Value.ValueKind != JsonValueKind.Array)
+                {
+                    throw new InputError(s.PathOf("planes"), "must be an array of plane objects; got " + JsonFields.Describe(planeList.Value));
+                }
+
+                int i = 0;
+                foreach (JsonElement item in planeList.Value.EnumerateArray())
+                {
+                    JsonFields planeFields = JsonFields.Of(item, $"{s.PathOf("planes")}[{i}]");
+                    planes.Add(ReadPlane(planeFields, planeFields.String("name"), setup.Model.Up, allowName: true));
+                    i++;
+                }
+            }
+
+            s.RejectUnknown();
+            return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime);
+        }
+
+        /// <summary>
+        /// Reads the fields a scenario and an aim share: ball, air, gravity, aero, spinDecay, integrator, step,
+        /// maxTime and ground. The caller reads its own fields and then calls <see cref="JsonFields.RejectUnknown"/>.
+        /// </summary>
+        internal static FlightSetup ReadSetup(JsonFields s)
+        {
+            // "preset" (issue 7) supplies the ball, aero and spin decay; explicit fields override each part.
+            SportPreset? preset = PresetAndAirFields.ReadPreset(s);
+            Ball ball = PresetAndAirFields.ReadBall(s, preset);
+            Air air = PresetAndAirFields.ReadAir(s, DefaultDensity);
+
+            Vector3d gravity = s.Vector("gravity", DefaultGravity);
+
+            IDragModel? drag = preset?.Drag;
+            ILiftModel? lift = preset?.Lift;
+            JsonFields? aero = s.OptionalObject("aero");
+            if (aero != null)
+            {
+                // Without a preset an absent law is off, as before; with one, only a given law replaces it.
+                if (preset is null || aero.Has("drag"))
+                {
+                    drag = ReadDrag(aero.OptionalObject("drag"));
+                }
+
+                if (preset is null || aero.Has("lift"))
+                {
+                    lift = ReadLift(aero.OptionalObject("lift"));
+                }
+
+                aero.RejectUnknown();
+            }
+
+            ISpinDecayModel? spinDecay = preset != null && !s.Has("spinDecay")
+                ? preset.SpinDecay
+                : ReadSpinDecay(s.OptionalObject("spinDecay"));
 
             IIntegrator integrator = ReadIntegrator(s);
             double step = s.Positive("step", DefaultStep);
@@ -142,31 +161,26 @@ namespace MagnusBall.Cli
                 }
             }
 
-            var planes = new List<NamedPlane>();
-            JsonElement? planeList = s.Optional("planes");
-            if (planeList.HasValue)
-            {
-                if (planeList.Value.ValueKind != JsonValueKind.Array)
-                {
-                    throw new InputError(s.PathOf("planes"), "must be an array of plane objects; got " + JsonFields.Describe(planeList.Value));
-                }
-
-                int i = 0;
-                foreach (JsonElement item in planeList.Value.EnumerateArray())
-                {
-                    JsonFields planeFields = JsonFields.Of(item, $"{s.PathOf("planes")}[{i}]");
-                    planes.Add(ReadPlane(planeFields, planeFields.String("name"), up, allowName: true));
-                    i++;
-                }
-            }
-
-            s.RejectUnknown();
-            return new Scenario(index, name, model, initial, integrator, step, ground, planes, maxTime);
+            return new FlightSetup(model, integrator, step, ground, maxTime);
         }
+
+        /// <summary>
+        /// The integrator names a scenario accepts: every name <see cref="Integrators.FromName"/> knows, plus the
+        /// library's Dormand-Prince 5(4) pair used as a fixed-step fifth-order method ("dp54"; not in
+        /// <see cref="Integrators.All"/> because it is also adaptive).
+        /// </summary>
+        public static IReadOnlyList<string> IntegratorNames =>
+            Integrators.Names.Concat(new[] { DormandPrince54.Instance.Name }).Distinct(StringComparer.OrdinalIgnoreCase).ToArray();
 
         private static IIntegrator ReadIntegrator(JsonFields s)
         {
             string name = s.String("integrator", DefaultIntegrator);
+            if (string.Equals(name, DormandPrince54.Instance.Name, StringComparison.OrdinalIgnoreCase) &&
+                !Integrators.Names.Contains(name, StringComparer.OrdinalIgnoreCase))
+            {
+                return DormandPrince54.Instance;
+            }
+
             try
             {
                 return Integrators.FromName(name);
@@ -174,7 +188,7 @@ namespace MagnusBall.Cli
             catch (ArgumentException)
             {
                 throw new InputError(s.PathOf("integrator"),
-                    $"unknown integrator '{name}'; expected one of: {string.Join(", ", Integrators.Names)}");
+                    $"unknown integrator '{name}'; expected one of: {string.Join(", ", IntegratorNames)}");
             }
         }
 
@@ -199,10 +213,13 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            IDragModel? drag = ReadModelName(fields, "none", "constant", "stepanek") switch
+            IDragModel? drag = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin", "goff-carre", "nathan") switch
             {
                 "constant" => new ConstantDrag(fields.NonNegativeRequired("cd")),
                 "stepanek" => StepanekDrag.Instance,
+                "linear-spin" => new LinearSpinDrag(fields.NonNegativeRequired("cd0"), fields.NonNegativeRequired("k")),
+                "goff-carre" => GoffCarreSoccerDrag.Instance,
+                "nathan" => NathanBaseballDrag.Instance,
                 _ => null,
             };
             fields.RejectUnknown();
@@ -216,11 +233,15 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            ILiftModel? lift = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin") switch
+            ILiftModel? lift = ReadModelName(fields, "none", "constant", "stepanek", "linear-spin", "goff-carre", "nathan", "smits-smith-golf", "table") switch
             {
+                "smits-smith-golf" => PiecewiseLinearLift.GolfSmitsSmith,
+                "table" => PresetAndAirFields.ReadLiftTable(fields),
                 "constant" => new ConstantLift(fields.Number("cl")),
                 "stepanek" => StepanekLift.Instance,
                 "linear-spin" => new LinearSpinLift(fields.Number("k")),
+                "goff-carre" => PiecewiseLinearLift.SoccerGoffCarre,
+                "nathan" => NathanBaseballLift.Instance,
                 _ => null,
             };
             fields.RejectUnknown();
@@ -234,16 +255,17 @@ namespace MagnusBall.Cli
                 return null;
             }
 
-            ISpinDecayModel? decay = ReadModelName(fields, "none", "exponential") switch
+            ISpinDecayModel? decay = ReadModelName(fields, "none", "exponential", "speed-proportional") switch
             {
                 "exponential" => new ExponentialSpinDecay(fields.Positive("tau")),
+                "speed-proportional" => new SpeedProportionalSpinDecay(fields.NonNegativeRequired("k")),
                 _ => null,
             };
             fields.RejectUnknown();
             return decay;
         }
 
-        private static NamedPlane ReadPlane(JsonFields fields, string name, Vector3d up, bool allowName)
+        internal static NamedPlane ReadPlane(JsonFields fields, string name, Vector3d up, bool allowName)
         {
             if (allowName && name.Length == 0)
             {

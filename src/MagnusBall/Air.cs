@@ -120,7 +120,7 @@ namespace MagnusBall
         /// <summary>
         /// Air at an altitude: the ISA standard-atmosphere pressure there (ISO 2533), at the ISA temperature
         /// or at a given temperature, with optional humidity. Denver (1609 m): 1.047 kg/m^3 at the ISA's
-        /// 4.5 degC (14.5 % below sea level's 1.225); at sea level's 15 degC, 1.009 kg/m^3 (17.6 % below).
+        /// 4.5 degC (14.6 % below sea level's 1.225); at sea level's 15 degC, 1.009 kg/m^3 (17.7 % below).
         /// </summary>
         /// <param name="altitudeMetres">Altitude above mean sea level, m; in [-1000, 20000].</param>
         /// <param name="temperatureCelsius">Temperature, degC, in [-90, 60]; null for the ISA temperature at that altitude.</param>

@@ -113,7 +113,7 @@ namespace MagnusBall
 
         /// <summary>
         /// ISA pressure at an altitude, Pa: 101325 (T/288.15)^5.2559 in the troposphere, exponential above
-        /// 11 km. 1609 m (Denver): 83,467 Pa.
+        /// 11 km. 1609 m (Denver): 83,431 Pa.
         /// </summary>
         /// <param name="altitudeMetres">Geopotential altitude above mean sea level, m; in [-1000, 20000].</param>
         /// <exception cref="ArgumentOutOfRangeException">The altitude is out of range.</exception>

@@ -67,12 +67,27 @@ namespace MagnusBall
         public bool IsFinite => IsFiniteNumber(X) && IsFiniteNumber(Y) && IsFiniteNumber(Z);
 
         /// <summary>
-        /// The unit vector in this direction, or <see cref="Zero"/> for the zero vector (never NaN).
+        /// The unit vector in this direction, or <see cref="Zero"/> for the zero vector or a vector with a
+        /// non-finite component (never NaN). Finite vectors too long for their squared length to fit in a
+        /// double (components above about 1.3e154) are scaled down first, so they still give a unit vector.
         /// </summary>
         public Vector3d NormalizedOrZero()
         {
             double length = Length;
-            return length > 0 ? this / length : Zero;
+            if (length > 0 && length <= double.MaxValue)
+            {
+                return this / length;
+            }
+
+            if (!(length > 0) || !IsFinite)
+            {
+                return Zero;
+            }
+
+            // |v|^2 overflowed although every component is finite: divide by the largest component first.
+            double largest = Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)));
+            var scaled = new Vector3d(X / largest, Y / largest, Z / largest);
+            return scaled / scaled.Length;
         }
 
         /// <summary>The dot product <paramref name="a"/> . <paramref name="b"/>.</summary>

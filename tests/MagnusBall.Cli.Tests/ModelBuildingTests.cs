@@ -35,11 +35,31 @@ namespace MagnusBall.Cli.Tests
         }
 
         [Test]
+        public void PublishedLawsOfOtherSports()
+        {
+            Assert.That(Read(s => s["aero"]!["drag"] = JsonNode.Parse("{\"model\": \"goff-carre\"}")).Model.Drag, Is.SameAs(GoffCarreSoccerDrag.Instance));
+            Assert.That(Read(s => s["aero"]!["lift"] = JsonNode.Parse("{\"model\": \"goff-carre\"}")).Model.Lift, Is.SameAs(PiecewiseLinearLift.SoccerGoffCarre));
+            Assert.That(Read(s => s["aero"]!["drag"] = JsonNode.Parse("{\"model\": \"nathan\"}")).Model.Drag, Is.SameAs(NathanBaseballDrag.Instance));
+            Assert.That(Read(s => s["aero"]!["lift"] = JsonNode.Parse("{\"model\": \"Nathan\"}")).Model.Lift, Is.SameAs(NathanBaseballLift.Instance), "model names ignore case");
+            var drag = (LinearSpinDrag)Read(s => s["aero"]!["drag"] = JsonNode.Parse("{\"model\": \"linear-spin\", \"cd0\": 0.24, \"k\": 0.18}")).Model.Drag!;
+            Assert.That(drag.DragCoefficient(new AeroConditions(10, 0, 0, 0.02, 1.2, 1.8e-5)), Is.EqualTo(0.24));
+        }
+
+        [Test]
+        public void Integrators_IncludeTheDormandPrincePair()
+        {
+            Assert.That(Read(s => s["integrator"] = "dp54").Integrator, Is.SameAs(MagnusBall.Integration.DormandPrince54.Instance));
+            Assert.That(Read(s => s["integrator"] = "heun").Integrator, Is.SameAs(MagnusBall.Integration.Heun.Instance));
+        }
+
+        [Test]
         public void SpinDecayModels()
         {
             Assert.That(Read(s => { }).Model.SpinDecay, Is.Null);
             var decay = (ExponentialSpinDecay)Read(s => s["spinDecay"] = JsonNode.Parse("{\"model\": \"exponential\", \"tau\": 2.5}")).Model.SpinDecay!;
             Assert.That(decay.TimeConstant, Is.EqualTo(2.5));
+            var perMetre = (SpeedProportionalSpinDecay)Read(s => s["spinDecay"] = JsonNode.Parse("{\"model\": \"speed-proportional\", \"k\": 0.003}")).Model.SpinDecay!;
+            Assert.That(perMetre.SpinAcceleration(new Vector3d(0, 100, 0), new AeroConditions(20, 100, 100, 0.033, 1.2, 1.8e-5)).Y, Is.EqualTo(-0.003 * 20 * 100).Within(1e-12));
         }
 
         [Test]

@@ -43,6 +43,23 @@ namespace MagnusBall.Cli.Tests
         }
 
         [Test]
+        public void LaunchedLevelFromTheGround_LandsAtOnce()
+        {
+            // The ball's centre starts exactly on the ground plane moving level: gravity takes it into the ground
+            // at once, so it lands at t = 0 (before: "landing": null and a flight under the ground to maxTime).
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 0, 0);
+            S(root)["initial"]!["velocity"] = new JsonArray(5, 0, 0);
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement r = run.FirstResult();
+            Assert.That(r.GetProperty("landing").ValueKind, Is.EqualTo(JsonValueKind.Object));
+            Assert.That(r.GetProperty("landing").GetProperty("time").GetDouble(), Is.EqualTo(0));
+            Assert.That(Vec(r.GetProperty("landing").GetProperty("position")), Is.EqualTo(new double[] { 0, 0, 0 }));
+            Assert.That(r.GetProperty("steps").GetInt32(), Is.EqualTo(1));
+        }
+
+        [Test]
         public void Output_HasTheContractShape_AndEventsLieOnTheirSurfaces()
         {
             CliRun run = CliRun.Simulate(CliRun.DriveJson);
@@ -290,6 +307,17 @@ namespace MagnusBall.Cli.Tests
 
             Assert.That(Vec(samples[10].GetProperty("position")), Is.EqualTo(Vec(r.GetProperty("landing").GetProperty("position"))));
             Assert.That(Vec(samples[0].GetProperty("position")), Is.EqualTo(new[] { 0.0, 0.0, 1.0 }));
+        }
+
+        [Test]
+        public void Json_IsValid_AndKeepsNamesExactly()
+        {
+            JsonObject root = CliRun.Drive();
+            S(root)["name"] = "drive \"flat\" \\ \u00e9\u00e8 \n <&>";
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.FirstResult().GetProperty("name").GetString(), Is.EqualTo("drive \"flat\" \\ \u00e9\u00e8 \n <&>"));
+            Assert.That(run.Stdout, Does.Contain("\"position\": [0, 0, 1]").Or.Contain("\"position\": [11.885, 0,"), "vectors on one line");
+            Assert.That(run.Stdout, Does.EndWith("}\n"));
         }
 
         [Test]

@@ -31,8 +31,9 @@ shot options (court frame: x from the net toward the far baseline, y up, z to th
   --x M               hitting position along the court (< 0: the near side; the near baseline is -11.885)
   --z M               hitting position across the court
   --target AREA       court | deuce | ad  (what counts as in)
+  --aim X,Z           solve elevation and azimuth (AimSolver) so the ball first touches the court at (X, Z)
 scene options:
-  --integrator NAME   euler | semi-implicit-euler | heun | rk4 (default rk4)
+  --integrator NAME   euler | semi-implicit-euler | heun | rk4 | stable-rk4 (default rk4)
   --step S            fixed step (default 1/240)
   --density RHO       air density, kg/m^3 (default 1.21)
   --thesis-coefficients  constant C_D 0.55 and C_M 0.175 (Agrawal 2023) instead of Stepanek's
@@ -142,6 +143,7 @@ exit codes: 0 ok, 2 bad options";
                     case "--x":
                     case "--z":
                     case "--target":
+                    case "--aim":
                     case "--integrator":
                     case "--step":
                     case "--density":
@@ -193,7 +195,7 @@ exit codes: 0 ok, 2 bad options";
             }
 
             bool custom = false;
-            foreach (string key in new[] { "--shot", "--speed", "--elevation", "--azimuth", "--topspin", "--sidespin", "--height", "--x", "--z", "--target" })
+            foreach (string key in new[] { "--shot", "--speed", "--elevation", "--azimuth", "--topspin", "--sidespin", "--height", "--x", "--z", "--target", "--aim" })
             {
                 custom |= values.ContainsKey(key);
             }
@@ -225,7 +227,28 @@ exit codes: 0 ok, 2 bad options";
             }
 
             string label = values.ContainsKey("--shot") && values.Count == 1 ? basis.Name : "custom shot";
-            options.Shots.Add(new TennisShot(label, new Vector3d(x, height, z), speed, elevation, azimuth, topspin, sidespin, target));
+            var shot = new TennisShot(label, new Vector3d(x, height, z), speed, elevation, azimuth, topspin, sidespin, target);
+            if (values.TryGetValue("--aim", out string? aim))
+            {
+                string[] parts = aim.Split(',');
+                if (parts.Length != 2 ||
+                    !double.TryParse(parts[0], NumberStyles.Float, CultureInfo.InvariantCulture, out double aimX) || !double.IsFinite(aimX) ||
+                    !double.TryParse(parts[1], NumberStyles.Float, CultureInfo.InvariantCulture, out double aimZ) || !double.IsFinite(aimZ))
+                {
+                    throw new ArgumentException($"--aim must be two finite numbers X,Z (metres, e.g. 9.5,-2); got \"{aim}\".");
+                }
+
+                if (values.ContainsKey("--elevation") || values.ContainsKey("--azimuth"))
+                {
+                    throw new ArgumentException("--aim solves the elevation and azimuth: give neither --elevation nor --azimuth with it.");
+                }
+
+                shot = new ShotSimulation(options.Settings).Aim(shot, aimX, aimZ)
+                    ?? throw new ArgumentException(string.Format(
+                        CultureInfo.InvariantCulture, "--aim: ({0}, {1}) cannot be reached at {2} m/s with this spin from ({3}, {4}).", aimX, aimZ, speed, x, z));
+            }
+
+            options.Shots.Add(shot);
             return options;
         }
 

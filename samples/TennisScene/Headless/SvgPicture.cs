@@ -11,9 +11,9 @@ namespace MagnusBall.Samples.TennisScene.Headless
     /// </summary>
     internal static class SvgPicture
     {
-        private const double Scale = 34;          // px per metre
-        private const double XMin = -14.5, XMax = 14.5;
-        private const double SideYMax = 7.5, SideYMin = -0.3;
+        private const double Scale = 30;          // px per metre
+        private const double XMin = -14.5, XMax = 24.5;
+        private const double SideYMax = 6.5, SideYMin = -0.3;
         private const double TopZMax = 7.2;
         private const double Margin = 40;
 
@@ -33,7 +33,11 @@ namespace MagnusBall.Samples.TennisScene.Headless
             svg.AppendLine(F("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:F0}\" height=\"{1:F0}\" viewBox=\"0 0 {0:F0} {1:F0}\" font-family=\"sans-serif\" font-size=\"13\">", width, height));
             svg.AppendLine(F("<rect width=\"{0:F0}\" height=\"{1:F0}\" fill=\"white\"/>", width, height));
             svg.AppendLine(F("<text x=\"{0:F0}\" y=\"22\" font-size=\"16\" font-weight=\"bold\">MagnusBall tennis scene: side view (x, y) and top view (x, z), same scale, metres</text>", Margin));
-            svg.AppendLine(F("<text x=\"{0:F0}\" y=\"40\" fill=\"#555\">{1}</text>", Margin, Escape(subtitle)));
+            svg.AppendLine(F("<text x=\"{0:F0}\" y=\"40\" fill=\"#555\">{1}. Dot: first bounce (X: out); square: second bounce.</text>", Margin, Escape(subtitle)));
+
+            svg.AppendLine(F("<defs><clipPath id=\"side\"><rect x=\"{0:F1}\" y=\"{1:F1}\" width=\"{2:F1}\" height=\"{3:F1}\"/></clipPath>" +
+                "<clipPath id=\"top\"><rect x=\"{0:F1}\" y=\"{4:F1}\" width=\"{2:F1}\" height=\"{5:F1}\"/></clipPath></defs>",
+                Margin, sideTop, (XMax - XMin) * Scale, sideHeight, topTop, topHeight));
 
             // ----- Side view -----
             Func<double, double> sx = x => Margin + (x - XMin) * Scale;
@@ -63,8 +67,9 @@ namespace MagnusBall.Samples.TennisScene.Headless
             for (int i = 0; i < reports.Count; i++)
             {
                 string colour = Colours[i % Colours.Length];
-                svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => sy(p.Y), colour));
-                Marker(svg, reports[i], sx(reports[i].Landing.X), sy(0), colour);
+                svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => sy(p.Y), colour, "side"));
+                Vector3d? second = reports[i].SecondBounce;
+                Marker(svg, reports[i], sx(reports[i].Landing.X), sy(0), colour, second.HasValue ? sx(second.Value.X) : (double?)null, sy(0));
             }
 
             // ----- Top view -----
@@ -85,8 +90,10 @@ namespace MagnusBall.Samples.TennisScene.Headless
             for (int i = 0; i < reports.Count; i++)
             {
                 string colour = Colours[i % Colours.Length];
-                svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => tz(p.Z), colour));
-                Marker(svg, reports[i], sx(reports[i].Landing.X), tz(reports[i].Landing.Z), colour);
+                svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => tz(p.Z), colour, "top"));
+                Vector3d? second = reports[i].SecondBounce;
+                Marker(svg, reports[i], sx(reports[i].Landing.X), tz(reports[i].Landing.Z), colour,
+                    second.HasValue ? sx(second.Value.X) : (double?)null, second.HasValue ? tz(second.Value.Z) : (double?)null);
             }
 
             // ----- Legend -----
@@ -96,9 +103,12 @@ namespace MagnusBall.Samples.TennisScene.Headless
                 double y = legendTop + 22 * i;
                 string colour = Colours[i % Colours.Length];
                 svg.AppendLine(F("<line x1=\"{0:F0}\" y1=\"{1:F1}\" x2=\"{2:F0}\" y2=\"{1:F1}\" stroke=\"{3}\" stroke-width=\"3\"/>", Margin, y - 4, Margin + 30, colour));
-                string landing = r.Landed ? F("lands ({0:F2}, {1:F2}) m, {2}", r.Landing.X, r.Landing.Z, r.IsIn ? "in" : "OUT") : "no landing";
+                string landing = r.Landed
+                    ? F("bounces at ({0:F2}, {1:F2}) m, {2}; leaves at {3:F1} m/s, {4:F1} deg", r.Landing.X, r.Landing.Z, r.IsIn ? "in" : r.ClearedNet ? "OUT" : "NET",
+                        r.SpeedAfterBounce, r.ReboundAngleDegrees)
+                    : "no landing";
                 string clearance = r.NetClearance.HasValue ? F("net +{0:F2} m", r.NetClearance.Value) : "no net";
-                svg.AppendLine(F("<text x=\"{0:F0}\" y=\"{1:F1}\">{2}: {3:F0} m/s, {4:F1} deg, top {5:F0} rpm, side {6:F0} rpm; {7}; {8}; apex {9:F2} m; {10:F2} s</text>",
+                svg.AppendLine(F("<text x=\"{0:F0}\" y=\"{1:F1}\">{2}: {3:F0} m/s at {4:F1} deg, topspin {5:F0} rpm, sidespin {6:F0} rpm; {7}; {8}</text>",
                     Margin + 40, y, Escape(r.Shot.Name), r.Shot.Speed, r.Shot.ElevationDegrees, r.Shot.TopspinRpm, r.Shot.SidespinRpm, clearance, landing, r.ApexHeight, r.TimeOfFlight));
             }
 
@@ -106,11 +116,16 @@ namespace MagnusBall.Samples.TennisScene.Headless
             return svg.ToString();
         }
 
-        private static void Marker(StringBuilder svg, ShotReport report, double x, double y, string colour)
+        private static void Marker(StringBuilder svg, ShotReport report, double x, double y, string colour, double? secondX = null, double? secondY = null)
         {
             if (!report.Landed)
             {
                 return;
+            }
+
+            if (report.SecondBounce.HasValue && secondX.HasValue && secondY.HasValue)
+            {
+                svg.AppendLine(F("<rect x=\"{0:F1}\" y=\"{1:F1}\" width=\"7\" height=\"7\" fill=\"none\" stroke=\"{2}\" stroke-width=\"1.5\"/>", secondX.Value - 3.5, secondY.Value - 3.5, colour));
             }
 
             if (report.IsIn)
@@ -123,10 +138,10 @@ namespace MagnusBall.Samples.TennisScene.Headless
             }
         }
 
-        private static string Polyline(Vector3d[] points, Func<Vector3d, double> x, Func<Vector3d, double> y, string colour)
+        private static string Polyline(Vector3d[] points, Func<Vector3d, double> x, Func<Vector3d, double> y, string colour, string clip)
         {
             var text = new StringBuilder();
-            text.Append("<polyline fill=\"none\" stroke=\"").Append(colour).Append("\" stroke-width=\"2\" points=\"");
+            text.Append("<polyline clip-path=\"url(#").Append(clip).Append(")\" fill=\"none\" stroke=\"").Append(colour).Append("\" stroke-width=\"2\" points=\"");
             for (int i = 0; i < points.Length; i++)
             {
                 // Every 4th fixed state and the last: ~60 points a second are plenty at this scale.

@@ -1,6 +1,7 @@
 #nullable enable
 using System;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Contact;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Samples.TennisScene
@@ -22,9 +23,13 @@ namespace MagnusBall.Samples.TennisScene
         /// </param>
         /// <param name="dragCoefficient">Constant C_D when not using Stepanek's (thesis: 0.55).</param>
         /// <param name="magnusCoefficient">Constant C_M (lift) when not using Stepanek's (thesis: 0.175).</param>
-        /// <param name="integrator">Integrator name: euler, semi-implicit-euler, heun, rk4 (see <see cref="Integrators.Names"/>).</param>
+        /// <param name="integrator">Integrator name: euler, semi-implicit-euler, heun, rk4 (see <see cref="Integrators.Names"/>) or stable-rk4.</param>
         /// <param name="fixedStep">Fixed step, s.</param>
-        /// <exception cref="ArgumentException">A value is out of range or the integrator is unknown.</exception>
+        /// <param name="surface">
+        /// The court: hard, clay or grass (the Cross bounce on <see cref="Surface"/>'s presets), or none (the
+        /// flight ends at the first landing).
+        /// </param>
+        /// <exception cref="ArgumentException">A value is out of range, or the integrator or surface is unknown.</exception>
         public SceneSettings(
             double massKg = 0.057,
             double radiusM = 0.033,
@@ -33,20 +38,27 @@ namespace MagnusBall.Samples.TennisScene
             double dragCoefficient = 0.55,
             double magnusCoefficient = 0.175,
             string integrator = "rk4",
-            double fixedStep = 1.0 / 240)
+            double fixedStep = 1.0 / 240,
+            string surface = "hard")
         {
             Ball = new Ball(massKg, radiusM, Ball.Tennis.InertiaFactor);
             Air = new Air(airDensity);
             UseStepanekCoefficients = useStepanekCoefficients;
             DragCoefficient = dragCoefficient;
             MagnusCoefficient = magnusCoefficient;
-            Integrator = Integrators.FromName(integrator);
+            // "stable-rk4": RK4 with the library's stability-safe substeps (worth it at a large fixed step, e.g.
+            // FixedUpdate's 0.02 s, with light fast balls); otherwise one of Integrators.Names.
+            Integrator = string.Equals(integrator, StableIntegrator.RungeKutta4.Name, StringComparison.OrdinalIgnoreCase)
+                ? StableIntegrator.RungeKutta4
+                : Integrators.FromName(integrator);
             if (!(fixedStep > 0) || double.IsInfinity(fixedStep))
             {
                 throw new ArgumentOutOfRangeException(nameof(fixedStep), fixedStep, $"fixedStep must be finite and > 0 s; got {fixedStep}.");
             }
 
             FixedStep = fixedStep;
+            SurfaceName = surface ?? throw new ArgumentNullException(nameof(surface));
+            Bounce = string.Equals(surface, "none", StringComparison.OrdinalIgnoreCase) ? null : new CrossBounce(Surface.FromName(surface));
             Model = new FlightModel(
                 Ball, Air, Gravity.Along(TennisCourt.Up),
                 useStepanekCoefficients ? (IDragModel)StepanekDrag.Instance : new ConstantDrag(dragCoefficient),
@@ -74,6 +86,12 @@ namespace MagnusBall.Samples.TennisScene
         /// <summary>The fixed step, s.</summary>
         public double FixedStep { get; }
 
+        /// <summary>The court surface's name (hard, clay, grass, or none).</summary>
+        public string SurfaceName { get; }
+
+        /// <summary>The bounce model (Cross's slide/grip bounce on the chosen surface), or null for none.</summary>
+        public IBounceModel? Bounce { get; }
+
         /// <summary>The flight model: gravity along -y (Unity's and the court's down), drag and Magnus lift.</summary>
         public FlightModel Model { get; }
 
@@ -81,9 +99,9 @@ namespace MagnusBall.Samples.TennisScene
         public string Describe() =>
             string.Format(
                 System.Globalization.CultureInfo.InvariantCulture,
-                "ball {0} kg, r {1} m; air {2} kg/m^3; {3}; {4} at {5:G4} s",
+                "ball {0} kg, r {1} m; air {2} kg/m^3; {3}; {4} at {5:G4} s; court: {6}",
                 Ball.Mass, Ball.Radius, Air.Density,
                 UseStepanekCoefficients ? "Stepanek C_D(S), C_L(S)" : $"C_D {DragCoefficient}, C_M {MagnusCoefficient}",
-                Integrator.Name, FixedStep);
+                Integrator.Name, FixedStep, Bounce == null ? "no bounce" : SurfaceName + " (Cross bounce)");
     }
 }

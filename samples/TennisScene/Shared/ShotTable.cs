@@ -8,12 +8,20 @@ namespace MagnusBall.Samples.TennisScene
     /// <summary>Formats shot reports as a fixed-width text table (invariant culture, SI units).</summary>
     public static class ShotTable
     {
+        private const string Layout =
+            "{0,-16} {1,5} {2,5} {3,5} {4,5} {5,5} {6,6} {7,13} {8,-3} {9,5} {10,5} {11,5} {12,5} {13,5} {14,5} {15,6} {16,-5} {17,13}";
+
         /// <summary>The table's header line.</summary>
         public static string Header =>
             string.Format(
-                CultureInfo.InvariantCulture,
-                "{0,-17} {1,5} {2,6} {3,6} {4,6} {5,6} {6,7} {7,15} {8,-4} {9,5} {10,5} {11,6} {12,6}",
-                "shot", "v m/s", "elev", "azim", "top", "side", "net cl", "landing x,z m", "in?", "tof s", "apex", "v_bnc", "angle");
+                CultureInfo.InvariantCulture, Layout,
+                "shot", "v", "elev", "azim", "top", "side", "net", "landing x,z", "in?", "tof", "apex", "v_in", "a_in", "v_out", "a_out", "w_out", "slip", "2nd bounce");
+
+        /// <summary>The units line under the header.</summary>
+        public static string Units =>
+            string.Format(
+                CultureInfo.InvariantCulture, Layout,
+                string.Empty, "m/s", "deg", "deg", "rpm", "rpm", "m", "m", string.Empty, "s", "m", "m/s", "deg", "m/s", "deg", "rpm", string.Empty, "x,z m");
 
         /// <summary>One row for a report.</summary>
         /// <param name="report">The report.</param>
@@ -22,23 +30,26 @@ namespace MagnusBall.Samples.TennisScene
             TennisShot s = report.Shot;
             string clearance = report.NetClearance.HasValue
                 ? report.NetClearance.Value.ToString("+0.00;-0.00", CultureInfo.InvariantCulture)
-                : "  none";
-            string landing = report.Landed
-                ? string.Format(CultureInfo.InvariantCulture, "{0,7:F2},{1,6:F2}", report.Landing.X, report.Landing.Z)
-                : "   no landing";
+                : "none";
+            string landing = report.Landed ? Point(report.Landing) : "none";
+            string second = report.SecondBounce.HasValue ? Point(report.SecondBounce.Value) : "rests";
+            string verdict = report.IsIn ? "in" : report.ClearedNet ? "OUT" : "NET";
             return string.Format(
-                CultureInfo.InvariantCulture,
-                "{0,-17} {1,5:F1} {2,6:F1} {3,6:F1} {4,6:F0} {5,6:F0} {6,7} {7,15} {8,-4} {9,5:F2} {10,5:F2} {11,6:F1} {12,6:F1}",
-                s.Name, s.Speed, s.ElevationDegrees, s.AzimuthDegrees, s.TopspinRpm, s.SidespinRpm, clearance, landing,
-                report.IsIn ? "in" : report.ClearedNet ? "OUT" : "NET", report.TimeOfFlight, report.ApexHeight, report.SpeedAtBounce, report.DescentAngleDegrees);
+                CultureInfo.InvariantCulture, Layout,
+                s.Name, F(s.Speed, "0.0"), F(s.ElevationDegrees, "0.0"), F(s.AzimuthDegrees, "0.0"), F(s.TopspinRpm, "0"), F(s.SidespinRpm, "0"),
+                clearance, landing, verdict, F(report.TimeOfFlight, "0.00"), F(report.ApexHeight, "0.00"),
+                F(report.SpeedAtBounce, "0.0"), F(report.DescentAngleDegrees, "0.0"),
+                F(report.SpeedAfterBounce, "0.0"), F(report.ReboundAngleDegrees, "0.0"), F(report.TopspinAfterBounceRpm, "0"),
+                report.Landed ? report.BounceRegime.ToString().ToLowerInvariant() : string.Empty, second);
         }
 
-        /// <summary>The header, a rule, and one row per report.</summary>
+        /// <summary>The header, the units, a rule, and one row per report.</summary>
         /// <param name="reports">The reports.</param>
         public static string Format(IEnumerable<ShotReport> reports)
         {
             var text = new StringBuilder();
             text.AppendLine(Header);
+            text.AppendLine(Units);
             text.AppendLine(new string('-', Header.Length));
             foreach (ShotReport report in reports)
             {
@@ -50,8 +61,14 @@ namespace MagnusBall.Samples.TennisScene
 
         /// <summary>What the columns mean, for a legend under the table.</summary>
         public const string Legend =
-            "elev/azim: launch angles, deg (azimuth + toward the hitter's left); top/side: spin, rpm (top < 0: backspin; side > 0 curls left);\n" +
-            "net cl: bottom of the ball above the net cord, m; landing: contact point, m (x from the net, z + to the hitter's left);\n" +
-            "tof: time to the first bounce, s; apex: highest centre height, m; v_bnc: speed at the bounce, m/s; angle: descent, deg below horizontal.";
+            "v, elev, azim: launch speed and angles (azimuth + toward the hitter's left); top, side: launch spin (top < 0: backspin; side > 0 curls left).\n" +
+            "net: bottom of the ball above the net cord; landing: first contact point (x from the net, z + to the hitter's left); in?: in the target\n" +
+            "area (service box for serves), NET if it did not clear; tof: time to the first bounce; apex: highest centre height; v_in, a_in: speed and\n" +
+            "descent angle into the first bounce; v_out, a_out, w_out: speed, rebound angle and topspin (rpm, < 0 backspin) out of it; slip: whether\n" +
+            "the contact slid throughout or gripped (Cross's bounce model); 2nd bounce: the next contact point.";
+
+        private static string F(double value, string format) => value.ToString(format, CultureInfo.InvariantCulture);
+
+        private static string Point(in Vector3d p) => string.Format(CultureInfo.InvariantCulture, "{0,6:F2},{1,6:F2}", p.X, p.Z);
     }
 }

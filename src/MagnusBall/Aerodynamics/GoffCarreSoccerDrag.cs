@@ -36,8 +36,8 @@ namespace MagnusBall.Aerodynamics
         /// <param name="speed">Air-relative speed s, m/s.</param>
         public static double NonSpinning(double speed)
         {
-            // exp overflows to +inf far below the crisis (s < -900 m/s): 0.346/inf = 0, but speeds are >= 0,
-            // where exp((0 - 12.19)/1.309) is 9e-5: no overflow for any speed the model passes.
+            // exp overflows to +inf only far above the crisis (s > about 940 m/s), where 0.346/inf = 0 gives the
+            // correct supercritical limit 0.155; at s = 0 it is exp(-12.19/1.309) = 9e-5. No NaN for any s >= 0.
             return 0.155 + 0.346 / (1.0 + Math.Exp((speed - 12.19) / 1.309));
         }
 

@@ -18,6 +18,8 @@ namespace MagnusBall.Aerodynamics
     {
         private readonly double[] _s;
         private readonly double[] _c;
+        private readonly IReadOnlyList<double> _sView;
+        private readonly IReadOnlyList<double> _cView;
 
         /// <summary>Creates the table (the arrays are copied).</summary>
         /// <param name="spinParameters">S_perp values: at least one, finite, &gt;= 0, strictly increasing.</param>
@@ -47,13 +49,16 @@ namespace MagnusBall.Aerodynamics
                         nameof(spinParameters));
                 }
             }
+
+            _sView = Array.AsReadOnly(_s);
+            _cView = Array.AsReadOnly(_c);
         }
 
         /// <summary>The table's S_perp values, increasing.</summary>
-        public IReadOnlyList<double> SpinParameters => _s;
+        public IReadOnlyList<double> SpinParameters => _sView;
 
         /// <summary>The table's C_L values.</summary>
-        public IReadOnlyList<double> LiftCoefficients => _c;
+        public IReadOnlyList<double> LiftCoefficients => _cView;
 
         /// <summary>
         /// Soccer (Goff &amp; Carre; secondary transcription): (0, 0) assumed here (no spin, no lift), the Adidas

@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Contact;
 
 namespace MagnusBall.Presets
 {
@@ -10,9 +11,9 @@ namespace MagnusBall.Presets
     /// <remarks>
     /// <para>A preset says nothing about the air or the frame: <see cref="CreateModel"/> takes both, so the
     /// same golf ball flies at sea level or at altitude (<see cref="Air.AtAltitude"/>), z-up or y-up.</para>
-    /// <para>Bounce defaults (restitution, friction, surfaces) belong to the Contact part of the library and
-    /// are not part of a preset yet; when they land they are meant to join here as one more property, so a
-    /// preset stays the one place a sport is described.</para>
+    /// <para>Where a published bounce model exists for the sport, <see cref="Bounce"/> holds it (tennis: Cross's
+    /// slide/grip bounce on a hard court); elsewhere it is null and a scene picks an <see cref="IBounceModel"/>
+    /// itself.</para>
     /// </remarks>
     public sealed class SportPreset
     {
@@ -23,8 +24,9 @@ namespace MagnusBall.Presets
         /// <param name="lift">The lift law, or null for none.</param>
         /// <param name="spinDecay">The spin-decay law, or null for constant spin.</param>
         /// <param name="source">Where the numbers come from (authors, year, what), or the assumption made.</param>
+        /// <param name="bounce">The default bounce model for the sport, or null where none is published here.</param>
         /// <exception cref="ArgumentException">The name or source is empty, or the ball is null.</exception>
-        public SportPreset(string name, Ball ball, IDragModel? drag, ILiftModel? lift, ISpinDecayModel? spinDecay, string source)
+        public SportPreset(string name, Ball ball, IDragModel? drag, ILiftModel? lift, ISpinDecayModel? spinDecay, string source, IBounceModel? bounce = null)
         {
             if (string.IsNullOrWhiteSpace(name))
             {
@@ -42,6 +44,7 @@ namespace MagnusBall.Presets
             Lift = lift;
             SpinDecay = spinDecay;
             Source = source;
+            Bounce = bounce;
         }
 
         /// <summary>The preset's name, as <see cref="SportPresets.FromName"/> accepts it.</summary>
@@ -59,6 +62,12 @@ namespace MagnusBall.Presets
         /// <summary>The spin-decay law, or null for constant spin.</summary>
         public ISpinDecayModel? SpinDecay { get; }
 
+        /// <summary>
+        /// The sport's default bounce model (for tennis, <see cref="CrossBounce.Hard"/>), or null where no bounce
+        /// model for the sport is published here.
+        /// </summary>
+        public IBounceModel? Bounce { get; }
+
         /// <summary>The sources of the ball's numbers and laws, or the stated assumptions where none was found.</summary>
         public string Source { get; }
 
@@ -70,20 +79,25 @@ namespace MagnusBall.Presets
 
         /// <summary>A copy with another ball (the name and laws are kept; the source notes the change).</summary>
         /// <param name="ball">The ball.</param>
-        public SportPreset WithBall(Ball ball) => new SportPreset(Name, ball, Drag, Lift, SpinDecay, Source + " Ball overridden.");
+        public SportPreset WithBall(Ball ball) => new SportPreset(Name, ball, Drag, Lift, SpinDecay, Source + " Ball overridden.", Bounce);
 
         /// <summary>A copy with another drag law (null for none).</summary>
         /// <param name="drag">The drag law.</param>
-        public SportPreset WithDrag(IDragModel? drag) => new SportPreset(Name, Ball, drag, Lift, SpinDecay, Source + " Drag overridden.");
+        public SportPreset WithDrag(IDragModel? drag) => new SportPreset(Name, Ball, drag, Lift, SpinDecay, Source + " Drag overridden.", Bounce);
 
         /// <summary>A copy with another lift law (null for none).</summary>
         /// <param name="lift">The lift law.</param>
-        public SportPreset WithLift(ILiftModel? lift) => new SportPreset(Name, Ball, Drag, lift, SpinDecay, Source + " Lift overridden.");
+        public SportPreset WithLift(ILiftModel? lift) => new SportPreset(Name, Ball, Drag, lift, SpinDecay, Source + " Lift overridden.", Bounce);
 
         /// <summary>A copy with another spin-decay law (null for constant spin).</summary>
         /// <param name="spinDecay">The spin-decay law.</param>
         public SportPreset WithSpinDecay(ISpinDecayModel? spinDecay) =>
-            new SportPreset(Name, Ball, Drag, Lift, spinDecay, Source + " Spin decay overridden.");
+            new SportPreset(Name, Ball, Drag, Lift, spinDecay, Source + " Spin decay overridden.", Bounce);
+
+        /// <summary>A copy with another default bounce model (null for none).</summary>
+        /// <param name="bounce">The bounce model.</param>
+        public SportPreset WithBounce(IBounceModel? bounce) =>
+            new SportPreset(Name, Ball, Drag, Lift, SpinDecay, Source + " Bounce overridden.", bounce);
 
         /// <inheritdoc />
         public override string ToString() =>

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Contact;
 
 namespace MagnusBall.Presets
 {
@@ -15,7 +16,8 @@ namespace MagnusBall.Presets
         /// <summary>
         /// Tennis: an ITF ball (mass 56.0-59.4 g, diameter 6.54-6.86 cm; the middle, 57.7 g and 67.0 mm, is used),
         /// inertia factor 0.55 (Cross 2002, hollow shell of finite thickness); Stepanek's (1988, Am. J. Phys.
-        /// 56:138) spin-dependent C_D and C_L; spin decay 2 % per 6.4 m of flight (Cross &amp; Lindsey 2014).
+        /// 56:138) spin-dependent C_D and C_L; spin decay 2 % per 6.4 m of flight (Cross &amp; Lindsey 2014); bounce: Cross's slide/grip model on a hard
+        /// court (<see cref="MagnusBall.Contact.CrossBounce.Hard"/>, Cross 2020).
         /// </summary>
         public static SportPreset Tennis { get; } = new SportPreset(
             "tennis",
@@ -24,7 +26,9 @@ namespace MagnusBall.Presets
             StepanekLift.Instance,
             SpeedProportionalSpinDecay.TennisCrossLindsey,
             "ITF Rules of Tennis, appendix I (ball 56.0-59.4 g, 6.54-6.86 cm; middle used); inertia factor 0.55 (Cross 2002); " +
-            "Stepanek 1988, Am. J. Phys. 56:138 (C_D, C_L); spin decay 2 % per 6.4 m (Cross & Lindsey 2014).");
+            "Stepanek 1988, Am. J. Phys. 56:138 (C_D, C_L); spin decay 2 % per 6.4 m (Cross & Lindsey 2014); " +
+            "bounce: Cross's slide/grip model on a hard court (Cross 2020).",
+            CrossBounce.Hard);
 
         /// <summary>
         /// Tennis with Cross &amp; Lindsey's free-flight drag: the <see cref="Tennis"/> ball and lift, but
@@ -37,7 +41,8 @@ namespace MagnusBall.Presets
             ConstantDrag.CrossLindseyTennis,
             StepanekLift.Instance,
             SpeedProportionalSpinDecay.TennisCrossLindsey,
-            "As tennis, but C_D = 0.507 (Cross & Lindsey 2014, free-flight measurements, 15-30 m/s, <= 2500 rpm).");
+            "As tennis, but C_D = 0.507 (Cross & Lindsey 2014, free-flight measurements, 15-30 m/s, <= 2500 rpm).",
+            CrossBounce.Hard);
 
         /// <summary>
         /// Soccer: a FIFA size-5 ball (circumference 68-70 cm, mass 410-450 g; 0.43 kg and r = 0.11 m used), thin
@@ -134,13 +139,13 @@ namespace MagnusBall.Presets
         public const double GolfSpinDecayTimeConstant = 24.496;
 
         /// <summary>Every preset, in the order of <see cref="Names"/>.</summary>
-        public static IReadOnlyList<SportPreset> All { get; } = new[]
+        public static IReadOnlyList<SportPreset> All { get; } = Array.AsReadOnly(new[]
         {
             Tennis, TennisFreeFlight, Soccer, Baseball, Golf, GolfSmitsSmith, TableTennis, Basketball,
-        };
+        });
 
         /// <summary>The names <see cref="FromName"/> accepts.</summary>
-        public static IReadOnlyList<string> Names { get; } = All.Select(p => p.Name).ToArray();
+        public static IReadOnlyList<string> Names { get; } = Array.AsReadOnly(All.Select(p => p.Name).ToArray());
 
         /// <summary>
         /// The preset called <paramref name="name"/>: case-insensitive, with '_' or ' ' accepted for '-'

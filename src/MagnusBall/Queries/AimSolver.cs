@@ -104,11 +104,15 @@ namespace MagnusBall.Queries
     /// <remarks>
     /// <para>Every trial is a full flight with the solver's model, integrator and fixed step, with the plane
     /// crossing located on the step's cubic Hermite (<see cref="HermiteSegment"/>). A trial "arrives" when it
-    /// crosses the target plane along its normal before it lands on the ground.</para>
+    /// crosses the target plane along its normal before it lands on the ground. A trial launched from exactly
+    /// on the ground into it lands at once (see <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>);
+    /// the launch point should not be below the ground, where a trial lands only after rising through it and
+    /// coming back down.</para>
     /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
     /// target and the target plane passes through the target with that normal. Heights are measured along
-    /// up. The elevation scan runs upward from the lower limit, so the lowest solution is returned (a drive,
-    /// not a lob).</para>
+    /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
+    /// solution is returned (a drive, not a lob); a solution window narrower than the scan width can be
+    /// missed, and when even the lower limit works, the lower limit is returned.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed class AimSolver
@@ -141,7 +145,7 @@ namespace MagnusBall.Queries
             double maximumFlightTime = 10,
             double minimumElevationDegrees = -45,
             double maximumElevationDegrees = 80,
-            double elevationScanDegrees = 0.5,
+            double elevationScanDegrees = 2,
             double maximumSpeed = 100)
         {
             Require.NotNull(model, nameof(model));
@@ -208,14 +212,14 @@ namespace MagnusBall.Queries
         /// <paramref name="speed"/> crosses <paramref name="plane"/> (along its normal, before landing) at least
         /// <paramref name="height"/> above the ground: the minimum angle that clears a net.
         /// </summary>
-        /// <param name="position">Launch point, m; finite, on the negative side of the plane.</param>
+        /// <param name="position">Launch point, m; finite, on the negative side of the plane (signed distance &lt; 0).</param>
         /// <param name="speed">Launch speed, m/s; finite and &gt; 0.</param>
         /// <param name="azimuthRadians">Azimuth from the plane's normal (its horizontal part) toward the frame's side, rad; finite.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="plane">The plane to clear (a net); its normal must not be vertical.</param>
         /// <param name="height">Height above the ground the ball's centre must pass at, m; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
         public AimSolution MinimumElevationToClear(
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
         {
@@ -232,6 +236,14 @@ namespace MagnusBall.Queries
             if (Math.Abs(Vector3d.Dot(plane.Normal, up)) > 1 - 1e-9)
             {
                 throw new ArgumentException("plane must not be horizontal: clearing is measured by height at the crossing.", nameof(plane));
+            }
+
+            double side = plane.SignedDistance(position);
+            if (!(side < 0))
+            {
+                throw new ArgumentException(
+                    $"position must be on the negative side of plane (signed distance < 0 m), from where the ball crosses it along its normal; got {Require.Format(side)} m. Flip the plane (Plane.Flipped) to clear it the other way.",
+                    nameof(position));
             }
 
             var frame = new LaunchFrame(up, plane.Normal);
@@ -484,18 +496,28 @@ namespace MagnusBall.Queries
         {
             failed = false;
             int side = 0;
+            double checkpoint = Math.Abs(b - a);
+            bool bisect = false;
             for (int i = 0; i < 200 && Math.Abs(b - a) > tolerance; i++)
             {
                 double width = b - a;
-                double x;
-                double t = double.IsFinite(fa) && double.IsFinite(fb) && fb > fa ? -fa / (fb - fa) : 0.5;
-                double guard = Math.Max(0.01, 0.25 * tolerance / Math.Abs(width));
-                if (i % 4 == 3 || !(t > guard && t < 1 - guard))
+                if (i % 3 == 2)
                 {
-                    t = 0.5;
+                    // Safeguard: if three steps did not halve the bracket, bisect once.
+                    bisect = Math.Abs(width) > 0.5 * checkpoint;
+                    checkpoint = Math.Abs(width);
                 }
 
-                x = a + width * t;
+                double t = 0.5;
+                if (!bisect && double.IsFinite(fa) && double.IsFinite(fb) && fb > fa)
+                {
+                    // Regula falsi, kept at least a quarter of the tolerance inside the bracket.
+                    double margin = Math.Min(0.25, 0.25 * tolerance / Math.Abs(width));
+                    t = Math.Max(margin, Math.Min(1 - margin, -fa / (fb - fa)));
+                }
+
+                bisect = false;
+                double x = a + width * t;
                 double fx = f.Evaluate(x);
                 if (double.IsNaN(fx))
                 {
@@ -561,23 +583,34 @@ namespace MagnusBall.Queries
             _simulations++;
             FlightStepper stepper = _stepper;
             stepper.Reset(launch);
+            Span<Plane> planes = stackalloc Plane[1];
+            planes[0] = plane;
+            Span<FlightEvent> found = stackalloc FlightEvent[3];
             double endTime = launch.Time + MaximumFlightTime;
             while (stepper.State.Time < endTime)
             {
-                stepper.Step(Step);
-                HermiteSegment segment = stepper.LastSegment;
-                bool crossed = segment.TryFindCrossing(plane, CrossingDirection.AlongNormal, out double crossing);
-                bool down = segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, out double landing);
-                if (crossed && (!down || crossing <= landing))
+                if (!stepper.TryStep(Step))
                 {
-                    arrival = segment.StateAt(crossing);
-                    landed = false;
-                    return true;
+                    break; // diverged: this trial fails (margin -infinity), the solve goes on
                 }
 
-                if (down)
+                // The first step counts a launch from on the ground into it as a landing at once.
+                int n = FlightEventSet.ScanPlanes(stepper.LastSegment, Vector3d.Zero, Ground, planes, found, stepper.StepCount == 1);
+                ReadOnlySpan<FlightEvent> events = found.Slice(0, n);
+                int count = FlightEventSet.CountUntil(events, FlightEventKinds.Landing, out int landing);
+                for (int i = 0; i < count; i++)
                 {
-                    arrival = segment.StateAt(landing);
+                    if (events[i].Kind == FlightEventKinds.PlaneCrossing)
+                    {
+                        arrival = events[i].State;
+                        landed = false;
+                        return true;
+                    }
+                }
+
+                if (landing >= 0)
+                {
+                    arrival = events[landing].State;
                     landed = true;
                     return false;
                 }
@@ -601,6 +634,25 @@ namespace MagnusBall.Queries
             }
 
             return landed ? Math.Min(plane.SignedDistance(arrival.Position), -double.Epsilon) : double.NegativeInfinity;
+        }
+
+        /// <summary>
+        /// One trial launch at the given speed, elevation and azimuth: its margin (see <see cref="ArrivalMargin"/>)
+        /// and the solution it stands for. <paramref name="missToTarget"/>: Miss is the distance from the arrival
+        /// to the target; otherwise the margin (the clearance above the wanted height).
+        /// </summary>
+        private double Trial(
+            in Vector3d position, in LaunchFrame frame, double speed, double elevation, double azimuth, in LaunchSpin launchSpin, in Plane plane,
+            in Vector3d target, bool missToTarget, out AimSolution solution)
+        {
+            Vector3d direction = frame.Direction(elevation, azimuth);
+            Vector3d velocity = direction * speed;
+            Vector3d spin = launchSpin.AngularVelocity(direction, frame);
+            double margin = ArrivalMargin(new FlightState(position, velocity, spin), plane, target, out FlightState arrival);
+            double miss = missToTarget ? Vector3d.Distance(arrival.Position, target) : margin;
+            solution = new AimSolution(
+                margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, elevation, azimuth, velocity, spin, arrival, miss, _simulations);
+            return margin;
         }
 
         private interface IMargin
@@ -640,14 +692,8 @@ namespace MagnusBall.Queries
 
             public double Evaluate(double elevation)
             {
-                Vector3d direction = _frame.Direction(elevation, _azimuth);
-                Vector3d velocity = direction * _speed;
-                Vector3d spin = _spin.AngularVelocity(direction, _frame);
-                double margin = _solver.ArrivalMargin(new FlightState(_position, velocity, spin), _plane, _target, out FlightState arrival);
-                double miss = _missToTarget ? Vector3d.Distance(arrival.Position, _target) : margin;
-                Last = new AimSolution(
-                    margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, _speed, elevation, _azimuth, velocity, spin, arrival, miss,
-                    _solver._simulations);
+                double margin = _solver.Trial(_position, _frame, _speed, elevation, _azimuth, _spin, _plane, _target, _missToTarget, out AimSolution solution);
+                Last = solution;
                 return margin;
             }
         }
@@ -724,13 +770,8 @@ namespace MagnusBall.Queries
 
             public double Evaluate(double speed)
             {
-                Vector3d direction = _frame.Direction(_elevation, _azimuth);
-                Vector3d velocity = direction * speed;
-                Vector3d spin = _spin.AngularVelocity(direction, _frame);
-                double margin = _solver.ArrivalMargin(new FlightState(_position, velocity, spin), _plane, _target, out FlightState arrival);
-                Last = new AimSolution(
-                    margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, _elevation, _azimuth, velocity, spin, arrival,
-                    Vector3d.Distance(arrival.Position, _target), _solver._simulations);
+                double margin = _solver.Trial(_position, _frame, speed, _elevation, _azimuth, _spin, _plane, _target, true, out AimSolution solution);
+                Last = solution;
                 return margin;
             }
         }

@@ -115,14 +115,20 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// Finds the events inside one step and writes them to <paramref name="events"/> in time order: the
-        /// first landing, the first apex and the first crossing of each plane inside (StartTime, EndTime].
-        /// Allocates nothing.
+        /// first landing, the first apex and the first crossing of each plane inside (StartTime, EndTime] (for
+        /// the first step of a flight, a landing or crossing at StartTime too). Allocates nothing.
         /// </summary>
         /// <param name="segment">The step's dense output.</param>
         /// <param name="events">Where to write; at least <see cref="MaximumEventsPerStep"/> long.</param>
+        /// <param name="startsFlight">
+        /// True for the first step of a flight (after a reset or a replaced state): a ball that starts exactly on
+        /// the ground or a watched plane and heads through it crosses it at the step's start (see
+        /// <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>). False (the
+        /// default) for a step that continues a flight, whose start was the previous step's end.
+        /// </param>
         /// <returns>How many events were written.</returns>
         /// <exception cref="ArgumentException">The buffer is shorter than <see cref="MaximumEventsPerStep"/>.</exception>
-        public int Scan(in HermiteSegment segment, Span<FlightEvent> events)
+        public int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
         {
             if (events.Length < MaximumEventsPerStep)
             {
@@ -130,27 +136,69 @@ namespace MagnusBall.Queries
                     $"events must hold at least MaximumEventsPerStep = {MaximumEventsPerStep} events; got {events.Length}.", nameof(events));
             }
 
+            return ScanPlanes(segment, Up, Ground, _planes, events, startsFlight);
+        }
+
+        /// <summary>
+        /// Of one step's events in time order (as <see cref="Scan"/> writes them), how many happen when the flight
+        /// ends at the first event of the <paramref name="stopAt"/> kinds (for example the landing): the events up
+        /// to and including it, and any at the same instant after it; all of them when none is of those kinds.
+        /// The one rule every "fly until it lands" loop uses: crossings before the landing count, nothing after.
+        /// </summary>
+        /// <param name="events">The step's events, in time order.</param>
+        /// <param name="stopAt">The kinds that end the flight (None: nothing does).</param>
+        /// <param name="stopIndex">The index of the first event of those kinds, or -1.</param>
+        /// <returns>How many of the events, from the first, happen.</returns>
+        public static int CountUntil(ReadOnlySpan<FlightEvent> events, FlightEventKinds stopAt, out int stopIndex)
+        {
+            stopIndex = -1;
+            for (int i = 0; i < events.Length; i++)
+            {
+                if ((events[i].Kind & stopAt) != 0)
+                {
+                    stopIndex = i;
+                    int count = i + 1;
+                    while (count < events.Length && events[count].Time <= events[i].Time)
+                    {
+                        count++;
+                    }
+
+                    return count;
+                }
+            }
+
+            return events.Length;
+        }
+
+        /// <summary>
+        /// <see cref="Scan"/> for an ad-hoc set (no allocation): the apex along <paramref name="up"/> (unit, or zero
+        /// for none), landings on <paramref name="ground"/>, crossings of <paramref name="planes"/>. The buffer must
+        /// hold 2 + planes.Length events.
+        /// </summary>
+        internal static int ScanPlanes(
+            in HermiteSegment segment, in Vector3d up, Plane? ground, ReadOnlySpan<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+        {
             int count = 0;
             double time;
-            if (Ground.HasValue && segment.TryFindCrossing(Ground.Value, CrossingDirection.AgainstNormal, out time))
+            if (ground.HasValue && segment.TryFindCrossing(ground.Value, CrossingDirection.AgainstNormal, startsFlight, out time))
             {
                 events[count++] = new FlightEvent(FlightEventKinds.Landing, -1, segment.StateAt(time));
             }
 
-            if (Up.LengthSquared > 0 && segment.TryFindApex(Up, out time))
+            if (up.LengthSquared > 0 && segment.TryFindApex(up, out time))
             {
                 events[count++] = new FlightEvent(FlightEventKinds.Apex, -1, segment.StateAt(time));
             }
 
-            for (int i = 0; i < _planes.Length; i++)
+            for (int i = 0; i < planes.Length; i++)
             {
-                if (segment.TryFindCrossing(_planes[i], CrossingDirection.AlongNormal, out time))
+                if (segment.TryFindCrossing(planes[i], CrossingDirection.AlongNormal, startsFlight, out time))
                 {
                     events[count++] = new FlightEvent(FlightEventKinds.PlaneCrossing, i, segment.StateAt(time));
                 }
             }
 
-            // Insertion sort by time: a handful of events at most.
+            // Insertion sort by time (stable: at equal times the landing stays first): a handful of events at most.
             for (int i = 1; i < count; i++)
             {
                 FlightEvent e = events[i];

@@ -53,9 +53,16 @@ namespace MagnusBall.Queries
         /// <param name="startDerivative">Derivative at the start of the step.</param>
         /// <param name="end">State at the end of the step; its time must be later than the start's.</param>
         /// <param name="endDerivative">Derivative at the end of the step.</param>
-        /// <exception cref="ArgumentException">The end is not later than the start, or a time is not finite.</exception>
+        /// <exception cref="ArgumentException">
+        /// The end is not later than the start, a time is not finite, or a state or derivative has a non-finite
+        /// component (for example a step that diverged); the message names which.
+        /// </exception>
         public HermiteSegment(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
         {
+            RequireFinite(start, nameof(start));
+            RequireFinite(startDerivative, nameof(startDerivative));
+            RequireFinite(end, nameof(end));
+            RequireFinite(endDerivative, nameof(endDerivative));
             if (!double.IsFinite(start.Time) || !double.IsFinite(end.Time) || !(end.Time > start.Time))
             {
                 throw new ArgumentException(
@@ -83,6 +90,11 @@ namespace MagnusBall.Queries
         public Vector3d PositionAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.Position; // the default segment (no step yet)
+            }
+
             return Cubic(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, (time - Start.Time) / h);
         }
 
@@ -91,6 +103,11 @@ namespace MagnusBall.Queries
         public Vector3d VelocityAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.Velocity;
+            }
+
             return Cubic(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, (time - Start.Time) / h);
         }
 
@@ -99,6 +116,11 @@ namespace MagnusBall.Queries
         public Vector3d AngularVelocityAt(double time)
         {
             double h = Duration;
+            if (!(h > 0))
+            {
+                return Start.AngularVelocity;
+            }
+
             return Cubic(
                 Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h,
                 (time - Start.Time) / h);
@@ -108,7 +130,7 @@ namespace MagnusBall.Queries
         /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
         public FlightState StateAt(double time)
         {
-            if (time == Start.Time)
+            if (time == Start.Time || !(Duration > 0))
             {
                 return Start;
             }
@@ -122,16 +144,45 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>
-        /// Finds the first time inside the step at which the ball crosses <paramref name="plane"/> in the given
-        /// direction. A crossing against the normal goes from strictly positive to zero or below (so a ball
-        /// that starts the step exactly on the plane has not crossed it); along the normal, from strictly
-        /// negative to zero or above.
+        /// Finds the first time inside a step that continues a flight at which the ball crosses
+        /// <paramref name="plane"/> in the given direction: the same as
+        /// <see cref="TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/> with startsFlight false.
+        /// A crossing against the normal goes from strictly positive to zero or below (a ball that starts the
+        /// step exactly on the plane crossed it, if at all, at the end of the previous step); along the normal,
+        /// from strictly negative to zero or above.
         /// </summary>
         /// <param name="plane">The plane.</param>
         /// <param name="direction">Which way the crossing must go.</param>
         /// <param name="time">The crossing time to <see cref="TimeTolerance"/>, s; 0 when none is found.</param>
         /// <returns>True when the interpolated path crosses the plane that way inside (StartTime, EndTime].</returns>
-        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, out double time)
+        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, out double time) =>
+            TryFindCrossing(plane, direction, false, out time);
+
+        /// <summary>
+        /// Finds the first time inside the step at which the ball crosses <paramref name="plane"/> in the given
+        /// direction. A crossing against the normal goes from strictly positive to zero or below; along the
+        /// normal, from strictly negative to zero or above. When <paramref name="startsFlight"/> is true, a ball
+        /// that starts the step exactly on the plane (signed distance 0) and heads through it at once (the
+        /// cubic's slope points through the plane, or the slope is 0 and its curvature does) crosses it at
+        /// <see cref="StartTime"/>: a ball launched from the ground into the ground lands at once.
+        /// </summary>
+        /// <remarks>
+        /// Pass startsFlight true only for the first step after a flight was started or its state replaced
+        /// (<see cref="FlightStepper.Reset"/>, <see cref="FlightStepper.SetState"/>). A later step starts where
+        /// the previous one ended: if that end lay exactly on the plane, the previous step already reported the
+        /// crossing there (or the ball reached the plane from the far side and did not cross it), so counting the
+        /// start again would report one crossing twice. A ball leaving the plane (after a bounce) does not head
+        /// through it and is never counted.
+        /// </remarks>
+        /// <param name="plane">The plane.</param>
+        /// <param name="direction">Which way the crossing must go.</param>
+        /// <param name="startsFlight">True for the first step of a flight: a start exactly on the plane heading through it counts.</param>
+        /// <param name="time">The crossing time to <see cref="TimeTolerance"/>, s; 0 when none is found.</param>
+        /// <returns>
+        /// True when the interpolated path crosses the plane that way inside (StartTime, EndTime], or at
+        /// StartTime as described for <paramref name="startsFlight"/>.
+        /// </returns>
+        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
             double h = Duration;
             double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
@@ -139,7 +190,7 @@ namespace MagnusBall.Queries
             double m0 = sign * plane.NormalSpeed(StartDerivative.Velocity) * h;
             double f1 = sign * plane.SignedDistance(End.Position);
             double m1 = sign * plane.NormalSpeed(EndDerivative.Velocity) * h;
-            return FirstFall(f0, m0, f1, m1, out time);
+            return FirstFall(f0, m0, f1, m1, startsFlight, out time);
         }
 
         /// <summary>
@@ -156,7 +207,25 @@ namespace MagnusBall.Queries
             double m0 = Vector3d.Dot(StartDerivative.Acceleration, up) * h;
             double f1 = Vector3d.Dot(End.Velocity, up);
             double m1 = Vector3d.Dot(EndDerivative.Acceleration, up) * h;
-            return FirstFall(f0, m0, f1, m1, out time);
+            return FirstFall(f0, m0, f1, m1, false, out time);
+        }
+
+        private static void RequireFinite(in FlightState state, string name)
+        {
+            if (!state.IsFinite)
+            {
+                throw new ArgumentException($"{name} must have finite position, velocity, angular velocity and time; got {state}.", name);
+            }
+        }
+
+        private static void RequireFinite(in StateDerivative derivative, string name)
+        {
+            if (!derivative.Velocity.IsFinite || !derivative.Acceleration.IsFinite || !derivative.AngularAcceleration.IsFinite)
+            {
+                throw new ArgumentException(
+                    $"{name} must have finite velocity, acceleration and angular acceleration; got v={derivative.Velocity}, a={derivative.Acceleration}, dw/dt={derivative.AngularAcceleration}.",
+                    name);
+            }
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -176,9 +245,11 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// First s in (0, 1] where the scalar Hermite cubic with values f0, f1 and scaled slopes m0, m1 (slope
-        /// times h) falls from &gt; 0 to &lt;= 0; converted to time.
+        /// times h) falls from &gt; 0 to &lt;= 0; converted to time. With <paramref name="fromZero"/>, also s = 0
+        /// when f0 is 0 and the cubic falls below 0 at once (slope &lt; 0, or slope 0 and curvature &lt; 0, or
+        /// both 0 and the cubic term &lt; 0).
         /// </summary>
-        private bool FirstFall(double f0, double m0, double f1, double m1, out double time)
+        private bool FirstFall(double f0, double m0, double f1, double m1, bool fromZero, out double time)
         {
             time = 0;
             if (!double.IsFinite(f0 + m0 + f1 + m1))
@@ -190,6 +261,11 @@ namespace MagnusBall.Queries
             double a = 2 * f0 + m0 - 2 * f1 + m1;
             double b = -3 * f0 - 2 * m0 + 3 * f1 - m1;
             double c = m0;
+            if (fromZero && f0 == 0 && (c < 0 || (c == 0 && (b < 0 || (b == 0 && a < 0)))))
+            {
+                time = Start.Time;
+                return true;
+            }
 
             // Turning points: 3a s^2 + 2b s + c = 0, kept when inside (0, 1), sorted.
             double r1 = double.NaN, r2 = double.NaN;

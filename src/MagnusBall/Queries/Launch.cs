@@ -46,10 +46,13 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>The unit launch direction cos(e) (cos(a) forward + sin(a) side) + sin(e) up.</summary>
-        /// <param name="elevationRadians">Elevation above the horizontal, rad.</param>
-        /// <param name="azimuthRadians">Azimuth from forward toward side, rad.</param>
+        /// <param name="elevationRadians">Elevation above the horizontal, rad; finite.</param>
+        /// <param name="azimuthRadians">Azimuth from forward toward side, rad; finite.</param>
+        /// <exception cref="ArgumentOutOfRangeException">An angle is NaN or infinite (the message names it).</exception>
         public Vector3d Direction(double elevationRadians, double azimuthRadians)
         {
+            Require.Finite(elevationRadians, nameof(elevationRadians));
+            Require.Finite(azimuthRadians, nameof(azimuthRadians));
             double ce = Math.Cos(elevationRadians);
             return Forward * (ce * Math.Cos(azimuthRadians)) + Side * (ce * Math.Sin(azimuthRadians)) + Up * Math.Sin(elevationRadians);
         }
@@ -69,6 +72,10 @@ namespace MagnusBall.Queries
     /// effect in z-up, y-up, left- and right-handed frames (see <see cref="Spin.Toward"/>). Every part is
     /// perpendicular to the launch velocity except the gyro part, which the transverse-spin Magnus force
     /// ignores.</para>
+    /// <para>A launch in the plane of up and side (azimuth exactly +-90 degrees, within 1e-12 rad) has no part
+    /// of Side across f and u'. Sidespin then uses s' = -forward for a launch toward +side and +forward toward
+    /// -side: the limit as the azimuth approaches +-90 degrees from the forward half (|azimuth| &lt; 90 degrees),
+    /// so it neither vanishes nor jumps for aims that turn toward the side.</para>
     /// </remarks>
     public readonly struct LaunchSpin
     {
@@ -107,8 +114,15 @@ namespace MagnusBall.Queries
         /// <param name="direction">The launch direction (need not be unit); finite, non-zero.</param>
         /// <param name="frame">The launch frame (for up and side).</param>
         /// <returns>The angular velocity, rad/s. For a vertical launch, "across up" falls back to -forward.</returns>
+        /// <exception cref="ArgumentException">direction is zero or not finite, or frame is the default (zero) frame.</exception>
         public Vector3d AngularVelocity(in Vector3d direction, in LaunchFrame frame)
         {
+            Require.NonZero(direction, nameof(direction));
+            if (frame.Up.LengthSquared == 0)
+            {
+                throw new ArgumentException("frame must be a LaunchFrame built from an up and a forward direction; got the default (zero) frame.", nameof(frame));
+            }
+
             Vector3d f = direction.NormalizedOrZero();
             Vector3d lift = frame.Up - f * Vector3d.Dot(frame.Up, f);
             if (lift.LengthSquared < 1e-24)
@@ -118,7 +132,15 @@ namespace MagnusBall.Queries
 
             lift = lift.NormalizedOrZero();
             Vector3d side = frame.Side - f * Vector3d.Dot(frame.Side, f);
-            side = (side - lift * Vector3d.Dot(side, lift)).NormalizedOrZero();
+            side -= lift * Vector3d.Dot(side, lift);
+            if (side.LengthSquared < 1e-24)
+            {
+                // Launched in the plane of up and side (azimuth +-90 degrees): no part of Side lies across both f
+                // and u'. Use the limit from launches with a forward part (|azimuth| < 90 degrees).
+                side = frame.Forward * -Math.Sign(Vector3d.Dot(frame.Side, f));
+            }
+
+            side = side.NormalizedOrZero();
             return Vector3d.Cross(f, -lift) * Topspin + Vector3d.Cross(f, side) * Sidespin + f * Gyro;
         }
 

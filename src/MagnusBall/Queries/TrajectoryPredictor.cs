@@ -19,10 +19,12 @@ namespace MagnusBall.Queries
         /// <param name="eventsTruncated">True when the event buffer filled before the end.</param>
         /// <param name="steps">Integrator steps taken.</param>
         /// <param name="derivativeEvaluations">Derivative evaluations made (including the start state's).</param>
+        /// <param name="diverged">True when the run ended because a step diverged (see <see cref="FlightStepper.TryStep"/>).</param>
         public Prediction(
             in FlightState endState, bool stopped, in FlightEvent stopEvent, int sampleCount, bool samplesTruncated,
-            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations)
+            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations, bool diverged = false)
         {
+            Diverged = diverged;
             EndState = endState;
             Stopped = stopped;
             StopEvent = stopEvent;
@@ -37,7 +39,7 @@ namespace MagnusBall.Queries
         /// <summary>The last state: the stop event's interpolated state, or the state at the time limit.</summary>
         public readonly FlightState EndState;
 
-        /// <summary>True when an event of the requested kinds ended the run; false when the time limit did.</summary>
+        /// <summary>True when an event of the requested kinds ended the run; false when the time limit (or a divergence) did.</summary>
         public readonly bool Stopped;
 
         /// <summary>The event that ended the run (default when <see cref="Stopped"/> is false).</summary>
@@ -60,6 +62,12 @@ namespace MagnusBall.Queries
 
         /// <summary>Derivative evaluations made, including the one at the start state: the honest unit of cost.</summary>
         public readonly long DerivativeEvaluations;
+
+        /// <summary>
+        /// True when the run ended early because a step diverged (the step is far beyond the integrator's
+        /// stability limit for this ball and speed); <see cref="EndState"/> is then the last finite state.
+        /// </summary>
+        public readonly bool Diverged;
     }
 
     /// <summary>
@@ -118,7 +126,7 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// Predicts full states: writes the start state, every step's end state and the end state into
-        /// <paramref name="samples"/>, and every located event up to and including the stop event, in time
+        /// <paramref name="samples"/>, and every located event up to and including the stop event (and any at the same instant), in time
         /// order, into <paramref name="events"/>.
         /// </summary>
         /// <param name="start">The start state; every component finite.</param>
@@ -148,9 +156,14 @@ namespace MagnusBall.Queries
             {
                 double remaining = endTime - stepper.State.Time;
                 bool last = remaining <= Step * (1 + 1e-9);
-                stepper.Step(last ? remaining : Step);
+                if (!stepper.TryStep(last ? remaining : Step))
+                {
+                    return new Prediction(
+                        stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,
+                        stepper.StepCount, stepper.DerivativeEvaluations, diverged: true);
+                }
 
-                ReadOnlySpan<FlightEvent> found = stepper.Events;
+                ReadOnlySpan<FlightEvent> found = stepper.EventsUntil(stopAt, out bool stopped, out FlightEvent stop);
                 for (int i = 0; i < found.Length; i++)
                 {
                     if (eventCount < events.Length)
@@ -161,14 +174,14 @@ namespace MagnusBall.Queries
                     {
                         eventsTruncated = true;
                     }
+                }
 
-                    if ((found[i].Kind & stopAt) != 0)
-                    {
-                        Write(found[i].State, positions, states, ref sampleCount, ref samplesTruncated);
-                        return new Prediction(
-                            found[i].State, true, found[i], sampleCount, samplesTruncated, eventCount, eventsTruncated,
-                            stepper.StepCount, stepper.DerivativeEvaluations);
-                    }
+                if (stopped)
+                {
+                    Write(stop.State, positions, states, ref sampleCount, ref samplesTruncated);
+                    return new Prediction(
+                        stop.State, true, stop, sampleCount, samplesTruncated, eventCount, eventsTruncated,
+                        stepper.StepCount, stepper.DerivativeEvaluations);
                 }
 
                 Write(stepper.State, positions, states, ref sampleCount, ref samplesTruncated);

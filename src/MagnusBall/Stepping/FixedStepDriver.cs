@@ -1,5 +1,7 @@
 using System;
+using MagnusBall.Contact;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 
 namespace MagnusBall.Stepping
 {
@@ -21,29 +23,34 @@ namespace MagnusBall.Stepping
     /// <para>The seed thesis (Agrawal 2023, section 3.1.3) stepped its ODE once per frame with Unity's
     /// <c>Time.deltaTime</c>, so its landing point depended on the frame rate; docs/unity.md puts numbers
     /// on that difference.</para>
-    /// <para>Events (the landing, plane crossings) are located inside the step where they happen on the
-    /// cubic Hermite interpolant of the step's two end states and derivatives (no extra derivative
-    /// evaluation), and reported in a caller-provided buffer. Nothing here allocates after construction.</para>
-    /// <para>Without a bounce model the flight ends at the landing: the state stays at the landing state
-    /// and <see cref="HasLanded"/> turns true. A driver owns its state and is not thread-safe; the model and
-    /// integrator it steps are immutable and may be shared by any number of drivers on any threads.</para>
+    /// <para>Events (landing, bounces, apex, plane crossings) are located inside the step where they happen
+    /// by <see cref="FlightEventSet.Scan"/> on the step's cubic Hermite (<see cref="HermiteSegment"/>; no extra
+    /// derivative evaluation) and written to a caller-provided buffer. Without a bounce model the flight ends
+    /// at the first landing (the last step is cut there). With one, each fixed step is a
+    /// <see cref="BouncingFlight.Step"/>: contacts are located on the step's Hermite, the bounce is applied at
+    /// the contact time and the step finished from there, so the fixed time grid is kept; the ball rolls once
+    /// a bounce is too weak and the flight ends when it stops. Nothing here allocates after construction.</para>
+    /// <para>A driver owns its state and is not thread-safe; the model, integrator, event set and bounce
+    /// model it uses are immutable and may be shared by any number of drivers on any threads.</para>
     /// </remarks>
     public sealed class FixedStepDriver
     {
         /// <summary>The default frame-time clamp, 0.25 s (Fiedler 2004).</summary>
         public const double DefaultMaxFrameDeltaSeconds = 0.25;
 
-        private readonly Vector3d _groundPoint;
-        private readonly Vector3d _groundNormal;
-        private readonly bool _hasGround;
-        private readonly FlightPlane[] _planes;
+        private readonly FlightEventSet? _eventSet;
+        private readonly FlightEvent[] _scratch;
+        private readonly IBounceModel? _bounce;
+        private readonly BouncingFlight? _flight;
+        private readonly BounceEvent[] _bounceScratch;
 
         private FlightState _state;
         private StateDerivative _derivative;
-        private FlightState _previous;
-        private StateDerivative _previousDerivative;
+        private HermiteSegment _latest;
+        private HermiteSegment _older;
+        private int _segmentCount;
         private double _accumulator;
-        private bool _landed;
+        private bool _finished;
         private long _totalSteps;
 
         /// <summary>
@@ -53,34 +60,47 @@ namespace MagnusBall.Stepping
         /// <param name="integrator">The integrator (shared, stateless).</param>
         /// <param name="fixedStep">The fixed step, s; finite and &gt; 0 (for example 1/240).</param>
         /// <param name="start">The launch state; every component finite.</param>
-        /// <param name="groundPoint">
-        /// A point of the ground plane, m; its normal is the model's up (-gravity). Put it one ball radius above
-        /// the court to land when the ball touches the court rather than when its centre reaches it.
+        /// <param name="events">
+        /// What to look for in each step: the ground (landing or bounce), the apex and any planes. Null (the
+        /// default) means <see cref="FlightEventSet.ForModel"/>: the ground through the origin normal to the
+        /// model's up, and the apex; or no events at all when the model has no gravity.
         /// </param>
-        /// <param name="planes">Planes whose crossings are reported (copied once here); null for none.</param>
+        /// <param name="bounce">
+        /// The bounce model, or null (the default): the flight ends at the first landing. With one, the ball
+        /// bounces off the court whose ball-centre plane is the event set's ground (the court itself lies one
+        /// radius below it) through a <see cref="BouncingFlight"/>, rolls when a bounce leaves slower than
+        /// <paramref name="restNormalSpeed"/>, and the flight ends when it stops.
+        /// </param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0. Default 0.25 s.</param>
         /// <param name="maxStepsPerAdvance">
         /// The most fixed steps one <see cref="Advance(double, Span{FrameEvent})"/> call takes; &gt;= 1, or 0
         /// (the default) for ceil(maxFrameDeltaSeconds / fixedStep) + 1, so that the clamp binds first.
         /// </param>
+        /// <param name="restNormalSpeed">With a bounce model: bounces leaving slower than this along the normal start rolling, m/s; finite, &gt;= 0.</param>
+        /// <param name="rollingResistance">With a bounce model: the rolling-resistance coefficient (see <see cref="BouncingFlight"/>); finite, &gt;= 0.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
-        /// <exception cref="ArgumentException">A number is out of its range; the message names it.</exception>
+        /// <exception cref="ArgumentException">
+        /// A number is out of its range (the message names it), or there is a bounce model but no ground.
+        /// </exception>
         public FixedStepDriver(
             FlightModel model,
             IIntegrator integrator,
             double fixedStep,
             in FlightState start,
-            Vector3d groundPoint = default,
-            FlightPlane[]? planes = null,
+            FlightEventSet? events = null,
+            IBounceModel? bounce = null,
             double maxFrameDeltaSeconds = DefaultMaxFrameDeltaSeconds,
-            int maxStepsPerAdvance = 0)
+            int maxStepsPerAdvance = 0,
+            double restNormalSpeed = BouncingFlight.DefaultRestNormalSpeed,
+            double rollingResistance = BouncingFlight.DefaultRollingResistance)
         {
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
             FixedStep = Require.Step(fixedStep, nameof(fixedStep));
             RequireFiniteState(start, nameof(start));
-            _groundPoint = Require.Finite(groundPoint, nameof(groundPoint));
             MaxFrameDeltaSeconds = Require.Positive(maxFrameDeltaSeconds, nameof(maxFrameDeltaSeconds));
+            Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
+            Require.NonNegative(rollingResistance, nameof(rollingResistance));
             if (maxStepsPerAdvance < 0)
             {
                 throw new ArgumentOutOfRangeException(
@@ -90,9 +110,23 @@ namespace MagnusBall.Stepping
             double defaultSteps = Math.Ceiling(maxFrameDeltaSeconds / fixedStep) + 1;
             MaxStepsPerAdvance = maxStepsPerAdvance > 0 ? maxStepsPerAdvance : (int)Math.Min(defaultSteps, int.MaxValue);
 
-            _groundNormal = model.Up;
-            _hasGround = model.Up.LengthSquared > 0;
-            _planes = planes == null ? Array.Empty<FlightPlane>() : (FlightPlane[])planes.Clone();
+            _eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
+            _scratch = new FlightEvent[_eventSet?.MaximumEventsPerStep ?? 0];
+            _bounce = bounce;
+            _bounceScratch = new BounceEvent[bounce == null ? 0 : BouncingFlight.MaxSegmentsPerStep];
+            if (bounce != null)
+            {
+                if (_eventSet?.Ground == null)
+                {
+                    throw new ArgumentException("bounce needs a ground plane to bounce on: give events with a ground (or a model with gravity).", nameof(bounce));
+                }
+
+                // The event set's ground is where the ball's centre touches down; the court lies one radius below.
+                Plane ground = _eventSet.Ground.Value;
+                var court = new Plane(ground.Point - ground.Normal * model.Ball.Radius, ground.Normal);
+                _flight = new BouncingFlight(model, integrator, bounce, court, start, restNormalSpeed, rollingResistance);
+            }
+
             Reset(start);
         }
 
@@ -111,42 +145,82 @@ namespace MagnusBall.Stepping
         /// <summary>The most fixed steps one Advance call takes.</summary>
         public int MaxStepsPerAdvance { get; }
 
-        /// <summary>The planes whose crossings are reported (a copy; changing it changes nothing).</summary>
-        public FlightPlane[] Planes => (FlightPlane[])_planes.Clone();
+        /// <summary>What the driver looks for in each step (null: nothing).</summary>
+        public FlightEventSet? Events => _eventSet;
 
-        /// <summary>The latest fixed state (the simulation's "now"); the landing state once landed.</summary>
-        public FlightState State => _state;
+        /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
+        public IBounceModel? BounceModel => _bounce;
 
-        /// <summary>The fixed state before <see cref="State"/> (equal to it right after a reset).</summary>
-        public FlightState PreviousState => _previous;
+        /// <summary>With a bounce model, the bouncing flight stepped underneath (flying, rolling or stopped); otherwise null.</summary>
+        public BouncingFlight? BouncingFlight => _flight;
 
-        /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>).</summary>
+        /// <summary>The latest fixed state (the simulation's "now"); without a bounce model, the landing state at the end.</summary>
+        public FlightState State => _flight != null ? _flight.State : _state;
+
+        /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
+        public FlightState PreviousState => _flight != null ? _flight.PreviousState : _segmentCount > 0 ? _latest.Start : _state;
+
+        /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
 
-        /// <summary>How far the render state is from <see cref="PreviousState"/> toward <see cref="State"/>, accumulator / step, in [0, 1].</summary>
+        /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
-        /// <summary>True once the ball has crossed the ground: the flight has ended and Advance takes no more steps.</summary>
-        public bool HasLanded => _landed;
+        /// <summary>True once the flight has ended (landed without a bounce model, or stopped after bounces and rolling): Advance takes no more steps.</summary>
+        public bool IsFinished => _finished;
 
         /// <summary>Fixed steps taken since the last reset.</summary>
         public long TotalSteps => _totalSteps;
 
-        /// <summary>
-        /// The simulation time the renderer should show, s: <see cref="PreviousState"/>'s time plus the
-        /// accumulator, never past <see cref="State"/>'s time.
-        /// </summary>
-        public double RenderTime => RenderFraction() * (_state.Time - _previous.Time) + _previous.Time;
+        /// <summary>Bounces since the last reset.</summary>
+        public int Bounces => _flight?.BounceCount ?? 0;
 
         /// <summary>
-        /// The state to draw this frame: the cubic Hermite interpolant between <see cref="PreviousState"/>
-        /// and <see cref="State"/> (both ends' derivatives, so the drawn path is C1 and keeps the
-        /// curvature a linear blend would cut), evaluated at alpha = accumulator / step.
+        /// The simulation time the renderer should show, s: one fixed step behind the simulation,
+        /// State.Time - step + accumulator, never past <see cref="State"/> and never before the start.
         /// </summary>
-        public FlightState RenderState => CubicHermite.Interpolate(_previous, _previousDerivative, _state, _derivative, RenderFraction());
+        public double RenderTime => RenderState.Time;
 
         /// <summary>
-        /// Restarts the flight from <paramref name="start"/>: clears the accumulator and the landed flag.
+        /// The state to draw this frame, at <see cref="RenderTime"/>: on the cubic Hermite of the step it falls
+        /// in (both ends' states and derivatives, so the drawn path is C1 and keeps the curvature a linear blend
+        /// of the two fixed states would cut). Allocates nothing.
+        /// </summary>
+        public FlightState RenderState
+        {
+            get
+            {
+                if (_flight != null)
+                {
+                    // BouncingFlight keeps the Hermite pieces of its last step, split at its bounces.
+                    FlightState now = _flight.State;
+                    return _totalSteps == 0 ? now : _flight.StateAt(Math.Min(now.Time, now.Time - FixedStep + _accumulator));
+                }
+
+                if (_segmentCount == 0)
+                {
+                    return _state;
+                }
+
+                double time = Math.Min(_state.Time, _state.Time - FixedStep + _accumulator);
+                HermiteSegment segment = _latest;
+                if (time < segment.StartTime && _segmentCount > 1)
+                {
+                    segment = _older;
+                }
+
+                if (time <= segment.StartTime)
+                {
+                    return segment.Start;
+                }
+
+                // At or past the latest segment's end: the current state (after a bounce, the state leaving the ground).
+                return time >= segment.EndTime ? (segment.EndTime == _latest.EndTime ? _state : segment.End) : segment.StateAt(time);
+            }
+        }
+
+        /// <summary>
+        /// Restarts the flight from <paramref name="start"/>: clears the accumulator, the finished flag and the counts.
         /// </summary>
         /// <param name="start">The launch state; every component finite.</param>
         /// <exception cref="ArgumentException">The state is not finite (nothing is changed).</exception>
@@ -155,16 +229,17 @@ namespace MagnusBall.Stepping
             RequireFiniteState(start, nameof(start));
             _state = start;
             _derivative = Model.Derivative(start);
-            _previous = start;
-            _previousDerivative = _derivative;
+            _latest = default;
+            _older = default;
+            _segmentCount = 0;
             _accumulator = 0;
-            _landed = false;
+            _finished = false;
             _totalSteps = 0;
+            _flight?.Reset(start);
         }
 
         /// <summary>
-        /// Consumes one frame's time without reporting events (the landing still ends the flight; read
-        /// <see cref="HasLanded"/>).
+        /// Consumes one frame's time without reporting events (they still happen: read <see cref="IsFinished"/>).
         /// </summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0.</param>
         /// <exception cref="ArgumentOutOfRangeException">The delta is negative, NaN or infinite (nothing is changed).</exception>
@@ -197,9 +272,9 @@ namespace MagnusBall.Stepping
                 frameDeltaSeconds = MaxFrameDeltaSeconds;
             }
 
-            if (_landed)
+            if (_finished)
             {
-                // The flight is over: let the render state run to the landing and stay there.
+                // The flight is over: let the render state run to the end and stay there.
                 _accumulator = Math.Min(_accumulator + frameDeltaSeconds, FixedStep);
                 return new AdvanceResult(0, 0, 0, dropped + frameDeltaSeconds);
             }
@@ -219,107 +294,138 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
+                if (_flight != null)
+                {
+                    steps++;
+                    _totalSteps++;
+                    _accumulator -= FixedStep;
+                    if (StepBouncing(events, ref written, ref lost))
+                    {
+                        break;
+                    }
+
+                    continue;
+                }
+
                 FlightState next = Integrator.Step(Model, _state, _derivative, FixedStep);
                 StateDerivative nextDerivative = Model.Derivative(next);
                 steps++;
                 _totalSteps++;
                 _accumulator -= FixedStep;
 
-                bool landed = LocateEvents(next, nextDerivative, events, ref written, ref lost, out FlightState landing);
-                _previous = _state;
-                _previousDerivative = _derivative;
-                if (landed)
+                var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
+                int found = _eventSet == null ? 0 : _eventSet.Scan(segment, _scratch, startsFlight: _totalSteps == 1);
+                int landingIndex = -1;
+                for (int i = 0; i < found && landingIndex < 0; i++)
                 {
-                    _state = landing;
-                    _derivative = Model.Derivative(landing);
-                    _landed = true;
-                    break;
+                    if (_scratch[i].Kind == FlightEventKinds.Landing)
+                    {
+                        landingIndex = i;
+                    }
                 }
 
-                _state = next;
-                _derivative = nextDerivative;
+                // Events before the touchdown (those after it lie on the part of the step that never happens).
+                int before = landingIndex >= 0 ? landingIndex : found;
+                for (int i = 0; i < before; i++)
+                {
+                    FlightEvent e = _scratch[i];
+                    FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
+                    Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
+                }
+
+                if (landingIndex < 0)
+                {
+                    Push(segment);
+                    _state = next;
+                    _derivative = nextDerivative;
+                    continue;
+                }
+
+                // Touchdown inside this step: cut the step there.
+                FlightState touch = _scratch[landingIndex].State;
+                StateDerivative touchDerivative = Model.Derivative(touch);
+                if (touch.Time > _state.Time)
+                {
+                    Push(new HermiteSegment(_state, _derivative, touch, touchDerivative));
+                }
+
+                Write(new FrameEvent(FrameEventKind.Landing, -1, touch), events, ref written, ref lost);
+                _state = touch;
+                _derivative = touchDerivative;
+                _finished = true;
+                break;
             }
 
             return new AdvanceResult(steps, written, lost, dropped);
         }
 
         /// <summary>
-        /// Finds the events in the step from the current state to <paramref name="next"/>, writes them in
-        /// time order, and says whether the ball landed in it (plane crossings after the landing are not
-        /// reported: the flight ends there).
+        /// One fixed step of the bouncing flight; reports its bounces, and its apex and plane crossings when the
+        /// step had no bounce (in a step with a bounce only the bounces are reported). True when the ball stopped.
         /// </summary>
-        private bool LocateEvents(
-            in FlightState next, in StateDerivative nextDerivative, Span<FrameEvent> events, ref int written, ref int lost, out FlightState landing)
+        private bool StepBouncing(Span<FrameEvent> events, ref int written, ref int lost)
         {
-            landing = default;
-            double landingFraction = double.PositiveInfinity;
-            if (_hasGround)
-            {
-                double h0 = Vector3d.Dot(_state.Position - _groundPoint, _groundNormal);
-                double h1 = Vector3d.Dot(next.Position - _groundPoint, _groundNormal);
-                if (h0 >= 0 && h1 < 0)
-                {
-                    landingFraction = CubicHermite.Crossing(_state, _derivative, next, nextDerivative, _groundPoint, _groundNormal);
-                    landing = CubicHermite.Interpolate(_state, _derivative, next, nextDerivative, landingFraction);
-                }
-            }
+            BouncingFlight flight = _flight!;
+            FlightState before = flight.State;
+            StateDerivative beforeDerivative = flight.Derivative;
+            bool wasFlying = flight.Phase == FlightPhase.Flying;
+            int bounces = flight.Step(FixedStep, _bounceScratch);
 
-            int firstOfStep = written;
-            for (int i = 0; i < _planes.Length; i++)
+            if (bounces == 0 && wasFlying && flight.Phase == FlightPhase.Flying && _eventSet != null)
             {
-                FlightPlane plane = _planes[i];
-                double d0 = Vector3d.Dot(_state.Position - plane.Point, plane.Normal);
-                double d1 = Vector3d.Dot(next.Position - plane.Point, plane.Normal);
-                if (d0 < 0 && d1 >= 0)
+                int found = _eventSet.Scan(new HermiteSegment(before, beforeDerivative, flight.State, flight.Derivative), _scratch);
+                for (int i = 0; i < found; i++)
                 {
-                    double fraction = CubicHermite.Crossing(_state, _derivative, next, nextDerivative, plane.Point, plane.Normal, upward: true);
-                    if (fraction <= landingFraction)
+                    FlightEvent e = _scratch[i];
+                    if (e.Kind != FlightEventKinds.Landing)
                     {
-                        var crossing = new FrameEvent(
-                            FrameEventKind.PlaneCrossing, i, CubicHermite.Interpolate(_state, _derivative, next, nextDerivative, fraction));
-                        Write(crossing, events, firstOfStep, ref written, ref lost);
+                        FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
+                        Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
                     }
                 }
             }
 
-            if (landingFraction <= 1)
+            for (int i = 0; i < bounces; i++)
             {
-                Write(new FrameEvent(FrameEventKind.Landing, -1, landing), events, firstOfStep, ref written, ref lost);
+                if (i >= _bounceScratch.Length)
+                {
+                    lost += bounces - i;
+                    break;
+                }
+
+                BounceEvent b = _bounceScratch[i];
+                var incoming = new FlightState(b.Position, b.IncomingVelocity, b.IncomingAngularVelocity, b.Time);
+                var outgoing = new FlightState(b.Position, b.Outcome.Velocity, b.Outcome.AngularVelocity, b.Time);
+                Write(new FrameEvent(FrameEventKind.Bounce, -1, incoming, outgoing, b.Outcome.Regime, b.StartedRolling), events, ref written, ref lost);
+            }
+
+            if (flight.Phase == FlightPhase.Stopped)
+            {
+                Write(new FrameEvent(FrameEventKind.Stop, -1, flight.State), events, ref written, ref lost);
+                _finished = true;
                 return true;
             }
 
             return false;
         }
 
-        /// <summary>Inserts an event among this step's events, keeping them sorted by time (insertion sort, no allocation).</summary>
-        private static void Write(in FrameEvent item, Span<FrameEvent> events, int firstOfStep, ref int written, ref int lost)
+        private void Push(in HermiteSegment segment)
         {
-            if (written >= events.Length)
-            {
-                lost++;
-                return;
-            }
-
-            int i = written;
-            while (i > firstOfStep && events[i - 1].Time > item.Time)
-            {
-                events[i] = events[i - 1];
-                i--;
-            }
-
-            events[i] = item;
-            written++;
+            _older = _latest;
+            _latest = segment;
+            _segmentCount = Math.Min(_segmentCount + 1, 2);
         }
 
-        private double RenderFraction()
+        private static void Write(in FrameEvent item, Span<FrameEvent> events, ref int written, ref int lost)
         {
-            double span = _state.Time - _previous.Time;
-            if (!(span > 0))
+            if (written < events.Length)
             {
-                return 0;
+                events[written++] = item;
             }
-
-            return Math.Min(_accumulator, span) / span;
+            else
+            {
+                lost++;
+            }
         }
 
         private static void RequireFiniteState(in FlightState state, string name)

@@ -37,11 +37,11 @@ namespace MagnusBall.Cli.Tests.Api
 
             // Unknown names.
             yield return Case("UnknownDragModel", r => S(r)["aero"]!["drag"]!["model"] = "quadratic",
-                "scenarios[0].aero.drag.model: unknown model 'quadratic'; expected one of: none, constant, stepanek");
+                "scenarios[0].aero.drag.model: unknown model 'quadratic'; expected one of: none, constant, stepanek, linear-spin, goff-carre, nathan");
             yield return Case("UnknownLiftModel", r => S(r)["aero"]!["lift"]!["model"] = "magnus",
-                "scenarios[0].aero.lift.model: unknown model 'magnus'; expected one of: none, constant, stepanek, linear-spin");
+                "scenarios[0].aero.lift.model: unknown model 'magnus'; expected one of: none, constant, stepanek, linear-spin, goff-carre, nathan");
             yield return Case("UnknownSpinDecay", r => S(r)["spinDecay"]!["model"] = "linear", "scenarios[0].spinDecay.model: unknown model 'linear'");
-            yield return Case("UnknownIntegrator", r => S(r)["integrator"] = "rk45", "scenarios[0].integrator: unknown integrator 'rk45'; expected one of: euler, semi-implicit-euler, heun, rk4");
+            yield return Case("UnknownIntegrator", r => S(r)["integrator"] = "rk45", "scenarios[0].integrator: unknown integrator 'rk45'; expected one of: euler, semi-implicit-euler, heun, rk4, dp54");
 
             // Unknown fields: typos must not pass silently.
             yield return Case("TypoTopLevel", r => r["scenario"] = new JsonArray(), "scenario: unknown field; expected one of: scenarios");

@@ -8,7 +8,7 @@ namespace MagnusBall.Tests.Contact
     /// A bounce in the vertical plane of travel, described as Cross does (speed, angle below the surface,
     /// topspin positive) and read back the same way, in any frame.
     /// </summary>
-    internal readonly struct Court
+    public readonly struct Court
     {
         public Court(SpinSignTests.Frame frame)
         {

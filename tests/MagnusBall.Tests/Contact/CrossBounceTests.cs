@@ -135,7 +135,10 @@ namespace MagnusBall.Tests.Contact
             BounceOutcome edge = Court.ZUp.Bounce(model, Tennis, 20, lo, 0);
             double vx2 = Court.ZUp.Forward(edge.Velocity);
             double rw2 = Tennis.Radius * Vector3d.Dot(edge.AngularVelocity, Court.ZUp.TopspinAxis);
-            TestContext.Out.WriteLine($"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}");
+            BounceOutcome gripSide = Court.ZUp.Bounce(model, Tennis, 20, hi, 0);
+            TestContext.Out.WriteLine(
+                $"{surface.Name}: switch at {lo:F6} deg, vx2 {vx2:F6}, R w2 {rw2:F6}; across it vx2 jumps by " +
+                $"{Court.ZUp.Forward(gripSide.Velocity) - vx2:F4} m/s, angle by {Court.ZUp.AngleDegrees(gripSide) - Court.ZUp.AngleDegrees(edge):F3} deg");
             // The bisection leaves the angle within ~1e-14 deg; the slip there is rounding-level.
             Assert.That(vx2 - rw2, Is.EqualTo(0).Within(1e-9));
 
@@ -325,6 +328,130 @@ namespace MagnusBall.Tests.Contact
                     Assert.That(Court.ZUp.Up(o.Velocity), Is.GreaterThanOrEqualTo(0));
                 }
             }
+        }
+
+        [TestCaseSource(nameof(Courts))]
+        public void SlipThatTurns_MatchesANumericalIntegrationOfTheContact(Surface surface)
+        {
+            // With sidespin the offset torque (along the rolling direction) and friction (against the slip) are not
+            // parallel, so the slip turns during contact. Integrate du/dq = a e1 - b u/|u| with 4,000 RK4 steps and
+            // compare with the closed form the model uses (and with the straight slide it would be without the turn).
+            var model = new CrossBounce(surface);
+            var random = new Random(7);
+            int compared = 0;
+            double largestTurn = 0, largestDifference = 0;
+            for (int i = 0; i < 200 && compared < 20; i++)
+            {
+                double speed = 15 + 15 * random.NextDouble(), angle = 8 + 14 * random.NextDouble();
+                double top = 3000 * random.NextDouble() - 1000, side = 6000 * random.NextDouble() - 3000;
+                BounceOutcome o = Court.ZUp.Bounce(model, Tennis, speed, angle, top, side);
+                if (o.Regime != BounceRegime.Slide)
+                {
+                    continue;
+                }
+
+                // The same set-up the model makes (CrossBounce remarks), in the z-up frame: n = z.
+                Vector3d n = Vector3d.UnitZ, v = Court.ZUp.Velocity(speed, angle);
+                Vector3d w = Court.ZUp.TopspinAxis * Spin.FromRpm(top) + Court.ZUp.ForwardAxis * Spin.FromRpm(side);
+                double vn = -v.Z, R = Tennis.Radius, alpha = Tennis.InertiaFactor;
+                Vector3d vt = v + n * vn, omega = Vector3d.Cross(n, w) * R;
+                Vector3d u = vt + omega, lambda = vt - omega * alpha, u1 = u;
+                double J = (1 + o.NormalRestitution) * vn;
+                double D = Math.Min(surface.ForceOffsetAt(v.Length), (1 + alpha) * surface.SlidingFriction * R / Math.Sqrt(2));
+                double delta = Math.Min(D * J / R, lambda.Length);
+                Vector3d e1 = lambda / lambda.Length;
+                double a = delta / J, b = (1 + alpha) * surface.SlidingFriction, q = J / alpha;
+                Func<Vector3d, Vector3d> f = x => e1 * a - x / x.Length * b;
+                const int steps = 4_000;
+                double h = q / steps;
+                for (int k = 0; k < steps; k++)
+                {
+                    Vector3d k1 = f(u), k2 = f(u + k1 * (h / 2)), k3 = f(u + k2 * (h / 2)), k4 = f(u + k3 * h);
+                    u += (k1 + k2 * 2 + k3 * 2 + k4) * (h / 6);
+                }
+
+                Vector3d lambda2 = lambda - e1 * delta;
+                Vector3d expected = (lambda2 + u * alpha) / (1 + alpha) + n * (o.NormalRestitution * vn);
+                double turn = Math.Acos(Math.Min(1, Vector3d.Dot(u, vt + omega) / (u.Length * (vt + omega).Length))) * 180 / Math.PI;
+                // RK4 at 4,000 steps on a smooth path (the slip stays away from zero): error far below 1e-8 m/s.
+                Assert.That(Vector3d.Distance(o.Velocity, expected), Is.LessThan(1e-8), $"case {i}: slip turned {turn:F2} deg");
+                Vector3d straight = u1 + (e1 * a - u1 / u1.Length * b) * q;
+                largestTurn = Math.Max(largestTurn, turn);
+                largestDifference = Math.Max(largestDifference, Vector3d.Distance(expected, (lambda2 + straight * alpha) / (1 + alpha) + n * (o.NormalRestitution * vn)));
+                compared++;
+            }
+
+            TestContext.Out.WriteLine(
+                $"{surface.Name}: {compared} sliding bounces with sidespin compared; the slip turned up to {largestTurn:F2} deg, " +
+                $"and a straight slide would have been off by up to {largestDifference:F4} m/s");
+            Assert.That(compared, Is.EqualTo(20));
+        }
+
+        [TestCaseSource(nameof(AllSurfaces))]
+        public void NearlyVerticalDrop_LeavesNearlyVertically(Surface surface)
+        {
+            // The offset torque resists rolling and cannot reverse it, so the bounce is continuous as the
+            // tangential speed goes to zero: 1 um/s in, at most about that out.
+            var model = new CrossBounce(surface);
+            BounceOutcome o = model.Bounce(Tennis, Vector3d.UnitZ, new Vector3d(1e-6, 0, -10), Vector3d.Zero);
+            double tangential = Math.Sqrt(o.Velocity.X * o.Velocity.X + o.Velocity.Y * o.Velocity.Y);
+            Assert.That(tangential, Is.LessThanOrEqualTo(1e-6));
+            Assert.That(Tennis.Radius * o.AngularVelocity.Length, Is.LessThanOrEqualTo(1e-6));
+        }
+
+        [Test]
+        public void ExtremeButFiniteInput_GivesFiniteOutput()
+        {
+            double[] magnitudes = { 0, 1e-300, 1e-12, 1, 1e6, 1e100, 1e150 };
+            foreach (Surface surface in Surface.All)
+            {
+                var model = new CrossBounce(surface);
+                foreach (double speed in magnitudes)
+                {
+                    foreach (double spin in magnitudes)
+                    {
+                        foreach (Vector3d normal in new[] { Vector3d.UnitZ, new Vector3d(1e-150, 0, 1e-150), new Vector3d(3e100, -1e100, 2e100) })
+                        {
+                            Vector3d v = new Vector3d(0.8, 0.3, -0.5) * speed;
+                            if (Vector3d.Dot(v, normal) > 0)
+                            {
+                                v = -v;
+                            }
+
+                            BounceOutcome o = model.Bounce(Tennis, normal, v, new Vector3d(0.2, -0.9, 0.4) * spin);
+                            Assert.That(o.Velocity.IsFinite && o.AngularVelocity.IsFinite, Is.True, $"{surface.Name}: |v| {speed}, |w| {spin}, n {normal}");
+                        }
+                    }
+                }
+            }
+        }
+
+        [Test]
+        public void ABounce_AllocatesNothing()
+        {
+            // Slides, grips and turning slips (side spin), on every preset.
+            IBounceModel[] models = { CrossBounce.Hard, CrossBounce.Clay, CrossBounce.Grass, CrossBounce.Frictionless };
+            Vector3d n = Vector3d.UnitZ;
+            double sum = 0;
+            for (int pass = 0; pass < 2; pass++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                for (int i = 0; i < 10_000; i++)
+                {
+                    var v = new Vector3d(5 + i % 25, 0.1 * (i % 7), -2 - i % 13);
+                    var w = new Vector3d(40 * (i % 9) - 160, 30 * (i % 11) - 150, i % 5);
+                    BounceOutcome o = models[i % models.Length].Bounce(Tennis, n, v, w);
+                    sum += o.Velocity.X;
+                }
+
+                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                if (pass == 1)
+                {
+                    Assert.That(allocated, Is.EqualTo(0), "bytes allocated by 10,000 bounces after warm-up");
+                }
+            }
+
+            Assert.That(double.IsFinite(sum), Is.True);
         }
 
         public static Surface[] AllSurfaces => Surface.All;

@@ -1,5 +1,6 @@
 using System;
 using System.Linq;
+using MagnusBall.Contact;
 using MagnusBall.Presets;
 using NUnit.Framework;
 
@@ -72,6 +73,31 @@ namespace MagnusBall.Tests.Presets
         }
 
         [Test]
+        public void EveryPreset_StepsWithoutAllocating()
+        {
+            foreach (SportPreset preset in SportPresets.All)
+            {
+                FlightModel model = preset.CreateModel(Air.SeaLevel.WithLogarithmicWind(new Vector3d(3, 0, 1)), Gravity.YUp);
+                var start = new FlightState(new Vector3d(0, 1, 0), new Vector3d(25, 8, 1), new Vector3d(50, 10, 300));
+                Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 100); // warm up
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                FlightState end = Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 2000);
+                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                Assert.That(allocated, Is.EqualTo(0), preset.Name);
+                Assert.That(end.IsFinite, Is.True, preset.Name);
+            }
+        }
+
+        [Test]
+        public void BadPresetArguments_AreRefusedNamingTheParameter()
+        {
+            Assert.That(() => new SportPreset("", Ball.Tennis, null, null, null, "x 2000"), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("name"));
+            Assert.That(() => new SportPreset("x", null!, null, null, null, "x 2000"), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("ball"));
+            Assert.That(() => new SportPreset("x", Ball.Tennis, null, null, null, " "), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("source"));
+            Assert.That(() => SportPresets.Golf.CreateModel(null!, Gravity.ZUp), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("air"));
+        }
+
+        [Test]
         public void Overrides_ReplaceOnePartAndKeepTheRest()
         {
             SportPreset golf = SportPresets.Golf;
@@ -83,6 +109,24 @@ namespace MagnusBall.Tests.Presets
             Assert.That(noDecay.Name, Is.EqualTo("golf"));
             Assert.That(golf.WithBall(Ball.Tennis).Ball, Is.SameAs(Ball.Tennis));
             Assert.That(SportPresets.All.Select(p => p.Name).Distinct().Count(), Is.EqualTo(SportPresets.All.Count));
+        }
+
+        [Test]
+        public void TennisPresets_BounceOnAHardCourt_AndOverridesKeepTheBounce()
+        {
+            Assert.That(SportPresets.Tennis.Bounce, Is.SameAs(CrossBounce.Hard));
+            Assert.That(SportPresets.TennisFreeFlight.Bounce, Is.SameAs(CrossBounce.Hard));
+            Assert.That(SportPresets.Tennis.WithDrag(null).Bounce, Is.SameAs(CrossBounce.Hard));
+            Assert.That(SportPresets.Tennis.WithBounce(CrossBounce.Clay).Bounce, Is.SameAs(CrossBounce.Clay));
+            Assert.That(SportPresets.Golf.Bounce, Is.Null, "no golf bounce model is sourced");
+
+            // The default bounce is a real one: a 25 m/s, 16 degree ball without spin slides and leaves at
+            // 15.81 m/s (physics-references.md section 5, worked hard-court case).
+            double a = 16 * System.Math.PI / 180;
+            BounceOutcome outcome = SportPresets.Tennis.Bounce!.Bounce(
+                new Ball(0.057, 0.033, 0.55), Vector3d.UnitZ, new Vector3d(25 * System.Math.Cos(a), 0, -25 * System.Math.Sin(a)), Vector3d.Zero);
+            // 0.005 m/s: half the last digit of the published 15.81.
+            Assert.That(outcome.Velocity.Length, Is.EqualTo(15.81).Within(0.005));
         }
     }
 }

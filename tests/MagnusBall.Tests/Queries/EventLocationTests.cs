@@ -100,6 +100,35 @@ namespace MagnusBall.Tests.Queries
         }
 
         [Test]
+        public void TennisDriveApexAndNetCrossing_KeepRk4Order()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            FlightState start = TennisDrive(Vector3d.UnitZ);
+            var events = new FlightEvent[4];
+
+            FlightEvent Find(double step, FlightEventKinds kind)
+            {
+                var predictor = new TrajectoryPredictor(model, RungeKutta4.Instance, step, FlightEventSet.ForModel(model, net));
+                Prediction p = predictor.Predict(start, 10, Span<FlightState>.Empty, events, kind);
+                return p.StopEvent;
+            }
+
+            foreach (FlightEventKinds kind in new[] { FlightEventKinds.Apex, FlightEventKinds.PlaneCrossing })
+            {
+                FlightEvent reference = Find(1.0 / 15360, kind);
+                FlightEvent coarse = Find(1.0 / 60, kind);
+                double error = Vector3d.Distance(coarse.Position, reference.Position);
+                TestContext.Out.WriteLine($"{kind} at t {reference.Time:F6} s; RK4 1/60 s: position error {error:E2} m");
+                Assert.That(coarse.Kind, Is.EqualTo(kind));
+
+                // The same bound as the landing at 1/60 s (1e-5 m): the apex uses the velocity interpolant,
+                // the net crossing the position interpolant, both O(h^4).
+                Assert.That(error, Is.LessThan(1e-5), kind.ToString());
+            }
+        }
+
+        [Test]
         public void FirstStepBelowGround_MissesByFarMore()
         {
             var model = Shots.StepanekTennis(Gravity.ZUp);

@@ -29,7 +29,9 @@ namespace MagnusBall.Tests.Stepping
         private static readonly (string Name, double[] Deltas)[] Sequences =
             FrameSequences().Select(c => ((string)c.Arguments[0]!, (double[])c.Arguments[1]!)).ToArray();
 
-        [TestCaseSource(typeof(Integrators), nameof(Integrators.All))]
+        public static IEnumerable<IIntegrator> DriverIntegrators() => Integrators.All.Append(StableIntegrator.RungeKutta4);
+
+        [TestCaseSource(nameof(DriverIntegrators))]
         public void FixedStepDriver_LandsOnTheSameBits_AtEveryFrameRate(IIntegrator integrator)
         {
             FrameEvent reference = DriverShots.LandWithDriver(DriverShots.YUpTennis, integrator, Step, DriverShots.Drive, DriverShots.FixedRate(60, 1));

@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Generic;
+using MagnusBall.Contact;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 using MagnusBall.Stepping;
 using NUnit.Framework;
 
@@ -13,8 +15,10 @@ namespace MagnusBall.Tests.Stepping
         // Binary fractions, so the accumulator arithmetic below is exact and step counts are certain.
         private const double Step = 1.0 / 256;
 
-        private static FixedStepDriver NewDriver(FlightState? start = null, FlightPlane[]? planes = null, double clamp = 0.25, int maxSteps = 0) =>
-            new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, start ?? DriverShots.Drive, default, planes, clamp, maxSteps);
+        private static FixedStepDriver NewDriver(FlightState? start = null, Plane[]? planes = null, double clamp = 0.25, int maxSteps = 0, IBounceModel? bounce = null) =>
+            new FixedStepDriver(
+                DriverShots.YUpTennis, RungeKutta4.Instance, Step, start ?? DriverShots.Drive,
+                new FlightEventSet(DriverShots.Up, Plane.Ground(DriverShots.YUpTennis), planes), bounce, clamp, maxSteps);
 
         [Test]
         public void Advance_TakesWholeStepsAndKeepsTheRemainder()
@@ -125,7 +129,10 @@ namespace MagnusBall.Tests.Stepping
                 AdvanceResult result = driver.Advance(1.0 / 60, events);
                 for (int e = 0; e < result.EventCount; e++)
                 {
-                    landings.Add(events[e]);
+                    if (events[e].Kind != FrameEventKind.Apex)
+                    {
+                        landings.Add(events[e]);
+                    }
                 }
             }
 
@@ -135,7 +142,7 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(landing.PlaneIndex, Is.EqualTo(-1));
             // 1e-12 m: the crossing is bisected to 1e-15 of a step, where the ball moves about 0.1 m.
             Assert.That(landing.Position.Y, Is.EqualTo(0).Within(1e-12));
-            Assert.That(driver.HasLanded, Is.True);
+            Assert.That(driver.IsFinished, Is.True);
             Assert.That(driver.State.Position, Is.EqualTo(landing.Position));
             Assert.That(driver.RenderState.Position, Is.EqualTo(landing.Position), "the render state comes to rest at the landing");
             Assert.That(driver.Advance(0.1).StepsTaken, Is.EqualTo(0));
@@ -155,18 +162,18 @@ namespace MagnusBall.Tests.Stepping
         [Test]
         public void PlaneCrossings_AreReportedInTimeOrder_BeforeTheLanding()
         {
-            FlightPlane[] planes =
+            Plane[] planes =
             {
-                new FlightPlane(new Vector3d(18, 0, 0), Vector3d.UnitX),      // a line far up the court
-                new FlightPlane(new Vector3d(11.885, 0, 0), Vector3d.UnitX),  // the net
-                new FlightPlane(new Vector3d(40, 0, 0), Vector3d.UnitX),      // beyond the landing: never reported
-                new FlightPlane(new Vector3d(5, 0, 0), -Vector3d.UnitX),      // crossed against its normal: not reported
+                new Plane(new Vector3d(18, 0, 0), Vector3d.UnitX),      // a line far up the court
+                new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX),  // the net
+                new Plane(new Vector3d(40, 0, 0), Vector3d.UnitX),      // beyond the landing: never reported
+                new Plane(new Vector3d(5, 0, 0), -Vector3d.UnitX),      // crossed against its normal: not reported
             };
             FixedStepDriver driver = NewDriver(planes: planes);
             Span<FrameEvent> events = stackalloc FrameEvent[8];
             // One long frame holding the whole flight, so the ordering is within one buffer.
             var reported = new List<FrameEvent>();
-            for (int i = 0; i < 8 && !driver.HasLanded; i++)
+            for (int i = 0; i < 8 && !driver.IsFinished; i++)
             {
                 AdvanceResult result = driver.Advance(0.25, events);
                 for (int e = 0; e < result.EventCount; e++)
@@ -175,6 +182,10 @@ namespace MagnusBall.Tests.Stepping
                 }
             }
 
+            FrameEvent apex = reported.Find(e => e.Kind == FrameEventKind.Apex);
+            // 1e-9 m/s: the apex is located to 1e-12 s, where the vertical speed changes by 1e-11 m/s.
+            Assert.That(apex.State.Velocity.Y, Is.EqualTo(0).Within(1e-9));
+            reported.RemoveAll(e => e.Kind == FrameEventKind.Apex);
             Assert.That(reported.ConvertAll(e => e.PlaneIndex), Is.EqualTo(new[] { 1, 0, -1 }));
             Assert.That(reported[2].Kind, Is.EqualTo(FrameEventKind.Landing));
             // 1e-12 m: bisection to 1e-15 of a step.
@@ -187,7 +198,7 @@ namespace MagnusBall.Tests.Stepping
         [Test]
         public void EventsThatDoNotFit_AreCounted()
         {
-            FixedStepDriver driver = NewDriver(planes: new[] { new FlightPlane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) });
+            FixedStepDriver driver = NewDriver(planes: new[] { new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) });
             int lost = 0;
             for (int i = 0; i < 8; i++)
             {
@@ -196,16 +207,17 @@ namespace MagnusBall.Tests.Stepping
                 lost += result.EventsNotReported;
             }
 
-            Assert.That(lost, Is.EqualTo(2), "the net crossing and the landing");
+            Assert.That(lost, Is.EqualTo(3), "the apex, the net crossing and the landing");
         }
 
-        [Test]
-        public void AWholeFlight_AllocatesNothing()
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AWholeFlight_AllocatesNothing(bool bouncing)
         {
-            var planes = new[] { new FlightPlane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) };
+            var planes = new[] { new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) };
             var events = new FrameEvent[4];
             double[] deltas = DriverShots.Jittery(7, 64);
-            FixedStepDriver driver = NewDriver(planes: planes);
+            FixedStepDriver driver = NewDriver(planes: planes, bounce: bouncing ? CrossBounce.Clay : null);
             Fly(driver, events, deltas); // warm up: JIT and static initialisation
 
             driver.Reset(DriverShots.Drive);
@@ -220,7 +232,7 @@ namespace MagnusBall.Tests.Stepping
         private static int Fly(FixedStepDriver driver, FrameEvent[] events, double[] deltas)
         {
             int frame = 0;
-            while (!driver.HasLanded && frame < 10_000)
+            while (!driver.IsFinished && frame < 10_000)
             {
                 driver.Advance(deltas[frame % deltas.Length], events);
                 _ = driver.RenderState;
@@ -263,7 +275,10 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(Assert.Throws<ArgumentException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, bad))!.ParamName, Is.EqualTo("start"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, maxFrameDeltaSeconds: 0))!.ParamName, Is.EqualTo("maxFrameDeltaSeconds"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, maxStepsPerAdvance: -1))!.ParamName, Is.EqualTo("maxStepsPerAdvance"));
-            Assert.That(Assert.Throws<ArgumentException>(() => new FlightPlane(Vector3d.Zero, Vector3d.Zero))!.ParamName, Is.EqualTo("normal"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, restNormalSpeed: -1))!.ParamName, Is.EqualTo("restNormalSpeed"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, rollingResistance: double.NaN))!.ParamName, Is.EqualTo("rollingResistance"));
+            var noGround = new FlightEventSet(DriverShots.Up);
+            Assert.That(Assert.Throws<ArgumentException>(() => new FixedStepDriver(model, RungeKutta4.Instance, Step, good, noGround, CrossBounce.Hard))!.ParamName, Is.EqualTo("bounce"));
 
             FixedStepDriver driver = NewDriver();
             driver.Advance(0.1);
@@ -276,13 +291,13 @@ namespace MagnusBall.Tests.Stepping
         public void Reset_StartsAgain()
         {
             FixedStepDriver driver = NewDriver();
-            while (!driver.HasLanded)
+            while (!driver.IsFinished)
             {
                 driver.Advance(0.1);
             }
 
             driver.Reset(DriverShots.Drive);
-            Assert.That(driver.HasLanded, Is.False);
+            Assert.That(driver.IsFinished, Is.False);
             Assert.That(driver.TotalSteps, Is.EqualTo(0));
             Assert.That(driver.RenderState.Position, Is.EqualTo(DriverShots.Drive.Position));
             Assert.That(driver.Advance(Step).StepsTaken, Is.EqualTo(1));

@@ -10,7 +10,7 @@ namespace MagnusBall.Tests.Validation
     /// with shared/ beside it (repo/../shared/reference); locally the worktree may sit deeper, so the search
     /// walks up from the test assembly's directory, checking each ancestor and its "shared" child.
     /// </summary>
-    internal static class ReferenceData
+    internal static class PublishedCases
     {
         public static string Directory()
         {

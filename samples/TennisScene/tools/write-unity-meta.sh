@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Writes the Unity .meta file of every file and folder in the MagnusBall package (src/MagnusBall) that has
+# none. Unity ignores files without a .meta in a package it takes from a git URL (such packages are
+# read-only, so Unity cannot write the .meta itself). GUIDs are derived from the path (MD5), so running
+# this twice, or on two machines, gives the same files. Run it after adding a file to src/MagnusBall:
+#   bash samples/TennisScene/tools/write-unity-meta.sh
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+root=src/MagnusBall
+written=0
+
+guid() { printf '%s' "com.magnusball.core/$1" | md5sum | cut -c1-32; }
+
+write() { # path importer-block
+  local path="$1" block="$2" rel="${1#"$root"/}"
+  [ -e "$path.meta" ] && return 0
+  printf 'fileFormatVersion: 2\nguid: %s\n%s\n' "$(guid "$rel")" "$block" > "$path.meta"
+  written=$((written + 1))
+}
+
+importer() { # name [extra lines]
+  printf '%s:\n%s  externalObjects: {}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n' "$1" "${2:-}"
+}
+
+mono=$'  serializedVersion: 2\n  defaultReferences: []\n  executionOrder: 0\n  icon: {instanceID: 0}\n'
+
+while IFS= read -r -d '' dir; do
+  [ "$dir" = "$root" ] && continue
+  write "$dir" "folderAsset: yes
+$(importer DefaultImporter)"
+done < <(find "$root" \( -name bin -o -name obj \) -prune -o -type d -print0)
+
+while IFS= read -r -d '' file; do
+  case "$file" in
+    *.meta) continue ;;
+    *.cs) write "$file" "$(importer MonoImporter "$mono")" ;;
+    */package.json) write "$file" "$(importer PackageManifestImporter)" ;;
+    *.asmdef) write "$file" "$(importer AssemblyDefinitionImporter)" ;;
+    *) write "$file" "$(importer DefaultImporter)" ;;
+  esac
+done < <(find "$root" \( -name bin -o -name obj \) -prune -o -type f -print0)
+
+echo "wrote $written .meta file(s) under $root"

@@ -1,0 +1,152 @@
+using System;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Queries
+{
+    [TestFixture]
+    public class AimSolverTests
+    {
+        private const double G = 9.81;
+        private const double Degree = Math.PI / 180;
+
+        private static FlightModel Vacuum => FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, 0, -G));
+
+        // RK4 and the Hermite are exact for the vacuum parabola, so the solver's own tolerance (1e-8 rad,
+        // 1e-8 m/s) and rounding are all that separate it from the closed forms.
+        private static AimSolver VacuumSolver() => new AimSolver(Vacuum, RungeKutta4.Instance, 1.0 / 60, new Plane(default, Vector3d.UnitZ));
+
+        [Test]
+        public void ElevationToReach_MatchesTheVacuumRangeFormula()
+        {
+            double v = 20, range = 30;
+            AimSolution s = VacuumSolver().ElevationToReach(default, v, LaunchSpin.None, new Vector3d(range, 0, 0));
+            double expected = 0.5 * Math.Asin(G * range / (v * v));
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.ElevationRadians, Is.EqualTo(expected).Within(2e-8), "the low solution, not the lob");
+            Assert.That(s.Miss, Is.LessThan(1e-6));
+        }
+
+        [Test]
+        public void MinimumElevationToClear_MatchesTheVacuumClosedForm()
+        {
+            double v = 25, x = 12, y0 = 1, h = 0.9;
+            AimSolution s = VacuumSolver().MinimumElevationToClear(
+                new Vector3d(0, 0, y0), v, 0, LaunchSpin.None, new Plane(new Vector3d(x, 0, 0), Vector3d.UnitX), h);
+
+            // y0 + x T - a (1 + T^2) = h with T = tan(elevation), a = g x^2 / (2 v^2): the lower root.
+            double a = G * x * x / (2 * v * v);
+            double t = (x - Math.Sqrt(x * x - 4 * a * (a + h - y0))) / (2 * a);
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.ElevationRadians, Is.EqualTo(Math.Atan(t)).Within(2e-8));
+            Assert.That(s.Arrival.Position.Z, Is.EqualTo(h).Within(1e-6));
+            Assert.That(s.Arrival.Position.Z, Is.GreaterThanOrEqualTo(h), "the returned elevation clears");
+        }
+
+        [Test]
+        public void SpeedToReach_MatchesTheVacuumClosedForm()
+        {
+            double e = 10 * Degree, x = 20, y0 = 1;
+            AimSolution s = VacuumSolver().SpeedToReach(new Vector3d(0, 0, y0), e, 0, LaunchSpin.None, new Vector3d(x, 0, 0));
+            double expected = Math.Sqrt(G * x * x / (2 * Math.Cos(e) * Math.Cos(e) * (x * Math.Tan(e) + y0)));
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.Speed, Is.EqualTo(expected).Within(1e-7));
+        }
+
+        [Test]
+        public void AnglesToReach_PutsACurvingBallThroughTheTarget()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            var solver = new AimSolver(model, RungeKutta4.Instance, 1.0 / 120, Plane.Ground(model));
+            var target = new Vector3d(20, -2, 1.5);
+            var spin = new LaunchSpin(Spin.FromRpm(1500), Spin.FromRpm(1200));
+            AimSolution s = solver.AnglesToReach(new Vector3d(0, 0, 1), 28, spin, target);
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.Miss, Is.LessThan(1e-5));
+
+            // The solved launch, flown by the predictor, really passes the target.
+            var frame = new LaunchFrame(Vector3d.UnitZ, target - new Vector3d(0, 0, 1));
+            var plane = new Plane(target, frame.Forward);
+            var predictor = new TrajectoryPredictor(model, RungeKutta4.Instance, 1.0 / 120, FlightEventSet.ForModel(model, plane));
+            Prediction p = predictor.Predict(s.LaunchState(new Vector3d(0, 0, 1)), 5, Span<Vector3d>.Empty, FlightEventKinds.PlaneCrossing);
+            Assert.That(Vector3d.Distance(p.EndState.Position, target), Is.LessThan(1e-5));
+        }
+
+        [Test]
+        public void OutOfReach_IsUnreachableNotAnException()
+        {
+            AimSolver solver = VacuumSolver();
+            Assert.That(solver.ElevationToReach(default, 10, LaunchSpin.None, new Vector3d(200, 0, 0)).Status, Is.EqualTo(AimStatus.Unreachable));
+            Assert.That(solver.AnglesToReach(default, 10, LaunchSpin.None, new Vector3d(200, 30, 0)).Status, Is.EqualTo(AimStatus.Unreachable));
+            Assert.That(
+                solver.MinimumElevationToClear(default, 10, 0, LaunchSpin.None, new Plane(new Vector3d(5, 0, 0), Vector3d.UnitX), 50).Status,
+                Is.EqualTo(AimStatus.Unreachable));
+            Assert.That(solver.SpeedToReach(default, -30 * Degree, 0, LaunchSpin.None, new Vector3d(20, 0, 5)).Status, Is.EqualTo(AimStatus.Unreachable));
+
+            // A plane behind the player is never crossed along its normal: that is a wrong argument (most likely the
+            // plane's normal points the wrong way), not an unreachable shot (LaunchAndSegmentInputTests).
+            var behind = Assert.Throws<ArgumentException>(
+                () => solver.MinimumElevationToClear(new Vector3d(10, 0, 1), 20, 0, LaunchSpin.None, new Plane(default, Vector3d.UnitX), 1));
+            Assert.That(behind!.ParamName, Is.EqualTo("position"));
+        }
+
+        [Test]
+        public void LaunchSpin_TurnsWithTheAim()
+        {
+            var frame = new LaunchFrame(Vector3d.UnitZ, Vector3d.UnitX);
+            for (int az = -60; az <= 60; az += 30)
+            {
+                Vector3d d = frame.Direction(8 * Degree, az * Degree);
+                Vector3d w = new LaunchSpin(100).AngularVelocity(d, frame);
+                Assert.That((w - Spin.Topspin(d, Vector3d.UnitZ, 100)).Length, Is.LessThan(1e-12), "topspin by effect");
+                Vector3d side = new LaunchSpin(0, 100).AngularVelocity(d, frame);
+                Assert.That(Vector3d.Dot(side, d), Is.EqualTo(0).Within(1e-12));
+                Assert.That(side.Length, Is.EqualTo(100).Within(1e-12));
+                Assert.That(Vector3d.Dot(Vector3d.Cross(side, d), frame.Side), Is.GreaterThan(0), "sidespin pushes toward the side");
+            }
+        }
+
+        [Test]
+        public void Solves_AllocateNothing()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            var solver = new AimSolver(model, RungeKutta4.Instance, 1.0 / 60, Plane.Ground(model));
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            var spin = new LaunchSpin(Spin.FromRpm(1200), Spin.FromRpm(300));
+            var start = new Vector3d(0, 0, 1);
+            var target = new Vector3d(22, 2, 0);
+
+            double Solve() =>
+                solver.MinimumElevationToClear(start, 30, 0, spin, net, 0.914).ElevationRadians
+                + solver.ElevationToReach(start, 30, spin, target).ElevationRadians
+                + solver.AnglesToReach(start, 30, spin, target).AzimuthRadians
+                + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
+
+            Solve();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            double sum = Solve();
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(allocated, Is.EqualTo(0));
+            Assert.That(double.IsFinite(sum), Is.True);
+        }
+
+        [Test]
+        public void BadInput_NamesTheParameter()
+        {
+            AimSolver solver = VacuumSolver();
+            var target = new Vector3d(10, 0, 0);
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.ElevationToReach(default, double.NaN, LaunchSpin.None, target))!.ParamName, Is.EqualTo("speed"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.ElevationToReach(default, -1, LaunchSpin.None, target))!.ParamName, Is.EqualTo("speed"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.ElevationToReach(default, 10, LaunchSpin.None, new Vector3d(0, 0, 5)))!.ParamName, Is.EqualTo("target"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.ElevationToReach(default, 10, LaunchSpin.None, new Vector3d(double.NaN, 0, 0)))!.ParamName, Is.EqualTo("target"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.SpeedToReach(default, 2, 0, LaunchSpin.None, target))!.ParamName, Is.EqualTo("elevationRadians"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.MinimumElevationToClear(default, 10, 0, LaunchSpin.None, new Plane(default, Vector3d.UnitZ), 1))!.ParamName, Is.EqualTo("plane"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new LaunchSpin(double.NaN))!.ParamName, Is.EqualTo("topspin"));
+            Assert.That(Assert.Throws<ArgumentException>(() => new AimSolver(FlightModel.Vacuum(Ball.Tennis, Vector3d.Zero), RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ)))!.ParamName, Is.EqualTo("model"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new AimSolver(Vacuum, RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ), minimumElevationDegrees: 10, maximumElevationDegrees: 5))!.ParamName, Is.EqualTo("maximumElevationDegrees"));
+            Assert.That(Assert.Throws<ArgumentException>(() => new LaunchFrame(Vector3d.UnitZ, new Vector3d(0, 0, 2)))!.ParamName, Is.EqualTo("forward"));
+        }
+    }
+}

@@ -1,0 +1,109 @@
+using System;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace MagnusBall.UnityScripts.Tests
+{
+    /// <summary>The headless tennis scene (README's main job) as a process: its table, its picture and its errors.</summary>
+    [TestFixture]
+    public class HeadlessRunnerTests
+    {
+        private static (int ExitCode, string Output, string Error) Run(params string[] args)
+        {
+            // tests/MagnusBall.UnityScripts.Tests/bin/<configuration>/net10.0 -> samples/TennisScene/Headless/bin/<configuration>/net10.0
+            var here = new DirectoryInfo(TestContext.CurrentContext.TestDirectory);
+            string configuration = here.Parent!.Name;
+            string root = here.Parent!.Parent!.Parent!.Parent!.Parent!.FullName;
+            string dll = Path.Combine(root, "samples", "TennisScene", "Headless", "bin", configuration, here.Name, "TennisScene.Headless.dll");
+            Assert.That(File.Exists(dll), Is.True, dll);
+
+            var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")
+            {
+                RedirectStandardOutput = true,
+                RedirectStandardError = true,
+                UseShellExecute = false,
+            };
+            start.ArgumentList.Add(dll);
+            foreach (string arg in args)
+            {
+                start.ArgumentList.Add(arg);
+            }
+
+            using Process process = Process.Start(start)!;
+            string output = process.StandardOutput.ReadToEnd();
+            string error = process.StandardError.ReadToEnd();
+            process.WaitForExit();
+            return (process.ExitCode, output, error);
+        }
+
+        [Test]
+        public void TheSixShots_AllLandIn_AndThePictureIsWritten()
+        {
+            string svg = Path.Combine(Path.GetTempPath(), $"tennis-scene-{Guid.NewGuid():N}.svg");
+            try
+            {
+                (int code, string output, string error) = Run("--svg", svg);
+                TestContext.Out.WriteLine(output);
+                Assert.That(code, Is.EqualTo(0), error);
+                string[] rows = output.Split('\n');
+                foreach (string shot in new[] { "flat serve", "kick serve", "topspin forehand", "slice backhand", "topspin lob", "drop shot" })
+                {
+                    string row = rows.Single(r => r.StartsWith(shot, StringComparison.Ordinal));
+                    Assert.That(row.Split(' ', StringSplitOptions.RemoveEmptyEntries), Does.Contain("in"), row);
+                }
+
+                Assert.That(output, Does.Contain("picture: " + svg));
+                string picture = File.ReadAllText(svg);
+                Assert.That(picture, Does.StartWith("<svg"));
+                Assert.That(picture.Split("<polyline").Length - 1, Is.EqualTo(12), "six shots in two views");
+            }
+            finally
+            {
+                File.Delete(svg);
+            }
+        }
+
+        [TestCase("--speed", "fast", "--speed must be a finite number")]
+        [TestCase("--elevation", "95", "--elevation must be in [-89.9, 89.9]")]
+        [TestCase("--shot", "smash", "--shot must be one of")]
+        [TestCase("--integrator", "verlet", "integrator must be one of")]
+        [TestCase("--frobnicate", null, "unknown option '--frobnicate'")]
+        [TestCase("--step", null, "--step needs a value")]
+        [TestCase("--aim", "9.5", "--aim must be two finite numbers X,Z")]
+        [TestCase("--aim", "60,0", "cannot be reached")]
+        public void BadOptions_ExitWithCode2_AndSayWhatIsWrong(string option, string? value, string message)
+        {
+            (int code, string output, string error) = value == null ? Run(option, "--no-svg") : Run(option, value, "--no-svg");
+            if (option == "--step")
+            {
+                (code, output, error) = Run("--no-svg", option);
+            }
+
+            Assert.That(code, Is.EqualTo(2));
+            Assert.That(error, Does.Contain(message));
+            Assert.That(output, Is.Empty);
+        }
+
+        [Test]
+        public void Aim_SolvesTheAngles_SoTheBallLandsOnTheTarget()
+        {
+            // The kick serve's speed and spin (with sidespin, so the sidespin sign convention is exercised), aimed
+            // at a point in the deuce box; the table prints the landing to the centimetre.
+            (int code, string output, string error) = Run("--shot", "kick serve", "--aim", "5.5,3", "--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            string row = output.Split('\n').Single(r => r.StartsWith("custom shot", StringComparison.Ordinal));
+            Assert.That(row, Does.Contain("  5.50,  3.00 in"), row);
+        }
+
+        [Test]
+        public void OneCustomShot_IsOneRow()
+        {
+            (int code, string output, string error) = Run("--speed", "28", "--elevation", "10", "--topspin", "3000", "--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            Assert.That(output.Split('\n').Count(r => r.StartsWith("custom shot", StringComparison.Ordinal)), Is.EqualTo(1));
+            Assert.That(output, Does.Not.Contain("picture:"));
+        }
+    }
+}
