@@ -218,16 +218,18 @@ namespace MagnusBall.Benchmarks
         private StateDerivative[] _derivatives = null!;
         private FlightState[] _starts = null!;
 
-        [Params("rk4", "stable-rk4", "semi-implicit-euler")]
+        [Params("rk4", "stable-rk4", "semi-implicit-euler", "rk4 on 2 threads")]
         public string Method { get; set; } = "rk4";
 
         private IIntegrator _integrator = null!;
+        private Action<int> _half = null!;
 
         [GlobalSetup]
         public void Setup()
         {
             _model = Scenarios.FullTennis();
-            _integrator = Method == "stable-rk4" ? StableIntegrator.RungeKutta4 : Integrators.FromName(Method);
+            _integrator = Method == "stable-rk4" ? StableIntegrator.RungeKutta4 : Method == "rk4 on 2 threads" ? RungeKutta4.Instance : Integrators.FromName(Method);
+            _half = part => Advance(part * BallCount / 2, (part + 1) * BallCount / 2);
             var random = new Random(1);
             _starts = new FlightState[BallCount];
             _states = new FlightState[BallCount];
@@ -254,13 +256,26 @@ namespace MagnusBall.Benchmarks
         [Benchmark(Description = "1,000 balls x one 60 FPS frame (4 steps of 1/240 s)")]
         public void OneFrame()
         {
+            if (Method == "rk4 on 2 threads")
+            {
+                // The balls are independent: one half per core (Parallel.For allocates a little per call).
+                System.Threading.Tasks.Parallel.For(0, 2, _half);
+            }
+            else
+            {
+                Advance(0, BallCount);
+            }
+        }
+
+        private void Advance(int from, int to)
+        {
             FlightModel model = _model;
             IIntegrator integrator = _integrator;
             FlightState[] states = _states;
             StateDerivative[] derivatives = _derivatives;
             for (int step = 0; step < 4; step++)
             {
-                for (int i = 0; i < states.Length; i++)
+                for (int i = from; i < to; i++)
                 {
                     FlightState next = integrator.Step(model, states[i], derivatives[i], 1.0 / 240);
                     states[i] = next;

@@ -29,6 +29,14 @@ namespace MagnusBall.Benchmarks
                     return 0;
                 case "kernel":
                     return Kernel.Run(args[1], long.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture));
+                case "peers-check":
+                    {
+                        var peers = new Peers();
+                        peers.Setup();
+                        Console.WriteLine($"x after 480 steps: MagnusBall {peers.MagnusBallRk4():R}, MathNet {peers.MathNet():R}, thesis-style {peers.ThesisStyle():R}");
+                        return 0;
+                    }
+
                 case "blowup":
                     Console.WriteLine(ExtremesReport.BlowUp());
                     return 0;

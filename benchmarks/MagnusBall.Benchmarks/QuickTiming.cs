@@ -32,6 +32,11 @@ namespace MagnusBall.Benchmarks
                 Console.WriteLine($"Derivative (thesis model):     {Time(() => model.Derivative(s).Acceleration.X, 1):F1} ns");
                 FlightModel fm = Scenarios.FullTennis();
                 Console.WriteLine($"Derivative (full model):       {Time(() => fm.Derivative(s).Acceleration.X, 1):F1} ns");
+                FlightModel dm = Scenarios.DragOnlyTennis();
+                Console.WriteLine($"Derivative (drag-only model):  {Time(() => dm.Derivative(s).Acceleration.X, 1):F1} ns");
+                double sp = 0.2;
+                Console.WriteLine($"StepanekDrag.Evaluate:         {Time(() => Aerodynamics.StepanekDrag.Evaluate(sp += 1e-9), 1):F1} ns");
+                Console.WriteLine($"StepanekLift.Evaluate:         {Time(() => Aerodynamics.StepanekLift.Evaluate(sp += 1e-9), 1):F1} ns");
             }
         }
 

@@ -131,7 +131,8 @@ namespace MagnusBall.Benchmarks
             sb.AppendLine($"run time {seconds:F0} s). Machine: {Environment.ProcessorCount} cores, {System.Runtime.InteropServices.RuntimeInformation.OSDescription}, .NET {Environment.Version}; the machine was shared with other jobs, so times are the fastest of repeated runs and can be off by tens of per cent; evaluation counts are exact.");
             sb.AppendLine();
             sb.AppendLine("Each shot is flown with a fixed step from launch until the ball's centre comes down through height 0; the landing is");
-            sb.AppendLine("located on the cubic Hermite through the last step's end states and velocities (no extra evaluation). The error is the");
+            sb.AppendLine("located on the cubic Hermite of the step in which it lands (the queries' `HermiteSegment.TryFindCrossing`, built from");
+            sb.AppendLine("the step's end states and end derivatives, so no extra evaluation). The error is the");
             sb.AppendLine("distance from that landing point to the reference landing point. Cost is counted in derivative evaluations (the");
             sb.AppendLine("honest unit across methods) and in microseconds for the whole flight, single-threaded.");
             sb.AppendLine();
