@@ -138,7 +138,6 @@ namespace MagnusBall
         /// of cost every integrator is measured in. Allocates nothing; finite for every finite state.
         /// </summary>
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public StateDerivative Derivative(in FlightState state)
         {
             Vector3d acceleration = Gravity;
