@@ -101,8 +101,8 @@ namespace MagnusBall.Tests.Contact
         [TestCaseSource(nameof(Cases))]
         public void TheDriverAndBouncingFlight_BounceAtTheSamePoints(Surface surface, Court court)
         {
-            // Two steppings of the same flight: the driver restarts its step grid at each bounce, BouncingFlight
-            // finishes the step it was in. They agree to the integration error, not bit for bit.
+            // The driver steps a BouncingFlight of its own with the ball-centre ground one radius up; this one
+            // bounces on the court plane directly. They agree to the integration error, not bit for bit.
             List<FrameEvent> driver = Touches(surface, court, Stepping.DriverShots.FixedRate(60, 1));
             FlightModel model = Model(court);
             var flight = new BouncingFlight(model, RungeKutta4.Instance, new CrossBounce(surface), new Plane(Vector3d.Zero, court.Frame.Up), Drive(court));
