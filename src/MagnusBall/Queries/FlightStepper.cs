@@ -99,8 +99,8 @@ namespace MagnusBall.Queries
         /// (see <see cref="Events"/>). Allocates nothing.
         /// </summary>
         /// <remarks>
-        /// A step far beyond the integrator's stability limit for this ball and speed (explicit methods need
-        /// roughly step &lt; 2.8 / (k C_D s), k = <see cref="FlightModel.AerodynamicFactor"/>) makes the state
+        /// A step far beyond the integrator's stability limit for this ball and speed (explicit methods diverge
+        /// beyond about step = 2 / (k C_D s), 2.45 / (k C_D s) for RK4, k = <see cref="FlightModel.AerodynamicFactor"/>) makes the state
         /// overflow. <see cref="Step"/> still takes it, reports no events, and leaves the non-finite state in
         /// <see cref="State"/> for the caller to detect (<see cref="FlightState.IsFinite"/>); the next step then
         /// throws. <see cref="TryStep"/> refuses such a step instead and keeps the last finite state.
