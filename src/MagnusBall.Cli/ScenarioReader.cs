@@ -165,22 +165,14 @@ namespace MagnusBall.Cli
         }
 
         /// <summary>
-        /// The integrator names a scenario accepts: every name <see cref="Integrators.FromName"/> knows, plus the
-        /// library's Dormand-Prince 5(4) pair used as a fixed-step fifth-order method ("dp54"; not in
-        /// <see cref="Integrators.All"/> because it is also adaptive).
+        /// The integrator names a scenario accepts: every name <see cref="Integrators.FromName"/> knows (the four
+        /// classic methods, "dp54" at a fixed step and the safe "stable-rk4").
         /// </summary>
-        public static IReadOnlyList<string> IntegratorNames =>
-            Integrators.Names.Concat(new[] { DormandPrince54.Instance.Name }).Distinct(StringComparer.OrdinalIgnoreCase).ToArray();
+        public static IReadOnlyList<string> IntegratorNames => Integrators.Names;
 
         private static IIntegrator ReadIntegrator(JsonFields s)
         {
             string name = s.String("integrator", DefaultIntegrator);
-            if (string.Equals(name, DormandPrince54.Instance.Name, StringComparison.OrdinalIgnoreCase) &&
-                !Integrators.Names.Contains(name, StringComparer.OrdinalIgnoreCase))
-            {
-                return DormandPrince54.Instance;
-            }
-
             try
             {
                 return Integrators.FromName(name);

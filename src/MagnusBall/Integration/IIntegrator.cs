@@ -64,14 +64,32 @@ namespace MagnusBall.Integration
     /// <summary>The integrators the library ships, by name.</summary>
     public static class Integrators
     {
-        /// <summary>Every fixed-step integrator, lowest order first.</summary>
+        /// <summary>
+        /// Every integrator usable at a fixed step, lowest order first: the four classic methods, Dormand-Prince
+        /// 5(4) at a fixed step ("dp54", its fifth-order solution) and the safe default
+        /// <see cref="StableIntegrator.RungeKutta4"/> ("stable-rk4"). A new array on each call.
+        /// </summary>
         public static IIntegrator[] All => new IIntegrator[]
         {
             ExplicitEuler.Instance, SemiImplicitEuler.Instance, Heun.Instance, RungeKutta4.Instance,
+            DormandPrince54.Instance, StableIntegrator.RungeKutta4,
         };
 
-        /// <summary>The names <see cref="FromName"/> accepts.</summary>
-        public static string[] Names => new[] { ExplicitEuler.Instance.Name, SemiImplicitEuler.Instance.Name, Heun.Instance.Name, RungeKutta4.Instance.Name };
+        /// <summary>The names <see cref="FromName"/> accepts (a new array on each call).</summary>
+        public static string[] Names
+        {
+            get
+            {
+                IIntegrator[] all = All;
+                var names = new string[all.Length];
+                for (int i = 0; i < all.Length; i++)
+                {
+                    names[i] = all[i].Name;
+                }
+
+                return names;
+            }
+        }
 
         /// <summary>The integrator called <paramref name="name"/> (case-insensitive).</summary>
         /// <param name="name">One of <see cref="Names"/>.</param>
