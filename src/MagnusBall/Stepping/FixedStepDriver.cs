@@ -132,7 +132,8 @@ namespace MagnusBall.Stepping
             MaxStepsPerAdvance = maxStepsPerAdvance > 0 ? maxStepsPerAdvance : (int)Math.Min(defaultSteps, int.MaxValue);
 
             _eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
-            _scratch = new FlightEvent[_eventSet?.MaximumEventsPerStep ?? 0];
+            // Only the bouncing path scans steps itself; without a bounce model the FlightStepper holds the events.
+            _scratch = new FlightEvent[bounce == null ? 0 : _eventSet?.MaximumEventsPerStep ?? 0];
             _bounce = bounce;
             _bounceScratch = new BounceEvent[bounce == null ? 0 : BouncingFlight.MaxSegmentsPerStep];
             if (bounce != null)
@@ -254,7 +255,6 @@ namespace MagnusBall.Stepping
         {
             RequireFiniteState(start, nameof(start));
             _state = start;
-            _derivative = Model.Derivative(start);
             _latest = default;
             _older = default;
             _segmentCount = 0;
@@ -262,7 +262,16 @@ namespace MagnusBall.Stepping
             _finished = false;
             _totalSteps = 0;
             _flight?.Reset(start);
-            _stepper?.Reset(start);
+            if (_stepper != null)
+            {
+                // The stepper evaluates the start derivative once; the driver keeps the same one.
+                _stepper.Reset(start);
+                _derivative = _stepper.Derivative;
+            }
+            else
+            {
+                _derivative = Model.Derivative(start);
+            }
         }
 
         /// <summary>
