@@ -12,11 +12,10 @@ namespace MagnusBall.UnityScripts.Tests
     {
         private static (int ExitCode, string Output, string Error) Run(params string[] args)
         {
-            // tests/MagnusBall.UnityScripts.Tests/bin/<configuration>/net10.0 -> samples/TennisScene/Headless/bin/<configuration>/net10.0
+            // artifacts/bin/MagnusBall.UnityScripts.Tests/<configuration> -> artifacts/bin/TennisScene.Headless/<configuration>
+            // (Directory.Build.props puts every project's output under artifacts/).
             var here = new DirectoryInfo(TestContext.CurrentContext.TestDirectory);
-            string configuration = here.Parent!.Name;
-            string root = here.Parent!.Parent!.Parent!.Parent!.Parent!.FullName;
-            string dll = Path.Combine(root, "samples", "TennisScene", "Headless", "bin", configuration, here.Name, "TennisScene.Headless.dll");
+            string dll = Path.Combine(here.Parent!.Parent!.FullName, "TennisScene.Headless", here.Name, "TennisScene.Headless.dll");
             Assert.That(File.Exists(dll), Is.True, dll);
 
             var start = new ProcessStartInfo(Environment.GetEnvironmentVariable("DOTNET_HOST_PATH") ?? "dotnet")

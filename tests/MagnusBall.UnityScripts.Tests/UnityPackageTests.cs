@@ -41,7 +41,7 @@ namespace MagnusBall.UnityScripts.Tests
             // C# 9 on .NET Standard 2.1 needs Unity 2021.2 or later.
             Assert.That(root.GetProperty("unity").GetString(), Is.EqualTo("2021.2"));
 
-            string csproj = File.ReadAllText(Path.Combine(Package, "MagnusBall.csproj"));
+            string csproj = File.ReadAllText(Path.Combine(Package, "Runtime", "MagnusBall.csproj"));
             string version = Regex.Match(csproj, "<Version>([^<]+)</Version>").Groups[1].Value;
             Assert.That(root.GetProperty("version").GetString(), Is.EqualTo(version), "package.json and MagnusBall.csproj give the same version");
         }
@@ -49,7 +49,7 @@ namespace MagnusBall.UnityScripts.Tests
         [Test]
         public void TheAssemblyDefinition_IsEngineFree_AndAutoReferenced()
         {
-            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "MagnusBall.asmdef")));
+            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Runtime", "MagnusBall.asmdef")));
             JsonElement root = asmdef.RootElement;
             Assert.That(root.GetProperty("name").GetString(), Is.EqualTo("MagnusBall"));
             Assert.That(root.GetProperty("noEngineReferences").GetBoolean(), Is.True, "the library uses no UnityEngine type");
@@ -62,7 +62,7 @@ namespace MagnusBall.UnityScripts.Tests
         {
             var assets = Directory.EnumerateFileSystemEntries(Package, "*", SearchOption.AllDirectories)
                 .Where(p => !p.EndsWith(".meta", StringComparison.Ordinal))
-                .Where(p => !IsBuildOutput(p))
+                .Where(p => !IsNotImported(p))
                 .ToList();
             List<string> missing = assets.Where(p => !File.Exists(p + ".meta")).Select(p => Path.GetRelativePath(Package, p)).ToList();
             if (missing.Count > 0)
@@ -70,11 +70,11 @@ namespace MagnusBall.UnityScripts.Tests
                 // A warning, not a failure: a file merged without its .meta still builds everywhere but Unity,
                 // which skips it in a git package. The fix is one command.
                 Assert.Warn($"Unity will ignore {missing.Count} file(s) of the git package until they have a .meta " +
-                            $"(run bash samples/TennisScene/tools/write-unity-meta.sh): {string.Join(", ", missing)}");
+                            $"(run bash tools/write-unity-meta.sh): {string.Join(", ", missing)}");
             }
 
             var guids = Directory.EnumerateFiles(Package, "*.meta", SearchOption.AllDirectories)
-                .Where(p => !IsBuildOutput(p))
+                .Where(p => !IsNotImported(p))
                 .Select(p => Regex.Match(File.ReadAllText(p), "^guid: ([0-9a-f]{32})$", RegexOptions.Multiline).Groups[1].Value)
                 .ToList();
             Assert.That(guids, Has.None.Empty, "every .meta has a 32-digit guid");
@@ -82,10 +82,77 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(guids.Count, Is.GreaterThan(10));
         }
 
-        private static bool IsBuildOutput(string path)
+        [Test]
+        public void NoBuildOutput_InsideThePackage()
         {
+            // This test runs after the solution was built: Directory.Build.props must have sent every bin/ and
+            // obj/ to artifacts/. A bin/ or obj/ in the package makes Unity compile AssemblyInfo twice (CS0579).
+            var output = Directory.EnumerateDirectories(Package, "*", SearchOption.AllDirectories)
+                .Select(d => Path.GetFileName(d))
+                .Where(name => name == "bin" || name == "obj")
+                .ToList();
+            Assert.That(output, Is.Empty, "no bin/ or obj/ under src/MagnusBall");
+        }
+
+        [Test]
+        public void ThePackage_HasEveryPartUnitysLayoutNames()
+        {
+            foreach (string part in new[] { "package.json", "README.md", "CHANGELOG.md", "LICENSE.md" })
+            {
+                Assert.That(File.Exists(Path.Combine(Package, part)), Is.True, part);
+            }
+
+            foreach (string part in new[] { "Runtime", "Samples~", "Tests/Runtime", "Documentation~" })
+            {
+                Assert.That(Directory.Exists(Path.Combine(Package, part)), Is.True, part);
+                Assert.That(Directory.EnumerateFiles(Path.Combine(Package, part), "*", SearchOption.AllDirectories), Is.Not.Empty, part + " is not empty");
+            }
+
+            Assert.That(File.ReadAllText(Path.Combine(Package, "LICENSE.md")), Does.StartWith("MIT License").And.Contains("the MagnusBall project"));
+            Assert.That(File.ReadAllText(Path.Combine(RepositoryRoot(), "LICENSE")), Is.EqualTo(File.ReadAllText(Path.Combine(Package, "LICENSE.md"))));
+        }
+
+        [Test]
+        public void TheManifest_DeclaresTheSample_AndItsLinks()
+        {
+            using JsonDocument manifest = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "package.json")));
+            JsonElement root = manifest.RootElement;
+            JsonElement[] samples = root.GetProperty("samples").EnumerateArray().ToArray();
+            Assert.That(samples, Has.Length.GreaterThanOrEqualTo(1));
+            foreach (JsonElement sample in samples)
+            {
+                string path = sample.GetProperty("path").GetString()!;
+                Assert.That(path, Does.StartWith("Samples~/"), "Unity imports samples from Samples~");
+                Assert.That(Directory.EnumerateFiles(Path.Combine(Package, path), "*.cs", SearchOption.AllDirectories), Is.Not.Empty, path);
+                Assert.That(sample.GetProperty("displayName").GetString(), Is.Not.Empty);
+            }
+
+            foreach (string url in new[] { "documentationUrl", "changelogUrl", "licensesUrl" })
+            {
+                string value = root.GetProperty(url).GetString()!;
+                Assert.That(value, Does.StartWith("https://"), url);
+                // Each link names a file of this package: that file must exist.
+                string file = value.Substring(value.IndexOf("/src/MagnusBall/", StringComparison.Ordinal) + "/src/MagnusBall/".Length);
+                Assert.That(File.Exists(Path.Combine(Package, file)), Is.True, url + " -> " + file);
+            }
+        }
+
+        [Test]
+        public void TheTestAssemblyDefinition_IsAUnityTestFrameworkAssembly()
+        {
+            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Tests", "Runtime", "MagnusBall.Tests.Runtime.asmdef")));
+            JsonElement root = asmdef.RootElement;
+            string[] references = root.GetProperty("references").EnumerateArray().Select(e => e.GetString()!).ToArray();
+            Assert.That(references, Does.Contain("MagnusBall").And.Contain("UnityEngine.TestRunner"));
+            Assert.That(root.GetProperty("precompiledReferences").EnumerateArray().Select(e => e.GetString()), Does.Contain("nunit.framework.dll"));
+            Assert.That(root.GetProperty("defineConstraints").EnumerateArray().Select(e => e.GetString()), Does.Contain("UNITY_INCLUDE_TESTS"));
+        }
+
+        private static bool IsNotImported(string path)
+        {
+            // Folders whose name ends in "~" (Samples~, Documentation~) are not imported by Unity: no .meta there.
             string relative = Path.GetRelativePath(Package, path).Replace('\\', '/');
-            return relative == "bin" || relative == "obj" || relative.StartsWith("bin/", StringComparison.Ordinal) || relative.StartsWith("obj/", StringComparison.Ordinal);
+            return relative.Split('/').Any(part => part.EndsWith("~", StringComparison.Ordinal));
         }
     }
 }

@@ -1,5 +1,5 @@
 // A STUB of the few UnityEngine types the TennisScene sample scripts use, with Unity's own names and
-// signatures, so that CI can compile samples/TennisScene/Scripts without Unity (no Unity reference-assembly
+// signatures, so that CI can compile src/MagnusBall/Samples~/TennisScene/Scripts without Unity (no Unity reference-assembly
 // package restores from NuGet here). It is not Unity: the members keep values and do nothing else. Add a
 // member here only when a script needs it, with the exact signature Unity's scripting reference gives.
 using System;

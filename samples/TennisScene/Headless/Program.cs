@@ -8,7 +8,7 @@ namespace MagnusBall.Samples.TennisScene.Headless
 {
     /// <summary>
     /// The tennis scene without Unity: the same shot definitions, court and measurements as the Unity
-    /// scripts (samples/TennisScene/Shared, compiled into both), each shot flown through the library's
+    /// scripts (src/MagnusBall/Samples~/TennisScene/Shared, compiled into both), each shot flown through the library's
     /// FixedStepDriver. Prints one table row per shot and writes an SVG of side and top views.
     /// </summary>
     public static class Program

@@ -154,7 +154,7 @@ namespace MagnusBall.Tests.Contact
             Assert.That(Vector3d.Distance(a.AngularVelocity, b.AngularVelocity), Is.LessThan(1e-7));
         }
 
-        // ---- Worked cases (physics-references.md section 5, hard court, R 0.033, alpha 0.55) ----
+        // ---- Worked cases (docs/references.md section 5, hard court, R 0.033, alpha 0.55) ----
 
         [TestCase(25, 16, 0, BounceRegime.Slide, 15.81, 22.3, 3408)]
         [TestCase(25, 16, 2000, BounceRegime.Grip, 16.58, 21.2, 4969)]

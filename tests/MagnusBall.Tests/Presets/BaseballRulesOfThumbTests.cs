@@ -6,7 +6,7 @@ namespace MagnusBall.Tests.Presets
 {
     /// <summary>
     /// Altitude, temperature, pressure and a headwind move a baseball fly ball in the directions and rough sizes
-    /// of the rules of thumb for a 400 ft fly ball (physics-references.md section 6): +6 ft per 1000 ft of
+    /// of the rules of thumb for a 400 ft fly ball (docs/references.md section 6): +6 ft per 1000 ft of
     /// altitude, +4 ft per 10 degF, +4 ft per inHg lower pressure, a 10 mph headwind takes 400 ft to about 370 ft.
     /// </summary>
     /// <remarks>

@@ -23,7 +23,7 @@ namespace MagnusBall.Tests.Presets
         [Test]
         public void Golf_DriverAndSevenIron_AgainstTrackManTourAverages()
         {
-            // TrackMan 2023 tour averages (physics-references.md section 2). The golf preset's two drag
+            // TrackMan 2023 tour averages (docs/references.md section 2). The golf preset's two drag
             // constants were calibrated to the two carries (282 yd, 176 yd), so the carries check the
             // calibration; apex and landing angle are predictions.
             ShotOutcome driver = GolfShot(SportPresets.Golf, Air.SeaLevel, 171, 10.4, 2545);
@@ -127,7 +127,7 @@ namespace MagnusBall.Tests.Presets
         [Test]
         public void Baseball_FlyBall_CarriesAbout400Feet()
         {
-            // Nathan's calculator-era rule of thumb (physics-references.md section 6) is stated for a 400 ft fly
+            // Nathan's calculator-era rule of thumb (docs/references.md section 6) is stated for a 400 ft fly
             // ball; a 100 mph, 28 deg, 1800 rpm drive is a typical Statcast home-run launch. 30 ft: the spread of
             // carries for such launches in Statcast data is tens of feet; this checks the preset is in the league.
             Air air = Air.FromWeather(21.1, 101325); // 70 degF, standard pressure, dry

@@ -121,7 +121,7 @@ namespace MagnusBall.Tests.Presets
             Assert.That(SportPresets.Golf.Bounce, Is.Null, "no golf bounce model is sourced");
 
             // The default bounce is a real one: a 25 m/s, 16 degree ball without spin slides and leaves at
-            // 15.81 m/s (physics-references.md section 5, worked hard-court case).
+            // 15.81 m/s (docs/references.md section 5, worked hard-court case).
             double a = 16 * System.Math.PI / 180;
             BounceOutcome outcome = SportPresets.Tennis.Bounce!.Bounce(
                 new Ball(0.057, 0.033, 0.55), Vector3d.UnitZ, new Vector3d(25 * System.Math.Cos(a), 0, -25 * System.Math.Sin(a)), Vector3d.Zero);

@@ -11,7 +11,7 @@ namespace MagnusBall.Tests.Validation
     /// Cross (2011), "Ball trajectories" (Physics of Baseball &amp; Softball, Springer), as quoted by the seed
     /// thesis: minimum launch angles of a 30 m/s tennis ball from 1.0 m to clear the net (0.914 m at
     /// 11.885 m) and to reach the baseline (23.77 m), without spin and with 20 rev/s topspin.
-    /// Data: shared/reference/cross2011_tennis.json.
+    /// Data: data/published/cross2011_tennis.json.
     /// </summary>
     [TestFixture]
     [Category("Validation")]

@@ -11,7 +11,7 @@ namespace MagnusBall.Tests.Validation
     /// Javorova &amp; Ivanov (2018), "Study of soccer ball flight trajectory", MATEC Web Conf. 145:01002, as
     /// quoted by the seed thesis: three free kicks from 20 m with the same launch angles and 61.86 rad/s
     /// sidespin at 19.32, 24.15 and 28.91 m/s; only the middle one scores, near (3.2 m to the side, 2.2 m
-    /// high) at the goal line. Data: shared/reference/javorova2018_freekick.json.
+    /// high) at the goal line. Data: data/published/javorova2018_freekick.json.
     /// </summary>
     [TestFixture]
     [Category("Validation")]
@@ -62,7 +62,7 @@ namespace MagnusBall.Tests.Validation
         internal Kick Run(Frame frame)
         {
             var ball = new Ball(_published.Number("ball", "mass_kg"), _published.Number("ball", "radius_m"), Ball.ThinShellInertiaFactor);
-            // Soccer coefficients from the literature, not fitted to this case (../shared/physics-references.md
+            // Soccer coefficients from the literature, not fitted to this case (docs/references.md
             // section 2): Goff & Carre (2010, Eur. J. Phys. 31:775) drag, the larger of their no-spin drag-crisis
             // curve and their spinning-ball fit 0.4127 S^0.3056 (here S ~ 0.25-0.4, so the spin fit, C_D ~ 0.27-0.30);
             // lift interpolated in the Teamgeist wind-tunnel table and Goff & Carre (2009) (C_L ~ 0.29 here).

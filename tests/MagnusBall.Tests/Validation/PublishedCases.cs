@@ -6,9 +6,9 @@ using NUnit.Framework;
 namespace MagnusBall.Tests.Validation
 {
     /// <summary>
-    /// Finds and reads the published reference cases in shared/reference/*.json. CI clones the repository
-    /// with shared/ beside it (repo/../shared/reference); locally the worktree may sit deeper, so the search
-    /// walks up from the test assembly's directory, checking each ancestor and its "shared" child.
+    /// Finds and reads the published reference cases in the repository's data/published/*.json (see
+    /// data/README.md for each file's source). The folder is found by walking up from the test assembly's
+    /// directory to the repository root, the folder that holds MagnusBall.sln.
     /// </summary>
     internal static class PublishedCases
     {
@@ -18,16 +18,21 @@ namespace MagnusBall.Tests.Validation
             string start = dir ?? "(unknown)";
             while (dir != null)
             {
-                string candidate = Path.Combine(dir, "shared", "reference");
-                if (System.IO.Directory.Exists(candidate))
+                if (File.Exists(Path.Combine(dir, "MagnusBall.sln")))
                 {
+                    string candidate = Path.Combine(dir, "data", "published");
+                    if (!System.IO.Directory.Exists(candidate))
+                    {
+                        Assert.Fail($"The repository at {dir} has no data/published folder: the validation data is part of the repository.");
+                    }
+
                     return candidate;
                 }
 
                 dir = Path.GetDirectoryName(dir);
             }
 
-            Assert.Fail($"No shared/reference folder found above {start}. The validation data lives in <repo>/../shared/reference/*.json (CI clones the repository with shared/ beside it).");
+            Assert.Fail($"No MagnusBall.sln found above {start}: the tests run from a build of the repository.");
             return string.Empty;
         }
 

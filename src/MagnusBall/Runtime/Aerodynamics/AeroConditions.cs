@@ -9,7 +9,7 @@ namespace MagnusBall.Aerodynamics
     /// <remarks>
     /// The spin parameter S = r|w|/s is what drag models read; the transverse spin parameter
     /// S_perp = r|w x v_hat|/s, built from the spin component across the flight, is what lift models read
-    /// (see ../shared/physics-references.md section 1 and docs/physics.md). When the air-relative speed is
+    /// (see docs/references.md section 1 and docs/physics.md). When the air-relative speed is
     /// zero both parameters are reported as 0 (they are undefined there, and no aerodynamic force acts).
     /// </remarks>
     public readonly struct AeroConditions

@@ -5,7 +5,7 @@ namespace MagnusBall.Aerodynamics
     /// </summary>
     /// <remarks>
     /// Golf launch monitors quote about 3.3-4 %/s (tau = 25-30 s; TrackMan, Tutelman); Nathan (2008) gives
-    /// tau = 5 s for a baseball at 100 mph. See ../shared/physics-references.md section 3.
+    /// tau = 5 s for a baseball at 100 mph. See docs/references.md section 3.
     /// </remarks>
     public sealed class ExponentialSpinDecay : ISpinDecayModel
     {

@@ -13,7 +13,7 @@ namespace MagnusBall.Aerodynamics
     /// that is a time constant of 5 s at 100 mph, k = 1/(5 s x 44.704 m/s) = 0.004474 per metre
     /// (<see cref="BaseballNathan"/>). Tennis: Cross &amp; Lindsey (2014) measured about 2 % of the spin lost
     /// over 6.4 m of flight, k = -ln(0.98)/6.4 m = 0.003157 per metre (<see cref="TennisCrossLindsey"/>).
-    /// See ../shared/physics-references.md section 3.</para>
+    /// See docs/references.md section 3.</para>
     /// </remarks>
     public sealed class SpeedProportionalSpinDecay : ISpinDecayModel
     {

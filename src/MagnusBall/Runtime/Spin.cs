@@ -11,7 +11,7 @@ namespace MagnusBall
     /// The Magnus force points along w x v. For unit, perpendicular v and d, (v x d) x v = d in any
     /// handedness (it is the vector triple-product identity, which uses only dot products), so
     /// w = n normalize(v x d) is the spin that curves the ball toward d at rate n. Topspin curves the
-    /// ball toward -up (it dips), backspin toward +up (it floats). See ../shared/design.md, "Frames".
+    /// ball toward -up (it dips), backspin toward +up (it floats). See docs/physics.md (frames and spin conventions).
     /// </remarks>
     public static class Spin
     {

@@ -77,7 +77,7 @@ namespace MagnusBall.Contact
         public double ForceOffsetPerSpeed { get; }
 
         /// <summary>
-        /// Hard court after Cross (2020, Sports Eng. 23:9, as transcribed in physics-references.md section 5):
+        /// Hard court after Cross (2020, Sports Eng. 23:9, as transcribed in docs/references.md section 5):
         /// e_y = 0.95 - 0.005 theta1, mu 0.73, e_x 0.1, D = 3e-4 v1 m.
         /// </summary>
         public static Surface Hard { get; } = new Surface("hard", 0.95, 0.005, 0.73, 0.1, 0, 3e-4);

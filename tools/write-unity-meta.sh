@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Writes the Unity .meta file of every file and folder in the MagnusBall package (src/MagnusBall) that has
-# none. Unity ignores files without a .meta in a package it takes from a git URL (such packages are
+# none, except in folders whose name ends in "~" (Samples~, Documentation~), which Unity does not import. Unity ignores files without a .meta in a package it takes from a git URL (such packages are
 # read-only, so Unity cannot write the .meta itself). GUIDs are derived from the path (MD5), so running
 # this twice, or on two machines, gives the same files. Run it after adding a file to src/MagnusBall:
-#   bash samples/TennisScene/tools/write-unity-meta.sh
+#   bash tools/write-unity-meta.sh
 set -euo pipefail
-cd "$(dirname "$0")/../../.."
+cd "$(dirname "$0")/.."
 root=src/MagnusBall
 written=0
 
@@ -28,7 +28,7 @@ while IFS= read -r -d '' dir; do
   [ "$dir" = "$root" ] && continue
   write "$dir" "folderAsset: yes
 $(importer DefaultImporter)"
-done < <(find "$root" \( -name bin -o -name obj \) -prune -o -type d -print0)
+done < <(find "$root" \( -name bin -o -name obj -o -name '*~' -o -name '.*' \) -prune -o -type d -print0)
 
 while IFS= read -r -d '' file; do
   case "$file" in
@@ -38,6 +38,6 @@ while IFS= read -r -d '' file; do
     *.asmdef) write "$file" "$(importer AssemblyDefinitionImporter)" ;;
     *) write "$file" "$(importer DefaultImporter)" ;;
   esac
-done < <(find "$root" \( -name bin -o -name obj \) -prune -o -type f -print0)
+done < <(find "$root" \( -name bin -o -name obj -o -name '*~' -o -name '.*' \) -prune -o -type f -print0)
 
 echo "wrote $written .meta file(s) under $root"
