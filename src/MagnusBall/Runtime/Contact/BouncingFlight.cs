@@ -270,8 +270,7 @@ namespace MagnusBall.Contact
                     break;
                 }
 
-                FlightState next = Integrator.Step(Model, _state, _derivative, h);
-                StateDerivative nextDerivative = Model.Derivative(next);
+                FlightState next = Integrator.Step(Model, _state, _derivative, h, out StateDerivative nextDerivative, out int evaluations);
                 if (!next.IsFinite || !nextDerivative.Acceleration.IsFinite || !nextDerivative.AngularAcceleration.IsFinite)
                 {
                     // Only flying sub-steps can diverge, so the phase is still Flying: put back what this call changed.
@@ -287,7 +286,7 @@ namespace MagnusBall.Contact
                         "stability limit for this ball and speed. Use StableIntegrator.RungeKutta4 or a smaller step.");
                 }
 
-                _derivativeEvaluations += Integrator.DerivativeEvaluationsPerStep;
+                _derivativeEvaluations += evaluations;
                 var segment = new HermiteSegment(_state, _derivative, next, nextDerivative);
                 if (found >= MaxSegmentsPerStep - 1 || !segment.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, out double contactTime))
                 {

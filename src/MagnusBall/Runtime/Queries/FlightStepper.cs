@@ -135,9 +135,8 @@ namespace MagnusBall.Queries
             }
 
             Require.Step(step, nameof(step));
-            FlightState next = Integrator.Step(Model, _state, _derivative, step);
-            StateDerivative nextDerivative = Model.Derivative(next);
-            DerivativeEvaluations += Integrator.DerivativeEvaluationsPerStep;
+            FlightState next = Integrator.Step(Model, _state, _derivative, step, out StateDerivative nextDerivative, out int evaluations);
+            DerivativeEvaluations += evaluations;
             if (!next.IsFinite || !(next.Time > _state.Time) || !IsFinite(nextDerivative))
             {
                 _eventCount = 0;
