@@ -101,6 +101,9 @@ namespace MagnusBall
         /// </summary>
         public double AerodynamicFactor => _dragFactor;
 
+        /// <summary>True when the air exerts a force (density &gt; 0 and a drag or lift law): the one place this is decided.</summary>
+        internal bool HasAerodynamics => _hasAero;
+
         /// <summary>A vacuum model: gravity only.</summary>
         /// <param name="ball">The ball.</param>
         /// <param name="gravity">The gravity vector, m/s^2.</param>
