@@ -94,7 +94,7 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>The launch of a pitch arriving at <paramref name="position"/> with <paramref name="pitchVelocity"/> and <paramref name="pitchSpin"/>.</summary>
         /// <param name="ball">The ball; not null.</param>
-        /// <param name="frame">Up, forward (the direction the bat swings toward, away from the pitcher's side... toward the field), side; not default.</param>
+        /// <param name="frame">Up, forward (the direction the bat swings toward: the field), side; not the default frame.</param>
         /// <param name="position">The ball's centre at impact, m; finite.</param>
         /// <param name="pitchVelocity">The pitch's velocity at impact, m/s; finite.</param>
         /// <param name="pitchSpin">The pitch's angular velocity, rad/s; finite.</param>
@@ -103,6 +103,9 @@ namespace MagnusBall.Contact.Swings
         {
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
+            Require.Finite(position, nameof(position));
+            Require.Finite(pitchVelocity, nameof(pitchVelocity));
+            Require.Finite(pitchSpin, nameof(pitchSpin));
             double reach = ball.Radius + BarrelRadius;
             if (!(Math.Abs(Undercut) < reach))
             {

@@ -117,6 +117,7 @@ namespace MagnusBall.Contact.Swings
         {
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
+            Require.Finite(position, nameof(position));
             var body = ImpactBody.Moving(PathDirection(frame) * Speed, FaceNormal(frame), HeadMass);
             ImpactOutcome impact = Impact.Resolve(ball, position, Vector3d.Zero, Vector3d.Zero, body, new ContactProperties(Restitution, Friction));
             return new SwingLaunch(impact, frame);

@@ -76,6 +76,7 @@ namespace MagnusBall.Contact.Swings
         {
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
+            Require.Finite(position, nameof(position));
             if (!(Math.Abs(Offset) < ball.Radius))
             {
                 throw new ArgumentException(

@@ -141,6 +141,9 @@ namespace MagnusBall.Contact.Swings
         {
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
+            Require.Finite(position, nameof(position));
+            Require.Finite(incomingVelocity, nameof(incomingVelocity));
+            Require.Finite(incomingSpin, nameof(incomingSpin));
             var body = ImpactBody.Moving(PathDirection(frame) * Speed, FaceNormal(frame), EffectiveMass(ball));
             ImpactOutcome impact = Impact.Resolve(ball, position, incomingVelocity, incomingSpin, body, Strings);
             return new SwingLaunch(impact, frame);
