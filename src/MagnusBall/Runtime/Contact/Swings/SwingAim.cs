@@ -30,7 +30,7 @@ namespace MagnusBall.Contact.Swings
         /// <summary>The swing: the input's speed, path, impact point and face turn, with the face tilt and azimuth solved.</summary>
         public RacketSwing Swing { get; }
 
-        /// <summary>The launch the swing gives.</summary>
+        /// <summary>The launch the swing gives, with its angles measured in the aim solver's frame (up, forward toward the target).</summary>
         public SwingLaunch Launch { get; }
 
         /// <summary>The aim solver's solution for the launch's speed and spin (its direction is the launch's to <see cref="SwingAim.AngleTolerance"/>).</summary>
@@ -50,12 +50,13 @@ namespace MagnusBall.Contact.Swings
     /// </summary>
     /// <remarks>
     /// <para>A racket swing's speed, path and impact point are the player's; the face tilt (which sets the launch
-    /// elevation) and the swing's azimuth (which sets the direction) are solved. Each outer iteration asks the aim
-    /// solver for the direction that reaches the target with the current launch's speed and spin (by effect), then takes
-    /// one Newton step of the face tilt and azimuth toward that direction, with the 2 x 2 Jacobian of the launch angles by
-    /// central differences of the swing (cheap: four impacts, no flights). Changing the face changes the launch speed and
-    /// spin a little, so the aim solve is repeated until the launch direction agrees with the aim solver's to
-    /// <see cref="AngleTolerance"/>; at most <see cref="MaximumIterations"/> iterations.</para>
+    /// elevation) and the swing's azimuth (which sets the direction) are solved. The residual is the difference between
+    /// the direction the aim solver finds for the launch's speed and spin (by effect) and the direction the swing
+    /// launches in. It is driven to zero by Broyden's method, started from the 2 x 2 Jacobian of the launch angles by
+    /// central differences of the swing alone (four impacts, no flights); the updates learn how the aim solver's answer
+    /// moves with the launch speed and spin, and a step that makes the residual worse or the target unreachable is
+    /// halved (up to 12 times). Each residual costs one aim solve; it stops when the directions agree to
+    /// <see cref="AngleTolerance"/>, after at most <see cref="MaximumIterations"/> steps.</para>
     /// <para>Holds its <see cref="AimSolver"/>, which is not thread-safe: one <see cref="SwingAim"/> per thread.</para>
     /// </remarks>
     public sealed class SwingAim
@@ -65,6 +66,12 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>The most outer iterations (aim solves) of one solve.</summary>
         public const int MaximumIterations = 40;
+
+        /// <summary>
+        /// The aim solver's solution counts only when it passes this close to the target, m (its angle tolerance gives
+        /// about 1e-7 m at tennis distances; a solver that returns its lower elevation limit can be farther).
+        /// </summary>
+        public const double MissTolerance = 1e-4;
 
         private const double DifferenceDegrees = 1e-4;
 
@@ -87,9 +94,11 @@ namespace MagnusBall.Contact.Swings
         /// <summary>
         /// The face tilt and azimuth with which <paramref name="swing"/> (its speed, path, impact point and face turn kept)
         /// sends a ball arriving at <paramref name="position"/> through <paramref name="target"/> (for a target on the
-        /// ground: lands there). The frame is the solver's up with forward toward the target.
+        /// ground: lands there). The swing is oriented in <paramref name="frame"/>; the launch is compared with the aim
+        /// solver's in the solver's frame (its up, forward toward the target).
         /// </summary>
         /// <param name="swing">The swing; its face tilt and azimuth are the starting guess.</param>
+        /// <param name="frame">The frame the swing's angles are given in (its azimuth is from this frame's forward); not the default frame.</param>
         /// <param name="position">The ball's centre at impact, m; finite.</param>
         /// <param name="incomingVelocity">The ball's velocity before the impact, m/s; finite.</param>
         /// <param name="incomingSpin">The ball's angular velocity before the impact, rad/s; finite.</param>
@@ -98,9 +107,10 @@ namespace MagnusBall.Contact.Swings
         /// <returns>The solved swing, or <see cref="AimStatus.Unreachable"/> when the swing cannot reach the target (never an exception for finite input).</returns>
         /// <exception cref="ArgumentException">An argument is not finite, or the target is straight above or below the position; the message names it.</exception>
         public RacketAim RacketFaceToReach(
-            in RacketSwing swing, in Vector3d position, in Vector3d incomingVelocity, in Vector3d incomingSpin, in Vector3d target,
+            in RacketSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d incomingVelocity, in Vector3d incomingSpin, in Vector3d target,
             double maximumAzimuthDegrees = 45)
         {
+            SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));
             Require.Finite(incomingVelocity, nameof(incomingVelocity));
             Require.Finite(incomingSpin, nameof(incomingSpin));
@@ -119,66 +129,135 @@ namespace MagnusBall.Contact.Swings
                 throw new ArgumentException("target must not be straight above or below position.", nameof(target));
             }
 
-            var frame = new LaunchFrame(up, horizontal);
+            var aimFrame = new LaunchFrame(up, horizontal);
             RacketSwing current = swing;
-            SwingLaunch launch = default;
-            AimSolution aim = default;
+            if (!Residual(current, frame, aimFrame, position, incomingVelocity, incomingSpin, target, maximumAzimuthDegrees,
+                    out SwingLaunch launch, out AimSolution aim, out double r1, out double r2))
+            {
+                return new RacketAim(AimStatus.Unreachable, current, launch, aim, 1);
+            }
+
+            // Broyden's method on r(x) = aim angles - launch angles, x = (face tilt, azimuth) in degrees, started from
+            // the Jacobian of -launch angles (central differences of the swing alone: the aim's own response to speed
+            // and spin is learnt by the updates), with backtracking when a step makes the residual worse or unreachable.
+            if (!LaunchJacobian(current, frame, aimFrame, position, incomingVelocity, incomingSpin, out double j11, out double j12, out double j21, out double j22))
+            {
+                return new RacketAim(AimStatus.Unreachable, current, launch, aim, 1);
+            }
+
+            j11 = -j11; j12 = -j12; j21 = -j21; j22 = -j22;
             for (int iteration = 1; iteration <= MaximumIterations; iteration++)
             {
-                launch = current.Hit(Ball, frame, position, incomingVelocity, incomingSpin);
-                if (!launch.IsHit || !(launch.Speed > 0))
-                {
-                    return new RacketAim(AimStatus.Unreachable, current, launch, aim, iteration);
-                }
-
-                aim = Solver.AnglesToReach(position, launch.Speed, launch.LaunchSpin, target, maximumAzimuthDegrees);
-                if (!aim.IsSolved)
-                {
-                    return new RacketAim(AimStatus.Unreachable, current, launch, aim, iteration);
-                }
-
-                double elevationError = Wrap(aim.ElevationRadians - launch.ElevationRadians);
-                double azimuthError = Wrap(aim.AzimuthRadians - launch.AzimuthRadians);
-                if (Math.Abs(elevationError) <= AngleTolerance && Math.Abs(azimuthError) <= AngleTolerance)
+                if (Math.Abs(r1) <= AngleTolerance && Math.Abs(r2) <= AngleTolerance)
                 {
                     return new RacketAim(AimStatus.Solved, current, launch, aim, iteration);
                 }
 
-                // Jacobian of (elevation, azimuth) by (face tilt, azimuth), degrees to radians, central differences.
-                double tilt = current.FaceTiltDegrees, azimuth = current.AzimuthDegrees;
-                if (!TryAngles(current, tilt + DifferenceDegrees, azimuth, frame, position, incomingVelocity, incomingSpin, out double e1, out double a1) ||
-                    !TryAngles(current, tilt - DifferenceDegrees, azimuth, frame, position, incomingVelocity, incomingSpin, out double e2, out double a2) ||
-                    !TryAngles(current, tilt, azimuth + DifferenceDegrees, frame, position, incomingVelocity, incomingSpin, out double e3, out double a3) ||
-                    !TryAngles(current, tilt, azimuth - DifferenceDegrees, frame, position, incomingVelocity, incomingSpin, out double e4, out double a4))
-                {
-                    return new RacketAim(AimStatus.Unreachable, current, launch, aim, iteration);
-                }
-
-                double h = 2 * DifferenceDegrees;
-                double j11 = (e1 - e2) / h, j21 = Wrap(a1 - a2) / h, j12 = (e3 - e4) / h, j22 = Wrap(a3 - a4) / h;
                 double determinant = j11 * j22 - j12 * j21;
                 if (!(Math.Abs(determinant) > 1e-300) || !double.IsFinite(determinant))
                 {
-                    return new RacketAim(AimStatus.Unreachable, current, launch, aim, iteration);
+                    break;
                 }
 
-                double dTilt = (elevationError * j22 - azimuthError * j12) / determinant;
-                double dAzimuth = (j11 * azimuthError - j21 * elevationError) / determinant;
-                double nextTilt = tilt + dTilt, nextAzimuth = azimuth + dAzimuth;
-                if (!(nextTilt >= -80 && nextTilt <= 80 && nextAzimuth >= -90 && nextAzimuth <= 90))
+                // Newton step: J dx = -r.
+                double dx1 = -(r1 * j22 - r2 * j12) / determinant;
+                double dx2 = -(j11 * r2 - j21 * r1) / determinant;
+                double norm = Math.Sqrt(r1 * r1 + r2 * r2);
+                bool accepted = false;
+                double scale = 1;
+                for (int halving = 0; halving < 12 && !accepted; halving++, scale *= 0.5)
                 {
-                    return new RacketAim(AimStatus.Unreachable, current, launch, aim, iteration);
+                    double tilt = current.FaceTiltDegrees + scale * dx1, azimuth = current.AzimuthDegrees + scale * dx2;
+                    if (!(tilt >= -80 && tilt <= 80 && azimuth >= -90 && azimuth <= 90))
+                    {
+                        continue;
+                    }
+
+                    RacketSwing trial = current.WithFace(tilt, azimuth);
+                    if (!Residual(trial, frame, aimFrame, position, incomingVelocity, incomingSpin, target, maximumAzimuthDegrees,
+                            out SwingLaunch trialLaunch, out AimSolution trialAim, out double s1, out double s2))
+                    {
+                        continue;
+                    }
+
+                    if (Math.Sqrt(s1 * s1 + s2 * s2) >= norm && halving < 11)
+                    {
+                        continue;
+                    }
+
+                    // Broyden update with the step taken (degrees) and the change of the residual (rad).
+                    double h1 = scale * dx1, h2 = scale * dx2, hh = h1 * h1 + h2 * h2;
+                    double y1 = s1 - r1 - (j11 * h1 + j12 * h2), y2 = s2 - r2 - (j21 * h1 + j22 * h2);
+                    if (hh > 0)
+                    {
+                        j11 += y1 * h1 / hh; j12 += y1 * h2 / hh; j21 += y2 * h1 / hh; j22 += y2 * h2 / hh;
+                    }
+
+                    current = trial;
+                    launch = trialLaunch;
+                    aim = trialAim;
+                    r1 = s1;
+                    r2 = s2;
+                    accepted = true;
                 }
 
-                current = current.WithFace(nextTilt, nextAzimuth);
+                if (!accepted)
+                {
+                    break;
+                }
             }
 
             return new RacketAim(AimStatus.Unreachable, current, launch, aim, MaximumIterations);
         }
 
+        private bool Residual(
+            in RacketSwing swing, in LaunchFrame frame, in LaunchFrame aimFrame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
+            in Vector3d target, double maximumAzimuthDegrees, out SwingLaunch launch, out AimSolution aim, out double elevationError, out double azimuthError)
+        {
+            elevationError = azimuthError = double.NaN;
+            aim = default;
+            launch = new SwingLaunch(swing.Hit(Ball, frame, position, velocity, spin).Impact, aimFrame);
+            if (!launch.IsHit || !(launch.Speed > 0))
+            {
+                return false;
+            }
+
+            aim = Solver.AnglesToReach(position, launch.Speed, launch.LaunchSpin, target, maximumAzimuthDegrees);
+            if (!aim.IsSolved || !(aim.Miss <= MissTolerance))
+            {
+                return false;
+            }
+
+            elevationError = Wrap(aim.ElevationRadians - launch.ElevationRadians);
+            azimuthError = Wrap(aim.AzimuthRadians - launch.AzimuthRadians);
+            return true;
+        }
+
+        private bool LaunchJacobian(
+            in RacketSwing current, in LaunchFrame frame, in LaunchFrame aimFrame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
+            out double j11, out double j12, out double j21, out double j22)
+        {
+            j11 = j12 = j21 = j22 = 0;
+            double tilt = current.FaceTiltDegrees, azimuth = current.AzimuthDegrees;
+            if (!TryAngles(current, tilt + DifferenceDegrees, azimuth, frame, position, velocity, spin, out double e1, out double a1, aimFrame) ||
+                !TryAngles(current, tilt - DifferenceDegrees, azimuth, frame, position, velocity, spin, out double e2, out double a2, aimFrame) ||
+                !TryAngles(current, tilt, azimuth + DifferenceDegrees, frame, position, velocity, spin, out double e3, out double a3, aimFrame) ||
+                !TryAngles(current, tilt, azimuth - DifferenceDegrees, frame, position, velocity, spin, out double e4, out double a4, aimFrame))
+            {
+                return false;
+            }
+
+            double h = 2 * DifferenceDegrees;
+            j11 = (e1 - e2) / h;
+            j21 = Wrap(a1 - a2) / h;
+            j12 = (e3 - e4) / h;
+            j22 = Wrap(a3 - a4) / h;
+            return true;
+        }
+
         private bool TryAngles(
             in RacketSwing swing, double tilt, double azimuth, in LaunchFrame frame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
-            out double elevation, out double launchAzimuth)
+            out double elevation, out double launchAzimuth, in LaunchFrame aimFrame)
         {
             elevation = launchAzimuth = 0;
             if (!(tilt >= -80 && tilt <= 80 && azimuth >= -90 && azimuth <= 90))
@@ -186,7 +265,7 @@ namespace MagnusBall.Contact.Swings
                 return false;
             }
 
-            SwingLaunch launch = swing.WithFace(tilt, azimuth).Hit(Ball, frame, position, velocity, spin);
+            var launch = new SwingLaunch(swing.WithFace(tilt, azimuth).Hit(Ball, frame, position, velocity, spin).Impact, aimFrame);
             if (!launch.IsHit)
             {
                 return false;
