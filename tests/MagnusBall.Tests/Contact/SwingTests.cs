@@ -160,6 +160,7 @@ namespace MagnusBall.Tests.Contact
             Assert.That(l.Speed / Mph, Is.EqualTo(167.7).Within(0.03 * 167.7));
             // TrackMan's older table: 113 mph -> 167 mph.
             SwingLaunch l113 = new ClubSwing(113 * Mph, loft, -1.3).Hit(Golf, ZUp, Vector3d.Zero);
+            TestContext.Out.WriteLine($"driver at 113 mph: {l113.Speed / Mph:F2} mph");
             Assert.That(l113.Speed / Mph, Is.EqualTo(167).Within(0.03 * 167));
         }
 
@@ -286,6 +287,19 @@ namespace MagnusBall.Tests.Contact
         }
 
         // ---- Common ----
+
+        [Test]
+        public void ReadmeSwingExample_Runs()
+        {
+            // README's "From a swing to a launch" example, compiled and run.
+            var frame = new LaunchFrame(Vector3d.UnitZ, Vector3d.UnitX);
+            var forehand = new RacketSwing(speed: 26, pathElevationDegrees: 42, faceTiltDegrees: 0.3);
+            SwingLaunch launch = forehand.Hit(Ball.Tennis, frame, new Vector3d(0, 0, 1), new Vector3d(-14, 0, -1), Vector3d.Zero);
+            Assert.That(launch.IsHit, Is.True);
+            Assert.That(launch.LaunchSpin.Topspin, Is.GreaterThan(0));
+            Assert.That(launch.ElevationDegrees, Is.GreaterThan(0));
+            Assert.That(launch.LaunchState(new Vector3d(0, 0, 1)).Velocity, Is.EqualTo(launch.Velocity));
+        }
 
         [Test]
         public void Hits_AllocateNothing()
