@@ -351,6 +351,11 @@ namespace MagnusBall.Tests.Contact
             Check("restitution", () => new BatSwing(30, restitution: 0));
             Check("friction", () => new KickSwing(25, 0, friction: -1));
             Check("offset", () => new KickSwing(25, double.PositiveInfinity));
+            // Geometry that depends on the ball: named by the ball, the message says which value and range.
+            Check("ball", () => new KickSwing(25, 0.2).Hit(Ball.Soccer, ZUp, Vector3d.Zero));
+            Check("ball", () => new BatSwing(30, 0.08).Hit(Baseball, ZUp, Vector3d.Zero, new Vector3d(-40, 0, 0), Vector3d.Zero));
+            Check("position", () => new ClubSwing(50, 10, 0).Hit(Golf, ZUp, new Vector3d(double.NaN, 0, 0)));
+            Check("pitchSpin", () => new BatSwing(30).Hit(Baseball, ZUp, Vector3d.Zero, new Vector3d(-40, 0, 0), new Vector3d(0, 0, double.NaN)));
         }
 
         private static double LoftForLaunch(double speed, double attack, double headMass, double launchDegrees)
