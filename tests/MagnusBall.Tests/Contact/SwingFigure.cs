@@ -30,7 +30,7 @@ namespace MagnusBall.Tests.Contact
             var incoming = new Vector3d(-14, 0, -1); // a rally ball, 14 m/s toward the hitter
             double[] faces = { -5, 0, 5 };
             string[] colours = { "#d62728", "#1f77b4", "#2ca02c" };
-            (string Title, double Min, double Max, double Step)[] panels = { ("launch angle, deg", -10, 30, 5), ("topspin, rpm", -1000, 5000, 1000) };
+            (string Title, double Min, double Max, double Step)[] panels = { ("launch angle, deg", -10, 30, 5), ("topspin, rpm", -2000, 5000, 1000) };
             var svg = new StringBuilder();
             var table = new StringBuilder("face,path,speed,elevation,topspin_rpm,regime\n");
             svg.Append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"820\" height=\"420\" font-family=\"sans-serif\" font-size=\"12\">\n");
