@@ -37,6 +37,11 @@ namespace MagnusBall.Cli
         {
             using JsonDocument document = JsonInput.Parse(json);
             JsonFields root = JsonFields.Of(document.RootElement, string.Empty);
+            if (document.RootElement.ValueKind == JsonValueKind.Object && !root.Has("scenarios") && root.Has("aims"))
+            {
+                throw new InputError("scenarios", "required field is missing; this file has \"aims\": it is an aim file, run it with 'magnusball aim FILE'");
+            }
+
             JsonElement list = root.Required("scenarios");
             root.RejectUnknown();
             if (list.ValueKind != JsonValueKind.Array)

@@ -13,7 +13,7 @@ namespace MagnusBall.Samples.TennisScene.Headless
     /// </summary>
     public static class Program
     {
-        private const string Usage =
+        private static readonly string Usage =
 @"usage: dotnet run --project samples/TennisScene/Headless -- [options]
 
 With no shot options, flies the six standard shots (flat serve, kick serve, topspin forehand,
@@ -24,8 +24,8 @@ from the topspin forehand's values.
 shot options (court frame: x from the net toward the far baseline, y up, z to the hitter's left):
   --shot NAME         one of the standard shots by name (e.g. ""kick serve"")
   --speed M/S         launch speed (> 0)
-  --elevation DEG     launch angle above horizontal (-90..90)
-  --azimuth DEG       launch direction, + toward the hitter's left
+  --elevation DEG     launch angle above horizontal (-89.9..89.9)
+  --azimuth DEG       launch direction, + toward the hitter's left (-89.9..89.9)
   --topspin RPM       topspin, negative for backspin
   --sidespin RPM      sidespin, + curls toward the hitter's left
   --height M          hitting height of the ball's centre (> 0); a serve is 2.87
@@ -35,7 +35,7 @@ shot options (court frame: x from the net toward the far baseline, y up, z to th
   --aim X,Z           solve elevation and azimuth (AimSolver) so the ball first touches the court at (X, Z)
   --by-swing          fly the six standard shots as made by racket swings (StandardSwings) instead of by launch
 scene options:
-  --integrator NAME   euler | semi-implicit-euler | heun | rk4 | stable-rk4 (default rk4)
+  --integrator NAME   " + string.Join(" | ", MagnusBall.Integration.Integrators.Names) + @" (default rk4)
   --step S            fixed step (default 1/240)
   --density RHO       air density, kg/m^3 (default 1.21)
   --thesis-coefficients  constant C_D 0.55 and C_M 0.175 (Agrawal 2023) instead of Stepanek's

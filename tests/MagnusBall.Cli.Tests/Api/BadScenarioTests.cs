@@ -124,6 +124,15 @@ namespace MagnusBall.Cli.Tests.Api
         }
 
         [Test]
+        public void AnAimFile_GivenToSimulate_SaysToUseAim()
+        {
+            CliRun run = CliRun.Simulate("{\"aims\": [{\"name\": \"net\"}]}");
+            Assert.That(run.ExitCode, Is.EqualTo(2));
+            Assert.That(run.Stderr, Does.Contain("magnusball aim FILE"));
+            Assert.That(run.Stdout, Is.Empty);
+        }
+
+        [Test]
         public void DuplicateField_IsAnError()
         {
             string json = CliRun.DriveJson.Replace("\"step\": 0.004166666666666667,", "\"step\": 0.004166666666666667, \"step\": 0.01,");
