@@ -64,7 +64,13 @@ namespace MagnusBall
             Lift = lift;
             SpinDecay = spinDecay;
             Up = (-gravity).NormalizedOrZero();
-            _dragFactor = Overflow.Multiply(air.Density, ball.CrossSectionalArea) / (2 * ball.Mass);
+            _dragFactor = air.Density * ball.CrossSectionalArea / (2 * ball.Mass);
+            if (!double.IsFinite(_dragFactor))
+            {
+                // pi r^2 or 2 m overflowed (a ball of radius 1e200 m or mass 1e308 kg): group as (rho / m) (pi r / 2) r,
+                // finite whenever k is, never NaN.
+                _dragFactor = Overflow.Multiply(Overflow.Multiply(air.Density / ball.Mass, 0.5 * Math.PI * ball.Radius), ball.Radius);
+            }
             _kinematicRadius = ball.Radius;
             _viscosity = air.DynamicViscosity;
             _hasAero = (drag != null || lift != null) && air.Density > 0;

@@ -63,8 +63,8 @@ namespace MagnusBall.Aerodynamics
                 if (!double.IsFinite(SpinParameter) || !double.IsFinite(TransverseSpinParameter))
                 {
                     // r / s or its product overflowed (a tiny speed): w / s first, and 0 spin stays 0 (never 0 x infinity).
-                    SpinParameter = Overflow.Multiply(spinRate / speed, radius);
-                    TransverseSpinParameter = Overflow.Multiply(transverseSpinRate / speed, radius);
+                    SpinParameter = Overflow.Multiply(Ratio(spinRate, speed), radius);
+                    TransverseSpinParameter = Overflow.Multiply(Ratio(transverseSpinRate, speed), radius);
                 }
             }
             else
@@ -79,6 +79,13 @@ namespace MagnusBall.Aerodynamics
                 // Grouped so that no intermediate overflows where the result fits; 0 density or speed gives 0, never NaN.
                 ReynoldsNumber = Overflow.Multiply(Overflow.Multiply(density / dynamicViscosity, speed), 2 * radius);
             }
+        }
+
+        // w / s; when both are infinite (beyond double.MaxValue) their ratio is unknown and taken as 1, never NaN.
+        private static double Ratio(double spin, double speed)
+        {
+            double ratio = spin / speed;
+            return double.IsNaN(ratio) && !double.IsNaN(spin) && !double.IsNaN(speed) ? 1 : ratio;
         }
 
         /// <summary>Spin rate in revolutions per minute, |w| 60 / (2 pi).</summary>
