@@ -260,6 +260,23 @@ namespace MagnusBall.Cli.Tests.Api
             Assert.That(run.FirstResult().GetProperty("landing").ValueKind, Is.EqualTo(JsonValueKind.Null));
         }
 
+        [Test]
+        public void AimScan_WithTooManyTrials_IsAnInputError()
+        {
+            // elevationScanDegrees 1e-6 over the default [-45, 80] deg: 1.25e8 trial flights (it ran > 60 s before).
+            const string json = """
+                {"aims": [{"ball": {"mass": 0.057, "radius": 0.033}, "launch": {"position": [0, 0, 1]},
+                  "limits": {"elevationScanDegrees": 1e-6},
+                  "find": {"kind": "elevation-to-reach", "speed": 30, "target": [20, 0, 0]}}]}
+                """;
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            int code = Program.Run(new[] { "aim", "-" }, stdout, stderr, new StringReader(json));
+            Assert.That(code, Is.EqualTo(Program.BadInput), stderr.ToString());
+            Assert.That(stderr.ToString(), Does.StartWith("magnusball: aims[0].limits.elevationScanDegrees: the scan would fly 125000000 trial shots"));
+            Assert.That(stderr.ToString(), Does.Contain("at most 10000"));
+        }
+
         internal static XDocument DrawnSvg(JsonNode root, out CliRun run)
         {
             string path = Path.Combine(Path.GetTempPath(), $"magnusball-{Guid.NewGuid():N}.svg");

@@ -74,7 +74,7 @@ namespace MagnusBall.Fuzz
                 if (variant % 4 == 3)
                 {
                     string[] lines = output.TrimEnd('\n').Split('\n');
-                    if (lines[0] != "scenario,time,x,y,z,vx,vy,vz,wx,wy,wz" || lines.Length < 3)
+                    if (lines[0] != "scenario,time,x,y,z,vx,vy,vz,wx,wy,wz" || lines.Length < 2)
                     {
                         return (CliOutcome.InvalidOutput, "csv: " + lines[0], time);
                     }
