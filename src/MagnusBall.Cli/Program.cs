@@ -170,11 +170,11 @@ namespace MagnusBall.Cli
             }
 
             var recording = new Recording(csv && samples is null, counts);
-            var budget = new WorkBudget(Flight.StepsPerFileLimit);
+            var budget = new WorkBudget(ScenarioFlight.StepsPerFileLimit);
             var results = new List<FlightResult>();
             foreach (Scenario scenario in scenarios)
             {
-                results.Add(Flight.Simulate(scenario, recording, budget));
+                results.Add(ScenarioFlight.Simulate(scenario, recording, budget));
             }
 
             if (svg != null)

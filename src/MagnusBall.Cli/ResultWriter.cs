@@ -122,7 +122,7 @@ namespace MagnusBall.Cli
         /// <summary><paramref name="count"/> states evenly spaced from launch to the end (landing or maxTime), on the interpolant.</summary>
         public static IEnumerable<FlightState> Sample(FlightResult r, int count)
         {
-            foreach (double t in Flight.SampleTimes(r.Scenario.Initial.Time, r.End.Time, count))
+            foreach (double t in ScenarioFlight.SampleTimes(r.Scenario.Initial.Time, r.End.Time, count))
             {
                 yield return r.At(t);
             }

@@ -65,7 +65,7 @@ namespace MagnusBall.Cli.Tests.Api
             JsonObject root = CliRun.Drive();
             S(root)["integrator"] = integrator;
             S(root)["initial"]!["velocity"] = new JsonArray(1e155, 0, 0);
-            AssertInputError(CliRun.Simulate(root), "scenarios[0].step: the flight diverged (non-finite state after t = 0 s with " + integrator + ")");
+            AssertInputError(CliRun.Simulate(root), "scenarios[0].step: the flight diverged (the state would not be finite after t = 0 s with " + integrator + ")");
         }
 
         [Test]
@@ -125,12 +125,12 @@ namespace MagnusBall.Cli.Tests.Api
             S(root)["maxTime"] = 2;
             Scenario scenario = ScenarioReader.Read(root.ToJsonString()).Single();
 
-            FlightResult sparse = Flight.Simulate(scenario, new Recording(false, new[] { 10 }), new WorkBudget(Flight.MaxStepsPerFile));
+            FlightResult sparse = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10 }), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
             Assert.That(sparse.Steps, Is.EqualTo(200_000));
             Assert.That(sparse.Points!.Count, Is.LessThanOrEqualTo(2 * 10), "two step ends per sample at most");
 
             // The samples are the ones the full recording gives, bit for bit (the same steps, flown again).
-            FlightResult full = Flight.Simulate(scenario, new Recording(true, Array.Empty<int>()), new WorkBudget(Flight.MaxStepsPerFile));
+            FlightResult full = ScenarioFlight.Simulate(scenario, new Recording(true, Array.Empty<int>()), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
             Assert.That(full.Points!.Count, Is.EqualTo(200_001));
             FlightState[] a = ResultWriter.Sample(sparse, 10).ToArray();
             FlightState[] b = ResultWriter.Sample(full, 10).ToArray();
@@ -146,9 +146,9 @@ namespace MagnusBall.Cli.Tests.Api
         public void Samples_OfAShortFlight_AreFlownOnce()
         {
             Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single();
-            var budget = new WorkBudget(Flight.MaxStepsPerFile);
-            FlightResult r = Flight.Simulate(scenario, new Recording(false, new[] { 10, TrajectorySvg.SamplesPerFlight }), budget);
-            Assert.That(r.Points!.Count, Is.EqualTo(r.Steps + 1), "every step kept: below Flight.MaxKeptPoints");
+            var budget = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult r = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10, TrajectorySvg.SamplesPerFlight }), budget);
+            Assert.That(r.Points!.Count, Is.EqualTo(r.Steps + 1), "every step kept: below ScenarioFlight.MaxKeptPoints");
             Assert.That(budget.Total, Is.EqualTo(r.Steps), "one flight's steps spent, not two");
         }
 
@@ -157,7 +157,7 @@ namespace MagnusBall.Cli.Tests.Api
         {
             Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single(); // 183 steps to the landing
             var budget = new WorkBudget(100);
-            var error = Assert.Throws<InputError>(() => Flight.Simulate(scenario, Recording.None, budget))!;
+            var error = Assert.Throws<InputError>(() => ScenarioFlight.Simulate(scenario, Recording.None, budget))!;
             Assert.That(error.Message, Does.StartWith("scenarios[0].step: the file's flights need more than 100 integrator steps"));
             Assert.That(budget.Total, Is.EqualTo(100));
         }
@@ -171,13 +171,13 @@ namespace MagnusBall.Cli.Tests.Api
             S(root)["ball"] = new JsonObject { ["mass"] = 1e-6, ["radius"] = 0.033 };
             S(root)["initial"]!["velocity"] = new JsonArray(300, 0, 10);
             S(root)["maxTime"] = 1;
-            var rk4 = new WorkBudget(Flight.MaxStepsPerFile);
-            FlightResult plain = Flight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4);
+            var rk4 = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult plain = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4);
             Assert.That(rk4.Total, Is.EqualTo(plain.Steps), "one unit a step");
 
             S(root)["integrator"] = "stable-rk4";
-            var stable = new WorkBudget(Flight.MaxStepsPerFile);
-            FlightResult r = Flight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, stable);
+            var stable = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult r = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, stable);
             TestContext.Out.WriteLine($"stable-rk4: {r.Steps} steps, {stable.Total} substeps counted");
             Assert.That(stable.Total, Is.GreaterThan(r.Steps + 1000), "substeps counted, not steps");
         }

@@ -20,8 +20,8 @@ namespace MagnusBall.Cli.Tests.Fuzz
             var generator = new HostileJson(seed: 15);
             int[] counts = new int[Enum.GetValues<CliOutcome>().Length];
             TimeSpan slowest = TimeSpan.Zero;
-            long saved = Flight.StepsPerFileLimit;
-            Flight.StepsPerFileLimit = 200_000; // the cap's own path, at a size that keeps the suite fast
+            long saved = ScenarioFlight.StepsPerFileLimit;
+            ScenarioFlight.StepsPerFileLimit = 200_000; // the cap's own path, at a size that keeps the suite fast
             try
             {
                 for (int i = 0; i < Files; i++)
@@ -37,7 +37,7 @@ namespace MagnusBall.Cli.Tests.Fuzz
             }
             finally
             {
-                Flight.StepsPerFileLimit = saved;
+                ScenarioFlight.StepsPerFileLimit = saved;
             }
 
             TestContext.Out.WriteLine($"{Files} files: " + string.Join(", ", Enum.GetValues<CliOutcome>().Select(o => $"{o} {counts[(int)o]}")) +

@@ -1,8 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
-using MagnusBall.Queries;
 
 namespace MagnusBall.Cli
 {
@@ -64,8 +64,6 @@ namespace MagnusBall.Cli
     {
         /// <summary>Keep nothing but the summary.</summary>
         public static Recording None { get; } = new Recording(false, Array.Empty<int>());
-
-        public bool Any => AllSteps || SampleCounts.Count > 0;
     }
 
     /// <summary>
@@ -100,7 +98,7 @@ namespace MagnusBall.Cli
     /// the ground plane against its normal) or reaches maxTime, locating the apex and every plane crossing
     /// between steps on the cubic Hermite interpolant.
     /// </summary>
-    internal static class Flight
+    internal static class ScenarioFlight
     {
         /// <summary>
         /// Most step points kept in memory while a flight runs for its samples (--samples, --svg): 65,536 (10 MB). A
@@ -161,15 +159,15 @@ namespace MagnusBall.Cli
         }
 
         // keepAll > 0: keep every step point up to that many (beyond: csvRows fails, else the points are dropped).
-        // keep != null: keep only the steps [a, b) that contain one of these sorted times (and b).
+        // keep != null: keep only the steps [a, b) that contain one of these sorted times (both ends).
         private static FlightResult Fly(Scenario scenario, WorkBudget budget, int keepAll, List<double>? keep, bool csvRows)
         {
             FlightModel model = scenario.Model;
             double endTime = scenario.Initial.Time + scenario.MaxTime;
             string stepPath = $"scenarios[{scenario.Index}].step";
 
-            // The library's shared stepping loop: each step's end derivative is the next step's start, the cubic
-            // Hermite of the step costs nothing more, and the events are located on it to 1e-12 s.
+            // The library's one flight core: each step's end derivative is the next step's start, the cubic Hermite
+            // of the step costs nothing more, and the events are located on it to 1e-12 s.
             Plane? ground = scenario.Ground is NamedPlane g ? new Plane(g.Point, g.Normal) : null;
             var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
             var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
@@ -187,21 +185,17 @@ namespace MagnusBall.Cli
             FlightState? apex = null;
             FlightState? landing = null;
 
-            while (stepper.State.Time < endTime && landing is null)
+            // Bounded: each pass advances the clock by a step (the last one trimmed to maxTime by the library's one
+            // end-time rule) or ends the run, and every step is paid for from the file's work budget.
+            while (true)
             {
-                // Fixed steps; the last one is shortened to end exactly at maxTime.
-                double h = Math.Min(scenario.Step, endTime - stepper.State.Time);
-                if (!(h > 1e-9 * scenario.Step))
-                {
-                    break;
-                }
-
                 double before = stepper.State.Time;
-                StepPoint start = new StepPoint(stepper.State, stepper.Derivative);
+                var start = new StepPoint(stepper.State, stepper.Derivative);
+                double h = FlightStepper.StepToward(before, endTime, scenario.Step, out bool last);
 
                 // The work cap: a step costs 1, a substepping integrator's step as many substeps as it will take
                 // (judged at the start of the step, as the integrator judges it).
-                long cost = stable is null ? 1 : StableStepping.SubstepCount(model, stepper.State, h, stable.StiffnessLimit);
+                long cost = stable is null || !(h > 0) ? 1 : StableStepping.SubstepCount(model, stepper.State, h, stable.StiffnessLimit);
                 if (!budget.TrySpend(cost))
                 {
                     throw new InputError(stepPath,
@@ -209,40 +203,39 @@ namespace MagnusBall.Cli
                         $"this one reached t = {JsonFields.Format(before)} s); the CLI stops there so that no file runs unbounded: use a larger step or a shorter maxTime");
                 }
 
-                bool taken;
+                StepOutcome outcome;
                 try
                 {
-                    // TryStep refuses a step that blows up (the state is kept), so the error can name the step.
-                    taken = stepper.TryStep(h) && stepper.State.IsFinite;
+                    outcome = stepper.TryStep(h, FlightEventKinds.Landing);
                 }
                 catch (ArgumentException)
                 {
-                    // A substepping integrator (stable-rk4) throws when a substep's state became non-finite.
-                    taken = false;
+                    // A safety net: an integrator that throws on a non-finite intermediate state has diverged.
+                    outcome = StepOutcome.Diverged;
                 }
 
-                if (!taken)
+                if (outcome == StepOutcome.Diverged)
                 {
-                    if (!(before + h > before))
-                    {
-                        throw new InputError(stepPath,
-                            $"time cannot advance: at t = {JsonFields.Format(before)} s a step of {JsonFields.Format(h)} s is below the resolution of a double");
-                    }
-
+                    // The core refused the step (the state is kept), so the error can name the step.
                     throw new InputError(stepPath,
-                        $"the flight diverged (non-finite state after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step");
+                        $"the flight diverged (the state would not be finite after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step or stable-rk4");
                 }
 
-                // Events come in time order; nothing after the landing counts (the library's one rule for it).
-                ReadOnlySpan<FlightEvent> events = stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent touchdown);
-                if (landed)
+                if (outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    landing = touchdown.State;
+                    throw new InputError(
+                        $"scenarios[{scenario.Index}].initial.time",
+                        $"a step of {JsonFields.Format(h)} s does not advance the clock at t = {JsonFields.Format(before)} s (the time is too large for double precision); start the flight at a smaller time");
                 }
 
-                foreach (FlightEvent e in events)
+                // The core stops at the landing: the events it reports are those that happen (nothing after the landing).
+                foreach (FlightEvent e in stepper.Events)
                 {
-                    if (e.Kind == FlightEventKinds.Apex && apex is null)
+                    if (e.Kind == FlightEventKinds.Landing)
+                    {
+                        landing = e.State;
+                    }
+                    else if (e.Kind == FlightEventKinds.Apex && apex is null)
                     {
                         apex = e.State;
                     }
@@ -291,6 +284,11 @@ namespace MagnusBall.Cli
                         points.Add(end);
                     }
                 }
+
+                if (stepper.IsStopped || last)
+                {
+                    break;
+                }
             }
 
             if (keep != null && points!.Count == 0)
@@ -298,8 +296,7 @@ namespace MagnusBall.Cli
                 points.Add(new StepPoint(stepper.State, stepper.Derivative));
             }
 
-            // The last step point may lie past the landing: it stays for the interpolant, but the flight ends at the landing.
-            FlightState final = landing ?? stepper.State;
+            FlightState final = stepper.State;
             return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, final, points);
         }
     }
