@@ -6,7 +6,7 @@ namespace MagnusBall.Benchmarks
 {
     /// <summary>
     /// Entry point. With no mode or a BenchmarkDotNet argument (--filter ...), runs the benchmarks; otherwise one of the
-    /// report modes: "extremes" (full matrix), "extremes-quick", "blowup", "work-precision", "peers-check".
+    /// report modes: "extremes" (full matrix), "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run).
     /// </summary>
     public static class Program
     {
@@ -37,6 +37,8 @@ namespace MagnusBall.Benchmarks
                         return 0;
                     }
 
+                case "fuzz":
+                    return FuzzReport.Run(args);
                 case "blowup":
                     Console.WriteLine(ExtremesReport.BlowUp());
                     return 0;

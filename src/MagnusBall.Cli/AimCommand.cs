@@ -24,6 +24,9 @@ namespace MagnusBall.Cli
 
         private const double DegreesToRadians = Math.PI / 180;
 
+        /// <summary>Most elevation-scan trials one aim may ask for ((maximum - minimum elevation) / elevationScanDegrees): 10,000.</summary>
+        public const int MaxScanTrials = 10_000;
+
         private sealed record AimRequest(string Name, string Path, AimSolver Solver, Vector3d Position, LaunchSpin Spin, Func<AimSolver, AimSolution> Solve);
 
         public static string Run(string json)
@@ -110,6 +113,14 @@ namespace MagnusBall.Cli
                 }
 
                 scan = InRange(limits, "elevationScanDegrees", 0.5, 1e-6, 10);
+                // The bracketing scan flies one trial per scan step: cap their number so no file can run unbounded.
+                double trials = (maxElevation - minElevation) / scan;
+                if (trials > MaxScanTrials)
+                {
+                    throw new InputError(limits.PathOf("elevationScanDegrees"),
+                        $"the scan would fly {JsonFields.Format(Math.Ceiling(trials))} trial shots over [{JsonFields.Format(minElevation)}, {JsonFields.Format(maxElevation)}] deg; " +
+                        $"at most {MaxScanTrials} are allowed: use a scan of at least {JsonFields.Format((maxElevation - minElevation) / MaxScanTrials)} deg or a narrower range");
+                }
                 maxSpeed = limits.Positive("maximumSpeed", 100);
                 limits.RejectUnknown();
             }

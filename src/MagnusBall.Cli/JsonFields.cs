@@ -39,16 +39,24 @@ namespace MagnusBall.Cli
         /// <summary>The path of field <paramref name="name"/> of this object.</summary>
         public string PathOf(string name) => Path.Length == 0 ? name : Path + "." + name;
 
-        /// <summary>The field, or null when it is absent (a JSON null counts as absent).</summary>
+        /// <summary>
+        /// The field, or null when it is absent. A JSON null is an error: the format gives null a meaning only for
+        /// "ground" (read that with <see cref="IsNull"/>); a default is asked for by leaving the field out.
+        /// </summary>
         public JsonElement? Optional(string name)
         {
             _known.Add(name);
-            if (_element.TryGetProperty(name, out JsonElement value) && value.ValueKind != JsonValueKind.Null)
+            if (!_element.TryGetProperty(name, out JsonElement value))
             {
-                return value;
+                return null;
             }
 
-            return null;
+            if (value.ValueKind == JsonValueKind.Null)
+            {
+                throw new InputError(PathOf(name), "must not be null (leave the field out to get its default)");
+            }
+
+            return value;
         }
 
         /// <summary>Whether the field is present at all (even as null).</summary>
@@ -56,6 +64,13 @@ namespace MagnusBall.Cli
         {
             _known.Add(name);
             return _element.TryGetProperty(name, out _);
+        }
+
+        /// <summary>Whether the field is present and a JSON null (the one place the format gives null a meaning: "ground").</summary>
+        public bool IsNull(string name)
+        {
+            _known.Add(name);
+            return _element.TryGetProperty(name, out JsonElement value) && value.ValueKind == JsonValueKind.Null;
         }
 
         /// <summary>The field; fails when it is absent or null.</summary>
@@ -214,7 +229,8 @@ namespace MagnusBall.Cli
 
         public static Vector3d CheckNonZero(Vector3d value, string path)
         {
-            if (!(value.Length > 0) || !double.IsFinite(value.Length))
+            // NormalizedOrZero scales before squaring, so 1e308 and 1e-300 are directions too; only (0, 0, 0) is not.
+            if (value.NormalizedOrZero().LengthSquared == 0)
             {
                 throw new InputError(path, "must be a non-zero direction; got " + Format(value));
             }

@@ -21,9 +21,15 @@ namespace MagnusBall.Cli
 
         public static JsonDocument Parse(string text)
         {
+            JsonDocument document;
             try
             {
-                return JsonDocument.Parse(text, DocumentOptions);
+                document = JsonDocument.Parse(text, DocumentOptions);
+            }
+            catch (ArgumentException e)
+            {
+                // The text itself is not valid UTF-16 (a lone surrogate character): it cannot be transcoded.
+                throw new InputError(string.Empty, "invalid text: " + e.Message.Split('\n')[0].TrimEnd('.') + " (the input must be valid Unicode)");
             }
             catch (JsonException e)
             {
@@ -46,6 +52,66 @@ namespace MagnusBall.Cli
                 }
 
                 throw new InputError(path, "invalid JSON" + where + ": " + detail.TrimEnd('.'));
+            }
+
+            try
+            {
+                CheckStrings(document.RootElement, string.Empty);
+            }
+            catch
+            {
+                document.Dispose();
+                throw;
+            }
+
+            return document;
+        }
+
+        /// <summary>
+        /// Fails on any string or field name holding an escaped lone UTF-16 surrogate ("\ud800"): valid JSON syntax,
+        /// but not a character, and unreadable as text. The walk is bounded by the document (depth at most 64).
+        /// </summary>
+        private static void CheckStrings(JsonElement element, string path)
+        {
+            switch (element.ValueKind)
+            {
+                case JsonValueKind.Object:
+                    foreach (JsonProperty property in element.EnumerateObject())
+                    {
+                        string name;
+                        try
+                        {
+                            name = property.Name;
+                        }
+                        catch (InvalidOperationException)
+                        {
+                            throw new InputError(path, "a field name holds a lone UTF-16 surrogate escape (such as \\ud800), which is not a character");
+                        }
+
+                        CheckStrings(property.Value, path.Length == 0 ? name : path + "." + name);
+                    }
+
+                    break;
+                case JsonValueKind.Array:
+                    int index = 0;
+                    foreach (JsonElement item in element.EnumerateArray())
+                    {
+                        CheckStrings(item, $"{path}[{index}]");
+                        index++;
+                    }
+
+                    break;
+                case JsonValueKind.String:
+                    try
+                    {
+                        element.GetString();
+                    }
+                    catch (InvalidOperationException)
+                    {
+                        throw new InputError(path, "the string holds a lone UTF-16 surrogate escape (such as \\ud800), which is not a character");
+                    }
+
+                    break;
             }
         }
 
@@ -76,7 +142,17 @@ namespace MagnusBall.Cli
                             break;
                         case JsonTokenType.PropertyName:
                             (bool isArray, int index, _) = frames[^1];
-                            frames[^1] = (isArray, index, reader.GetString());
+                            string? name;
+                            try
+                            {
+                                name = reader.GetString();
+                            }
+                            catch (InvalidOperationException)
+                            {
+                                name = "?"; // a lone surrogate in the name: reported when the document parses
+                            }
+
+                            frames[^1] = (isArray, index, name);
                             break;
                         default:
                             BeginValue(frames);

@@ -17,7 +17,7 @@ namespace MagnusBall.Cli
         /// <summary>The scenario's "preset", or null when absent.</summary>
         public static SportPreset? ReadPreset(JsonFields s)
         {
-            if (!s.Has("preset") || s.Optional("preset") is null)
+            if (!s.Has("preset"))
             {
                 return null;
             }

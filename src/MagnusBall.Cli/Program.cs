@@ -90,6 +90,12 @@ namespace MagnusBall.Cli
                 stderr.WriteLine("magnusball: " + e.Message);
                 return Failure;
             }
+            catch (Exception e) when (e is not OutOfMemoryException)
+            {
+                // Never a stack trace: anything else is a bug in the tool, reported as one line with exit code 1.
+                stderr.WriteLine($"magnusball: internal error ({e.GetType().Name}): {e.Message.Split('\n')[0]}; please report it with the input file");
+                return Failure;
+            }
         }
 
         private static int Simulate(string[] args, TextWriter stdout, TextReader? stdin)
@@ -151,11 +157,24 @@ namespace MagnusBall.Cli
             }
 
             IReadOnlyList<Scenario> scenarios = ScenarioReader.Read(ReadInput(file, stdin));
-            bool record = csv || samples.HasValue || svg != null;
+            // Keep only what is printed: every step for plain --csv, else the steps that hold a sample.
+            var counts = new List<int>();
+            if (samples is int sampleCount)
+            {
+                counts.Add(sampleCount);
+            }
+
+            if (svg != null)
+            {
+                counts.Add(TrajectorySvg.SamplesPerFlight);
+            }
+
+            var recording = new Recording(csv && samples is null, counts);
+            var budget = new WorkBudget(ScenarioFlight.StepsPerFileLimit);
             var results = new List<FlightResult>();
             foreach (Scenario scenario in scenarios)
             {
-                results.Add(ScenarioFlight.Simulate(scenario, record));
+                results.Add(ScenarioFlight.Simulate(scenario, recording, budget));
             }
 
             if (svg != null)

@@ -122,11 +122,8 @@ namespace MagnusBall.Cli
         /// <summary><paramref name="count"/> states evenly spaced from launch to the end (landing or maxTime), on the interpolant.</summary>
         public static IEnumerable<FlightState> Sample(FlightResult r, int count)
         {
-            double t0 = r.Scenario.Initial.Time;
-            double t1 = r.End.Time;
-            for (int i = 0; i < count; i++)
+            foreach (double t in ScenarioFlight.SampleTimes(r.Scenario.Initial.Time, r.End.Time, count))
             {
-                double t = i == count - 1 ? t1 : t0 + (t1 - t0) * i / (count - 1);
                 yield return r.At(t);
             }
         }

@@ -59,6 +59,40 @@ namespace MagnusBall.Cli
         }
     }
 
+    /// <summary>What a flight must keep for the output: nothing, every step (CSV rows), or the steps that hold given sample counts.</summary>
+    internal sealed record Recording(bool AllSteps, IReadOnlyList<int> SampleCounts)
+    {
+        /// <summary>Keep nothing but the summary.</summary>
+        public static Recording None { get; } = new Recording(false, Array.Empty<int>());
+    }
+
+    /// <summary>
+    /// The work one scenario file may cost: integrator steps, with every substep of a substepping integrator
+    /// (stable-rk4) counted as a step. Shared by all the scenarios of a file, so no file can run unbounded.
+    /// </summary>
+    internal sealed class WorkBudget
+    {
+        public WorkBudget(long steps) => Remaining = steps;
+
+        public long Limit => Total + Remaining;
+
+        public long Remaining { get; private set; }
+
+        public long Total { get; private set; }
+
+        public bool TrySpend(long steps)
+        {
+            if (steps > Remaining)
+            {
+                return false;
+            }
+
+            Remaining -= steps;
+            Total += steps;
+            return true;
+        }
+    }
+
     /// <summary>
     /// Flies a <see cref="Scenario"/> with its integrator at its fixed step until it lands (first crossing of
     /// the ground plane against its normal) or reaches maxTime, locating the apex and every plane crossing
@@ -66,10 +100,71 @@ namespace MagnusBall.Cli
     /// </summary>
     internal static class ScenarioFlight
     {
-        public static FlightResult Simulate(Scenario scenario, bool recordSteps)
+        /// <summary>
+        /// Most step points kept in memory while a flight runs for its samples (--samples, --svg): 65,536 (10 MB). A
+        /// longer flight is flown a second time keeping only the steps that hold a sample, so memory stays bounded
+        /// by the samples printed, not by the steps taken.
+        /// </summary>
+        public const int MaxKeptPoints = 1 << 16;
+
+        /// <summary>Most rows --csv without --samples prints for one scenario (one per step): 1,000,000.</summary>
+        public const int MaxCsvRows = 1_000_000;
+
+        /// <summary>Most integrator steps (stable-rk4 substeps included) the flights of one file may take: 1e7.</summary>
+        public const long MaxStepsPerFile = 10_000_000;
+
+        /// <summary>The budget <see cref="Program"/> gives a file: <see cref="MaxStepsPerFile"/> (lowered by the fuzz test to keep it short).</summary>
+        internal static long StepsPerFileLimit { get; set; } = MaxStepsPerFile;
+
+        public static FlightResult Simulate(Scenario scenario, bool recordSteps) =>
+            Simulate(scenario, recordSteps ? new Recording(true, Array.Empty<int>()) : Recording.None, new WorkBudget(MaxStepsPerFile));
+
+        public static FlightResult Simulate(Scenario scenario, Recording recording, WorkBudget budget)
+        {
+            if (recording.AllSteps)
+            {
+                return Fly(scenario, budget, keepAll: MaxCsvRows, keep: null, csvRows: true);
+            }
+
+            if (recording.SampleCounts.Count == 0)
+            {
+                return Fly(scenario, budget, keepAll: 0, keep: null, csvRows: false);
+            }
+
+            // Keep every step while there are few; past MaxKeptPoints, drop them, finish the flight, and fly it again
+            // keeping only the steps that hold a sample (the same steps, so the same samples, bit for bit).
+            FlightResult first = Fly(scenario, budget, keepAll: MaxKeptPoints, keep: null, csvRows: false);
+            if (first.Points != null)
+            {
+                return first;
+            }
+
+            var times = new List<double>();
+            foreach (int count in recording.SampleCounts)
+            {
+                times.AddRange(SampleTimes(scenario.Initial.Time, first.End.Time, count));
+            }
+
+            times.Sort();
+            return Fly(scenario, budget, keepAll: 0, keep: times, csvRows: false);
+        }
+
+        /// <summary>The times of <paramref name="count"/> samples evenly spaced from <paramref name="t0"/> to <paramref name="t1"/>.</summary>
+        public static IEnumerable<double> SampleTimes(double t0, double t1, int count)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                yield return i == count - 1 ? t1 : t0 + (t1 - t0) * i / (count - 1);
+            }
+        }
+
+        // keepAll > 0: keep every step point up to that many (beyond: csvRows fails, else the points are dropped).
+        // keep != null: keep only the steps [a, b) that contain one of these sorted times (both ends).
+        private static FlightResult Fly(Scenario scenario, WorkBudget budget, int keepAll, List<double>? keep, bool csvRows)
         {
             FlightModel model = scenario.Model;
             double endTime = scenario.Initial.Time + scenario.MaxTime;
+            string stepPath = $"scenarios[{scenario.Index}].step";
 
             // The library's one flight core: each step's end derivative is the next step's start, the cubic Hermite
             // of the step costs nothing more, and the events are located on it to 1e-12 s.
@@ -77,24 +172,52 @@ namespace MagnusBall.Cli
             var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
             var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
             stepper.Reset(scenario.Initial);
+            var stable = scenario.Integrator as StableIntegrator;
 
-            var points = recordSteps ? new List<StepPoint> { new StepPoint(stepper.State, stepper.Derivative) } : null;
+            List<StepPoint>? points = keepAll > 0 || keep != null ? new List<StepPoint>() : null;
+            if (keepAll > 0)
+            {
+                points!.Add(new StepPoint(stepper.State, stepper.Derivative));
+            }
+
+            int nextKeep = 0;
             var crossings = new List<Crossing>();
             FlightState? apex = null;
             FlightState? landing = null;
 
             // Bounded: each pass advances the clock by a step (the last one trimmed to maxTime by the library's one
-            // end-time rule) or ends the run.
+            // end-time rule) or ends the run, and every step is paid for from the file's work budget.
             while (true)
             {
                 double before = stepper.State.Time;
+                var start = new StepPoint(stepper.State, stepper.Derivative);
                 double h = FlightStepper.StepToward(before, endTime, scenario.Step, out bool last);
-                StepOutcome outcome = stepper.TryStep(h, FlightEventKinds.Landing);
+
+                // The work cap: a step costs 1, a substepping integrator's step as many substeps as it will take
+                // (judged at the start of the step, as the integrator judges it).
+                long cost = stable is null || !(h > 0) ? 1 : StableStepping.SubstepCount(model, stepper.State, h, stable.StiffnessLimit);
+                if (!budget.TrySpend(cost))
+                {
+                    throw new InputError(stepPath,
+                        $"the file's flights need more than {budget.Limit} integrator steps (substeps of {scenario.Integrator.Name} included; " +
+                        $"this one reached t = {JsonFields.Format(before)} s); the CLI stops there so that no file runs unbounded: use a larger step or a shorter maxTime");
+                }
+
+                StepOutcome outcome;
+                try
+                {
+                    outcome = stepper.TryStep(h, FlightEventKinds.Landing);
+                }
+                catch (ArgumentException)
+                {
+                    // A safety net: an integrator that throws on a non-finite intermediate state has diverged.
+                    outcome = StepOutcome.Diverged;
+                }
+
                 if (outcome == StepOutcome.Diverged)
                 {
                     // The core refused the step (the state is kept), so the error can name the step.
-                    throw new InputError(
-                        $"scenarios[{scenario.Index}].step",
+                    throw new InputError(stepPath,
                         $"the flight diverged (the state would not be finite after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step or stable-rk4");
                 }
 
@@ -123,15 +246,58 @@ namespace MagnusBall.Cli
                     }
                 }
 
-                points?.Add(new StepPoint(stepper.State, stepper.Derivative));
+                var end = new StepPoint(stepper.State, stepper.Derivative);
+                if (keep != null)
+                {
+                    // The step [before, end) holds a sample: keep both ends (the start may already be the last kept).
+                    bool holds = false;
+                    while (nextKeep < keep.Count && keep[nextKeep] < end.State.Time)
+                    {
+                        holds |= keep[nextKeep] >= before;
+                        nextKeep++;
+                    }
+
+                    if (holds)
+                    {
+                        if (points!.Count == 0 || points[^1].State.Time != before)
+                        {
+                            points.Add(start);
+                        }
+
+                        points.Add(end);
+                    }
+                }
+                else if (points != null)
+                {
+                    if (points.Count >= keepAll)
+                    {
+                        if (csvRows)
+                        {
+                            throw new InputError(stepPath,
+                                $"--csv without --samples prints one row per step, and this flight takes more than {MaxCsvRows} steps; use --samples N");
+                        }
+
+                        points = null; // too many to keep: the caller flies again for the samples only
+                    }
+                    else
+                    {
+                        points.Add(end);
+                    }
+                }
+
                 if (stepper.IsStopped || last)
                 {
                     break;
                 }
             }
 
-            FlightState end = stepper.State;
-            return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, end, points);
+            if (keep != null && points!.Count == 0)
+            {
+                points.Add(new StepPoint(stepper.State, stepper.Derivative));
+            }
+
+            FlightState final = stepper.State;
+            return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, final, points);
         }
     }
 }

@@ -77,6 +77,7 @@ namespace MagnusBall.Cli
                 initialFields.Vector("angularVelocity", Vector3d.Zero),
                 initialFields.Number("time", 0));
             initialFields.RejectUnknown();
+            CheckTimeAdvances(initial.Time, setup, initialFields.PathOf("time"));
 
             var planes = new List<NamedPlane>();
             JsonElement? planeList = s.Optional("planes");
@@ -99,6 +100,26 @@ namespace MagnusBall.Cli
             s.RejectUnknown();
             return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime);
         }
+
+        /// <summary>
+        /// Time must be able to advance by a step everywhere in the flight: a double resolves time to one ulp of it
+        /// (0.125 s at t = 1e15 s), so the step must be at least <see cref="MinimumStepInUlps"/> ulps of the latest
+        /// |time| the flight can reach, or each step would be rounded away or badly distorted.
+        /// </summary>
+        internal static void CheckTimeAdvances(double time, FlightSetup setup, string path)
+        {
+            double latest = Math.Max(Math.Abs(time), Math.Abs(time + setup.MaxTime));
+            double ulp = Math.BitIncrement(latest) - latest;
+            if (!(ulp * MinimumStepInUlps <= setup.Step))
+            {
+                throw new InputError(path,
+                    $"time cannot advance: at |t| = {JsonFields.Format(latest)} s a double resolves only {JsonFields.Format(ulp)} s, " +
+                    $"so a step of {JsonFields.Format(setup.Step)} s (less than {MinimumStepInUlps} times that) would be rounded away or distorted; start the flight nearer t = 0");
+            }
+        }
+
+        /// <summary>The step must span at least this many ulps of the flight's latest time (see <see cref="CheckTimeAdvances"/>).</summary>
+        public const double MinimumStepInUlps = 1024;
 
         /// <summary>
         /// Reads the fields a scenario and an aim share: ball, air, gravity, aero, spinDecay, integrator, step,
@@ -149,7 +170,7 @@ namespace MagnusBall.Cli
             Vector3d up = model.Up;
 
             NamedPlane? ground;
-            if (s.Has("ground") && s.Optional("ground") is null)
+            if (s.IsNull("ground"))
             {
                 ground = null; // "ground": null switches the ground off.
             }

@@ -27,7 +27,8 @@ namespace MagnusBall.Cli
         private const double Width = 900;
         private const double PanelHeight = 280;
         private const double Left = 70, Right = 20, Top = 40, Gap = 70, Bottom = 50;
-        private const int SamplesPerFlight = 400;
+        /// <summary>Points drawn per flight (on the interpolant).</summary>
+        internal const int SamplesPerFlight = 400;
 
         private static readonly string[] Palette =
         {
@@ -199,14 +200,14 @@ namespace MagnusBall.Cli
             {
                 (double x, _) = Map(view, a, view.MinB);
                 svg.Append($"<line x1=\"{F(x)}\" y1=\"{F(y0)}\" x2=\"{F(x)}\" y2=\"{F(y1)}\" stroke=\"#e4e4e4\"/>\n");
-                svg.Append($"<text x=\"{F(x)}\" y=\"{F(y1 + 15)}\" text-anchor=\"middle\">{F(a)}</text>\n");
+                svg.Append($"<text x=\"{F(x)}\" y=\"{F(y1 + 15)}\" text-anchor=\"middle\">{Label(a)}</text>\n");
             }
 
             foreach (double b in Ticks(view.MinB, view.MaxB))
             {
                 (_, double y) = Map(view, view.MinA, b);
                 svg.Append($"<line x1=\"{F(x0)}\" y1=\"{F(y)}\" x2=\"{F(x1)}\" y2=\"{F(y)}\" stroke=\"#e4e4e4\"/>\n");
-                svg.Append($"<text x=\"{F(x0 - 6)}\" y=\"{F(y + 4)}\" text-anchor=\"end\">{F(b)}</text>\n");
+                svg.Append($"<text x=\"{F(x0 - 6)}\" y=\"{F(y + 4)}\" text-anchor=\"end\">{Label(b)}</text>\n");
             }
 
             svg.Append($"<text x=\"{F((x0 + x1) / 2)}\" y=\"{F(y1 + 32)}\" text-anchor=\"middle\">downrange (m)</text>\n");
@@ -322,39 +323,104 @@ namespace MagnusBall.Cli
             return poly;
         }
 
+        // Halves throughout: exact (a power of two) and finite even for extents near double.MaxValue. Pixels are
+        // clamped to +-1e5 (far outside the page) so every coordinate written is a finite number.
         private static (double X, double Y) Map(View v, double a, double b) =>
-            (Left + (a - v.MinA) / (v.MaxA - v.MinA) * (Width - Left - Right),
-             v.Y0 + PanelHeight - (b - v.MinB) / (v.MaxB - v.MinB) * PanelHeight);
+            (Pixel(Left + (a * 0.5 - v.MinA * 0.5) / (v.MaxA * 0.5 - v.MinA * 0.5) * (Width - Left - Right)),
+             Pixel(v.Y0 + PanelHeight - (b * 0.5 - v.MinB * 0.5) / (v.MaxB * 0.5 - v.MinB * 0.5) * PanelHeight));
+
+        private static double Pixel(double x) => double.IsNaN(x) ? 0 : Math.Max(-1e5, Math.Min(1e5, x));
 
         private static void Pad(ref double min, ref double max)
         {
-            double span = max - min;
-            if (!(span > 1e-6))
+            if (!double.IsFinite(min) || !double.IsFinite(max))
+            {
+                // A projection overflowed (a flight near double.MaxValue): draw a unit axis rather than none.
+                min = double.IsFinite(min) ? min : double.IsFinite(max) ? max - 1 : -1;
+                max = double.IsFinite(max) ? max : min + 1;
+            }
+
+            double span = max * 0.5 - min * 0.5;
+            span += span;
+            // An axis must span far more than the resolution of its numbers (1e-9 of them), or its ticks and the
+            // flight's points would collapse onto each other: a flight 1e12 m from the origin that moves 1 mm.
+            double magnitude = Math.Max(Math.Abs(min), Math.Abs(max));
+            if (!(span > 1e-6) || !(span > 1e-9 * magnitude))
             {
                 span = Math.Max(1, Math.Abs(max));
-                min -= 0.5 * span;
-                max += 0.5 * span;
+                min = Math.Max(-double.MaxValue, min - 0.5 * span);
+                max = Math.Min(double.MaxValue, max + 0.5 * span);
                 return;
             }
 
-            min -= 0.05 * span;
-            max += 0.08 * span;
+            min = Math.Max(-double.MaxValue, min - 0.05 * span);
+            max = Math.Min(double.MaxValue, max + 0.08 * span);
         }
+
+        /// <summary>Most ticks drawn on one axis (a guard: the tick spacing gives about 8).</summary>
+        internal const int MaxTicksPerAxis = 32;
 
         private static IEnumerable<double> Ticks(double min, double max)
         {
-            double raw = (max - min) / 8;
-            double magnitude = Math.Pow(10, Math.Floor(Math.Log10(raw)));
-            double step = new[] { 1.0, 2.0, 5.0, 10.0 }.Select(m => m * magnitude).First(s => s >= raw);
-            for (double t = Math.Ceiling(min / step) * step; t <= max + 1e-9 * step; t += step)
+            double raw = (max * 0.5 - min * 0.5) / 4; // (max - min) / 8, without overflow
+            if (!(raw > 0) || !double.IsFinite(raw))
             {
+                yield break;
+            }
+
+            double magnitude = Math.Pow(10, Math.Floor(Math.Log10(raw)));
+            double step = new[] { 1.0, 2.0, 5.0, 10.0 }.Select(m => m * magnitude).FirstOrDefault(s => s >= raw);
+            if (!(step > 0) || !double.IsFinite(step))
+            {
+                yield break;
+            }
+
+            // Ticks by index (k step), never by adding steps: a sum can stall where a step is below a double's resolution.
+            double first = Math.Ceiling(min / step);
+            for (int i = 0; i < MaxTicksPerAxis; i++)
+            {
+                double t = (first + i) * step;
+                if (!(t <= max + 1e-9 * step))
+                {
+                    yield break;
+                }
+
                 yield return Math.Abs(t) < 1e-9 * step ? 0 : Math.Round(t, 10);
             }
         }
 
         private static string F(double value) => Math.Round(value, 2).ToString("0.##", CultureInfo.InvariantCulture);
 
-        private static string Escape(string text) =>
-            text.Replace("&", "&amp;").Replace("<", "&lt;").Replace(">", "&gt;").Replace("\"", "&quot;");
+        // Tick labels: as before for everyday numbers, in exponent form from 1e7 on (1e300 is not 301 digits).
+        private static string Label(double value) =>
+            Math.Abs(value) >= 1e7 ? value.ToString("0.###e0", CultureInfo.InvariantCulture) : F(value);
+
+        // XML 1.0 allows tab, newline, carriage return and U+0020 on, except lone surrogates, U+FFFE and U+FFFF:
+        // anything else in a name (a control character, U+0000) is written as U+FFFD so the SVG stays well-formed.
+        internal static string Escape(string text)
+        {
+            var escaped = new StringBuilder(text.Length);
+            for (int i = 0; i < text.Length; i++)
+            {
+                char c = text[i];
+                if (char.IsHighSurrogate(c) && i + 1 < text.Length && char.IsLowSurrogate(text[i + 1]))
+                {
+                    escaped.Append(c).Append(text[++i]);
+                    continue;
+                }
+
+                bool allowed = c == '\t' || c == '\n' || c == '\r' || (c >= 0x20 && c <= 0xFFFD && !char.IsSurrogate(c));
+                escaped.Append(c switch
+                {
+                    '&' => "&amp;",
+                    '<' => "&lt;",
+                    '>' => "&gt;",
+                    '"' => "&quot;",
+                    _ => allowed ? c.ToString() : "\uFFFD",
+                });
+            }
+
+            return escaped.ToString();
+        }
     }
 }

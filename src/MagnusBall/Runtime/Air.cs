@@ -98,7 +98,7 @@ namespace MagnusBall
                 return Wind;
             }
 
-            return Wind * profile.Factor(profile.HeightOf(position, up));
+            return Overflow.Multiply(Wind, profile.Factor(profile.HeightOf(position, up)));
         }
 
         /// <summary>

@@ -65,6 +65,12 @@ namespace MagnusBall
             SpinDecay = spinDecay;
             Up = (-gravity).NormalizedOrZero();
             _dragFactor = air.Density * ball.CrossSectionalArea / (2 * ball.Mass);
+            if (!double.IsFinite(_dragFactor))
+            {
+                // pi r^2 or 2 m overflowed (a ball of radius 1e200 m or mass 1e308 kg): group as (rho / m) (pi r / 2) r,
+                // finite whenever k is, never NaN.
+                _dragFactor = Overflow.Multiply(Overflow.Multiply(air.Density / ball.Mass, 0.5 * Math.PI * ball.Radius), ball.Radius);
+            }
             _kinematicRadius = ball.Radius;
             _viscosity = air.DynamicViscosity;
             _hasAero = (drag != null || lift != null) && air.Density > 0;
@@ -146,8 +152,18 @@ namespace MagnusBall
 
         /// <summary>
         /// The right-hand side of the ODE at <paramref name="state"/>: one derivative evaluation, the unit
-        /// of cost every integrator is measured in. Allocates nothing; finite for every finite state.
+        /// of cost every integrator is measured in. Allocates nothing; finite for every finite state whose forces fit
+        /// in a double, never NaN (with coefficient laws that never return NaN, as every shipped law does).
         /// </summary>
+        /// <remarks>
+        /// Never NaN for a finite state. Speeds and spins of any finite size are handled: lengths are scaled
+        /// before squaring and every product with a zero factor is zero, so each component is finite whenever its
+        /// true value fits in a double (a 1 kg ball at v = (1e150, 0, 0) gets its true drag, not NaN). A component whose true
+        /// value exceeds double.MaxValue (a tennis ball at 1e155 m/s: k C_D s^2 = 2e308) is +-infinity: the state
+        /// then diverges in the integrator, which the steppers report. (Saturating at double.MaxValue instead was
+        /// measured to hide such divergence: RK4's stages cancel to a finite, meaningless state.) Everyday states take
+        /// the plain formulas (bit for bit as before); only a non-finite result falls back to the scaled path.
+        /// </remarks>
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
         public StateDerivative Derivative(in FlightState state)
         {
@@ -196,6 +212,76 @@ namespace MagnusBall
                 {
                     spinAcceleration = SpinDecay.SpinAcceleration(w, conditions);
                 }
+            }
+
+            if (!acceleration.IsFinite || !spinAcceleration.IsFinite)
+            {
+                return ScaledDerivative(state);
+            }
+
+            return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
+        }
+
+        // The same forces without spurious overflow: directions are unit vectors and magnitudes k s^2 C are products
+        // of finite factors, infinite only when the true value exceeds double.MaxValue; a zero factor gives zero.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private StateDerivative ScaledDerivative(in FlightState state)
+        {
+            Vector3d w = state.AngularVelocity;
+            Vector3d wind = _windVaries ? Air.WindAt(state.Position, Up) : _wind;
+            Vector3d relative = state.Velocity - wind;
+            double relativeScale = 1;
+            if (!relative.IsFinite && wind.IsFinite)
+            {
+                relative = state.Velocity * 0.5 - wind * 0.5; // finite halves of a difference that overflowed
+                relativeScale = 2;
+            }
+
+            double speed = relativeScale * relative.Length; // infinite only if the true speed exceeds double.MaxValue
+            double spinRate = w.Length;
+            Vector3d acceleration = Gravity;
+            Vector3d spinAcceleration = default;
+            AeroConditions conditions;
+            if (speed > MinimumAerodynamicSpeed)
+            {
+                Vector3d direction = relative.NormalizedOrZero();
+                // (w x v_hat) / |w| and |w x v_hat| from w scaled by its largest component (no overflow in the cross product).
+                Vector3d liftAxis = default;
+                double transverse = 0;
+                double largest = w.MaxAbsComponent;
+                if (largest > 0 && double.IsFinite(largest))
+                {
+                    var unit = new Vector3d(w.X / largest, w.Y / largest, w.Z / largest);
+                    Vector3d cross = Vector3d.Cross(unit, direction);
+                    liftAxis = cross / unit.Length;
+                    transverse = cross.Length * largest;
+                }
+
+                conditions = new AeroConditions(speed, spinRate, transverse, _kinematicRadius, Air.Density, _viscosity);
+                if (_hasAero)
+                {
+                    double pressure = Overflow.Multiply(Overflow.Multiply(_dragFactor, speed), speed); // k s^2
+                    if (Drag != null)
+                    {
+                        double drag = Overflow.Multiply(pressure, Drag.DragCoefficient(conditions));
+                        acceleration = Overflow.Add(acceleration, Overflow.Multiply(direction, -drag));
+                    }
+
+                    if (Lift != null && spinRate > 0)
+                    {
+                        double lift = Overflow.Multiply(pressure, Lift.LiftCoefficient(conditions));
+                        acceleration = Overflow.Add(acceleration, Overflow.Multiply(liftAxis, lift));
+                    }
+                }
+            }
+            else
+            {
+                conditions = new AeroConditions(0, spinRate, 0, _kinematicRadius, Air.Density, _viscosity);
+            }
+
+            if (SpinDecay != null)
+            {
+                spinAcceleration = SpinDecay.SpinAcceleration(w, conditions);
             }
 
             return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
@@ -249,15 +335,39 @@ namespace MagnusBall
         /// <summary>
         /// Translational mechanical energy 1/2 m |v|^2 - m g . p, J (kinetic energy plus potential energy
         /// measured from the origin along gravity). Without wind, drag can only lower it and Magnus lift
-        /// does no work.
+        /// does no work. Never NaN for a finite state; finite whenever the energy fits in a double.
         /// </summary>
         /// <param name="state">The state.</param>
-        public double MechanicalEnergy(in FlightState state) =>
-            Ball.Mass * (0.5 * state.Velocity.LengthSquared - Vector3d.Dot(Gravity, state.Position));
+        public double MechanicalEnergy(in FlightState state)
+        {
+            double energy = Ball.Mass * (0.5 * state.Velocity.LengthSquared - Vector3d.Dot(Gravity, state.Position));
+            if (double.IsFinite(energy) || !state.IsFinite)
+            {
+                return energy;
+            }
 
-        /// <summary>Rotational kinetic energy 1/2 I |w|^2, J.</summary>
+            // Scaled, term by term: finite when the energy fits in a double, never NaN (infinity minus infinity).
+            double speed = state.Velocity.Length;
+            double kinetic = Overflow.Multiply(Overflow.Multiply(0.5 * Ball.Mass, speed), speed);
+            double potential = Overflow.Add(
+                Overflow.Add(-Overflow.Multiply(Overflow.Multiply(Ball.Mass, Gravity.X), state.Position.X), -Overflow.Multiply(Overflow.Multiply(Ball.Mass, Gravity.Y), state.Position.Y)),
+                -Overflow.Multiply(Overflow.Multiply(Ball.Mass, Gravity.Z), state.Position.Z));
+            return Overflow.Add(kinetic, potential);
+        }
+
+        /// <summary>Rotational kinetic energy 1/2 I |w|^2, J (never NaN; infinite only beyond double.MaxValue).</summary>
         /// <param name="state">The state.</param>
-        public double RotationalEnergy(in FlightState state) => 0.5 * Ball.MomentOfInertia * state.AngularVelocity.LengthSquared;
+        public double RotationalEnergy(in FlightState state)
+        {
+            double energy = 0.5 * Ball.MomentOfInertia * state.AngularVelocity.LengthSquared;
+            if (double.IsFinite(energy) || !state.AngularVelocity.IsFinite)
+            {
+                return energy;
+            }
+
+            double rate = state.AngularVelocity.Length;
+            return Overflow.Multiply(Overflow.Multiply(0.5 * Ball.MomentOfInertia, rate), rate);
+        }
 
         /// <inheritdoc />
         public override string ToString() =>

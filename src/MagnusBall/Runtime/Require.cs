@@ -73,7 +73,7 @@ namespace MagnusBall
         internal static Vector3d NonZero(in Vector3d value, string name)
         {
             Finite(value, name);
-            if (value.LengthSquared == 0)
+            if (value.X == 0 && value.Y == 0 && value.Z == 0)
             {
                 throw new ArgumentException($"{name} must be a finite non-zero vector; got {value}.", name);
             }

@@ -52,7 +52,7 @@ namespace MagnusBall
                     nameof(direction));
             }
 
-            return axis * (rate / sine);
+            return Overflow.Multiply(axis, rate / sine);
         }
 
         /// <summary>Topspin: spin that curves the ball down (toward -<paramref name="up"/>), so it dips.</summary>

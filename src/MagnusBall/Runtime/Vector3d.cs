@@ -49,11 +49,20 @@ namespace MagnusBall
         /// <summary>The unit vector (0, 0, 1).</summary>
         public static Vector3d UnitZ => new Vector3d(0, 0, 1);
 
-        /// <summary>The Euclidean length.</summary>
+        /// <summary>
+        /// The Euclidean length. Finite for every finite vector whose length fits in a double: components too large
+        /// for their squares (above about 1.3e154) or too small (below about 1.5e-154) are scaled first, so
+        /// (1e155, 0, 0) has length 1e155, not infinity, and (1e-160, 0, 0) has 1e-160, not 0.
+        /// </summary>
         public double Length
         {
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            get => Math.Sqrt(X * X + Y * Y + Z * Z);
+            get
+            {
+                double squared = X * X + Y * Y + Z * Z;
+                // The common case: no overflow and no loss to subnormals (2.2250738585072014e-308 is the smallest normal double).
+                return squared >= 2.2250738585072014e-308 && squared <= double.MaxValue ? Math.Sqrt(squared) : ScaledLength(squared);
+            }
         }
 
         /// <summary>The squared Euclidean length (no square root).</summary>
@@ -68,26 +77,52 @@ namespace MagnusBall
 
         /// <summary>
         /// The unit vector in this direction, or <see cref="Zero"/> for the zero vector or a vector with a
-        /// non-finite component (never NaN). Finite vectors too long for their squared length to fit in a
-        /// double (components above about 1.3e154) are scaled down first, so they still give a unit vector.
+        /// non-finite component (never NaN). Every other finite vector gives a unit vector, however long or short:
+        /// components beyond the range of their squares are scaled by the largest one first.
         /// </summary>
         public Vector3d NormalizedOrZero()
         {
-            double length = Length;
-            if (length > 0 && length <= double.MaxValue)
+            double squared = X * X + Y * Y + Z * Z;
+            if (squared >= 2.2250738585072014e-308 && squared <= double.MaxValue)
             {
-                return this / length;
+                return this / Math.Sqrt(squared);
             }
 
-            if (!(length > 0) || !IsFinite)
+            if (!IsFinite)
             {
                 return Zero;
             }
 
-            // |v|^2 overflowed although every component is finite: divide by the largest component first.
             double largest = Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)));
+            if (largest == 0)
+            {
+                return Zero;
+            }
+
+            // Divide (not multiply by 1/largest, which overflows for a subnormal largest) so the components are in [-1, 1].
             var scaled = new Vector3d(X / largest, Y / largest, Z / largest);
-            return scaled / scaled.Length;
+            return scaled / Math.Sqrt(scaled.X * scaled.X + scaled.Y * scaled.Y + scaled.Z * scaled.Z);
+        }
+
+        /// <summary>The largest absolute component (0 for the zero vector).</summary>
+        internal double MaxAbsComponent => Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)));
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private double ScaledLength(double squared)
+        {
+            if (!IsFinite)
+            {
+                return Math.Sqrt(squared); // NaN or infinity, as the plain formula gives
+            }
+
+            double largest = MaxAbsComponent;
+            if (largest == 0)
+            {
+                return 0;
+            }
+
+            double x = X / largest, y = Y / largest, z = Z / largest;
+            return largest * Math.Sqrt(x * x + y * y + z * z); // infinity only if the length itself exceeds double.MaxValue
         }
 
         /// <summary>The dot product <paramref name="a"/> . <paramref name="b"/>.</summary>

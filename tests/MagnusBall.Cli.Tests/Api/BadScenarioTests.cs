@@ -25,7 +25,7 @@ namespace MagnusBall.Cli.Tests.Api
             yield return Case("ScenariosNotArray", r => r["scenarios"] = 3, "scenarios: must be an array");
             yield return Case("MissingBall", r => S(r).Remove("ball"), "scenarios[0].ball: required field is missing");
             yield return Case("MissingMass", r => S(r)["ball"]!.AsObject().Remove("mass"), "scenarios[0].ball.mass: required field is missing");
-            yield return Case("NullRadius", r => S(r)["ball"]!["radius"] = null, "scenarios[0].ball.radius: required field is missing");
+            yield return Case("NullRadius", r => S(r)["ball"]!["radius"] = null, "scenarios[0].ball.radius: must not be null");
             yield return Case("MissingInitial", r => S(r).Remove("initial"), "scenarios[0].initial: required field is missing");
             yield return Case("MissingVelocity", r => S(r)["initial"]!.AsObject().Remove("velocity"), "scenarios[0].initial.velocity: required field is missing");
             yield return Case("MissingModel", r => S(r)["aero"]!["drag"]!.AsObject().Remove("model"), "scenarios[0].aero.drag.model: required field is missing");

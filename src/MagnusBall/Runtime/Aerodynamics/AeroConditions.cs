@@ -11,6 +11,8 @@ namespace MagnusBall.Aerodynamics
     /// S_perp = r|w x v_hat|/s, built from the spin component across the flight, is what lift models read
     /// (see docs/references.md section 1 and docs/physics.md). When the air-relative speed is
     /// zero both parameters are reported as 0 (they are undefined there, and no aerodynamic force acts).
+    /// For finite arguments no derived value is NaN, and each is finite whenever its true value fits in a double
+    /// (one beyond double.MaxValue, such as the spin parameter at a speed of 1e-300 m/s, is +infinity).
     /// </remarks>
     public readonly struct AeroConditions
     {
@@ -58,6 +60,12 @@ namespace MagnusBall.Aerodynamics
                 double inverse = radius / speed;
                 SpinParameter = spinRate * inverse;
                 TransverseSpinParameter = transverseSpinRate * inverse;
+                if (!double.IsFinite(SpinParameter) || !double.IsFinite(TransverseSpinParameter))
+                {
+                    // r / s or its product overflowed (a tiny speed): w / s first, and 0 spin stays 0 (never 0 x infinity).
+                    SpinParameter = Overflow.Multiply(Ratio(spinRate, speed), radius);
+                    TransverseSpinParameter = Overflow.Multiply(Ratio(transverseSpinRate, speed), radius);
+                }
             }
             else
             {
@@ -66,6 +74,18 @@ namespace MagnusBall.Aerodynamics
             }
 
             ReynoldsNumber = density * speed * 2 * radius / dynamicViscosity;
+            if (!double.IsFinite(ReynoldsNumber))
+            {
+                // Grouped so that no intermediate overflows where the result fits; 0 density or speed gives 0, never NaN.
+                ReynoldsNumber = Overflow.Multiply(Overflow.Multiply(density / dynamicViscosity, speed), 2 * radius);
+            }
+        }
+
+        // w / s; when both are infinite (beyond double.MaxValue) their ratio is unknown and taken as 1, never NaN.
+        private static double Ratio(double spin, double speed)
+        {
+            double ratio = spin / speed;
+            return double.IsNaN(ratio) && !double.IsNaN(spin) && !double.IsNaN(speed) ? 1 : ratio;
         }
 
         /// <summary>Spin rate in revolutions per minute, |w| 60 / (2 pi).</summary>

@@ -82,7 +82,7 @@ namespace MagnusBall.Aerodynamics
         public static LinearSpinLift Cross2020Tennis { get; } = new LinearSpinLift(0.6);
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Slope * conditions.TransverseSpinParameter;
+        public double LiftCoefficient(in AeroConditions conditions) => Overflow.Multiply(Slope, conditions.TransverseSpinParameter);
 
         /// <inheritdoc />
         public override string ToString() => $"LinearSpinLift(k={Slope:R})";

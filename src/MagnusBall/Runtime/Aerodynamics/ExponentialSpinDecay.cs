@@ -21,8 +21,18 @@ namespace MagnusBall.Aerodynamics
         public double TimeConstant { get; }
 
         /// <inheritdoc />
-        public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
-            angularVelocity * (-1.0 / TimeConstant);
+        public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions)
+        {
+            Vector3d rate = angularVelocity * (-1.0 / TimeConstant);
+            if (rate.IsFinite || !angularVelocity.IsFinite)
+            {
+                return rate;
+            }
+
+            // 1/tau overflowed (tau below 5.6e-309): divide instead, so a zero component stays 0 (not 0 x infinity).
+            double tau = TimeConstant;
+            return new Vector3d(-angularVelocity.X / tau, -angularVelocity.Y / tau, -angularVelocity.Z / tau);
+        }
 
         /// <inheritdoc />
         public override string ToString() => $"ExponentialSpinDecay(tau={TimeConstant:R} s)";

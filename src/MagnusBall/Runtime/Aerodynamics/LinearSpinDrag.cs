@@ -39,7 +39,8 @@ namespace MagnusBall.Aerodynamics
         public static LinearSpinDrag GolfTrackManCalibrated { get; } = new LinearSpinDrag(0.1845, 0.3533);
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) => Intercept + Slope * conditions.SpinParameter;
+        public double DragCoefficient(in AeroConditions conditions) =>
+            Intercept + Overflow.Multiply(Slope, conditions.SpinParameter);
 
         /// <inheritdoc />
         public override string ToString() => $"LinearSpinDrag({Intercept:R} + {Slope:R} S)";

@@ -42,7 +42,9 @@ namespace MagnusBall.Aerodynamics
         /// <summary>C_L at <paramref name="spinParameter"/> (0 for S &lt;= 0).</summary>
         /// <param name="spinParameter">S_perp.</param>
         public static double Evaluate(double spinParameter) =>
-            spinParameter > 0 ? 1.120 * spinParameter / (0.583 + 2.333 * spinParameter) : 0.0;
+            !(spinParameter > 0) ? 0.0
+            : spinParameter < 1e300 ? 1.120 * spinParameter / (0.583 + 2.333 * spinParameter)
+            : 1.120 / (0.583 / spinParameter + 2.333); // the same, without 2.333 S overflowing
 
         /// <inheritdoc />
         public override string ToString() => "NathanBaseballLift";

@@ -113,7 +113,9 @@ namespace MagnusBall.Aerodynamics
             }
 
             double t = (spinParameter - s[i - 1]) / (s[i] - s[i - 1]);
-            return c[i - 1] + t * (c[i] - c[i - 1]);
+            double rise = c[i] - c[i - 1];
+            // Coefficients near +-double.MaxValue of opposite signs overflow their difference: weight them instead.
+            return double.IsFinite(rise) ? c[i - 1] + t * rise : (1 - t) * c[i - 1] + t * c[i];
         }
 
         /// <inheritdoc />

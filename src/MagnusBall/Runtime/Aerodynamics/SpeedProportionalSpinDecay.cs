@@ -56,7 +56,7 @@ namespace MagnusBall.Aerodynamics
 
         /// <inheritdoc />
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
-            angularVelocity * (-RatePerMetre * conditions.Speed);
+            Overflow.Multiply(angularVelocity, Overflow.Multiply(-RatePerMetre, conditions.Speed));
 
         /// <inheritdoc />
         public override string ToString() => $"SpeedProportionalSpinDecay(k={RatePerMetre:R} /m)";

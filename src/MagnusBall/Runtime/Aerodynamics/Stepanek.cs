@@ -61,7 +61,8 @@ namespace MagnusBall.Aerodynamics
                 return 0;
             }
 
-            return spinParameter / (2.022 * spinParameter + 0.981);
+            // Divided through by S for huge S, where 2.022 S would overflow.
+            return spinParameter < 1e300 ? spinParameter / (2.022 * spinParameter + 0.981) : 1.0 / (2.022 + 0.981 / spinParameter);
         }
 
         /// <inheritdoc />

@@ -1,0 +1,314 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using System.Text.Json.Nodes;
+using System.Xml.Linq;
+using NUnit.Framework;
+
+namespace MagnusBall.Cli.Tests.Api
+{
+    /// <summary>
+    /// The hostile inputs of issue 15, one regression test each: every one used to crash the tool with a stack
+    /// trace, loop until out of memory, write invalid XML, or say something misleading.
+    /// </summary>
+    [TestFixture]
+    public class HostileInputTests
+    {
+        private static JsonObject S(JsonObject root) => CliRun.FirstScenario(root);
+
+        private static void AssertInputError(CliRun run, string expectedStart)
+        {
+            Assert.That(run.ExitCode, Is.EqualTo(Program.BadInput), run.Stderr);
+            Assert.That(run.Stdout, Is.Empty);
+            Assert.That(run.Stderr, Does.StartWith("magnusball: " + expectedStart));
+            Assert.That(run.Stderr.TrimEnd('\n'), Does.Not.Contain("\n"), "one line, no stack trace");
+        }
+
+        [TestCase("""{"scenarios": [{"name": "\ud800", "ball": {"mass": 0.057, "radius": 0.033}, "initial": {"position": [0,0,1], "velocity": [1,0,1]}}]}""",
+            "scenarios[0].name: the string holds a lone UTF-16 surrogate")]
+        [TestCase("""{"scenarios": [{"ball": {"mass": 0.057, "radius": 0.033}, "integrator": "rk\udc004", "initial": {"position": [0,0,1], "velocity": [1,0,1]}}]}""",
+            "scenarios[0].integrator: the string holds a lone UTF-16 surrogate")]
+        [TestCase("""{"scenarios": [{"\ud800x": 1, "ball": {"mass": 0.057, "radius": 0.033}, "initial": {"position": [0,0,1], "velocity": [1,0,1]}}]}""",
+            "scenarios[0]: a field name holds a lone UTF-16 surrogate")]
+        public void LoneSurrogate_IsAnInputError(string json, string expected)
+        {
+            AssertInputError(CliRun.Simulate(json), expected);
+        }
+
+        [Test]
+        public void LoneSurrogateCharacter_InTheText_IsAnInputError()
+        {
+            // Not an escape but the UTF-16 code unit itself (a string handed to Program.Run by a host).
+            CliRun run = CliRun.Simulate(CliRun.DriveJson.Replace("\"drive\"", "\"a\ud800b\""));
+            Assert.That(run.ExitCode, Is.EqualTo(Program.BadInput), run.Stderr);
+            Assert.That(run.Stderr.TrimEnd('\n'), Does.Not.Contain("\n"));
+        }
+
+        [Test]
+        public void LoneSurrogate_InAnAimFile_IsAnInputError()
+        {
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            int code = Program.Run(new[] { "aim", "-" }, stdout, stderr, new StringReader("""{"aims": [{"name": "\udfff"}]}"""));
+            Assert.That(code, Is.EqualTo(Program.BadInput), stderr.ToString());
+            Assert.That(stderr.ToString(), Does.StartWith("magnusball: aims[0].name: the string holds a lone UTF-16 surrogate"));
+        }
+
+        [TestCase("rk4")]
+        [TestCase("stable-rk4")]
+        public void Divergence_ExitsWith2_ForEveryIntegrator(string integrator)
+        {
+            // v = 1e155 m/s: the drag overflows within the first step (stable-rk4 used to throw from a substep).
+            JsonObject root = CliRun.Drive();
+            S(root)["integrator"] = integrator;
+            S(root)["initial"]!["velocity"] = new JsonArray(1e155, 0, 0);
+            AssertInputError(CliRun.Simulate(root), "scenarios[0].step: the flight diverged (the state would not be finite after t = 0 s with " + integrator + ")");
+        }
+
+        [Test]
+        public void Svg_OfAFlightFarFromTheOrigin_IsBoundedAndValid()
+        {
+            // Position y 1e12: the top view's lateral axis spans millimetres at 1e12 m, where a tick step was
+            // below a double's resolution and the tick loop never ended (4.3 GB before).
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 1e12, 1);
+            XDocument svg = DrawnSvg(root, out CliRun run);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            AssertCoordinatesFinite(svg);
+            XNamespace ns = "http://www.w3.org/2000/svg";
+            int gridLines = svg.Descendants(ns + "line").Count(l => (string?)l.Attribute("stroke") == "#e4e4e4");
+            Assert.That(gridLines, Is.InRange(1, 4 * TrajectorySvg.MaxTicksPerAxis), "two views, two axes each, capped");
+        }
+
+        [TestCase(1e300)]
+        [TestCase(-1.7e308)]
+        [TestCase(1e-300)]
+        public void Svg_OfExtremeButFiniteFlights_IsValid(double y)
+        {
+            JsonObject root = CliRun.Drive();
+            S(root)["gravity"] = new JsonArray(0, 0, 0);
+            S(root)["ground"] = null;
+            S(root)["maxTime"] = 0.1;
+            S(root)["initial"]!["position"] = new JsonArray(0, y, 1);
+            XDocument svg = DrawnSvg(root, out CliRun run);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            AssertCoordinatesFinite(svg);
+        }
+
+        [Test]
+        public void Svg_WithControlCharactersInNames_IsWellFormedXml()
+        {
+            JsonObject root = CliRun.Drive();
+            S(root)["name"] = "a\u0001b\u0000c\uffff\ufffe d\U0001F3BE";
+            S(root)["planes"]![0]!["name"] = "net\u001b";
+            XDocument svg = DrawnSvg(root, out CliRun run); // XDocument.Load throws on any character XML forbids
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            XNamespace ns = "http://www.w3.org/2000/svg";
+            string[] texts = svg.Descendants(ns + "text").Select(t => t.Value).ToArray();
+            // Forbidden characters become U+FFFD; a valid surrogate pair (a tennis ball emoji) stays.
+            Assert.That(texts, Does.Contain("a\ufffdb\ufffdc\ufffd\ufffd d\U0001F3BE"));
+            Assert.That(texts, Does.Contain("net\ufffd"));
+            // The JSON keeps the name as given (escaped by the JSON writer).
+            Assert.That(run.FirstResult().GetProperty("name").GetString(), Is.EqualTo("a\u0001b\u0000c\uffff\ufffe d\U0001F3BE"));
+        }
+
+        [Test]
+        public void Samples_OfALongFlight_KeepOnlyTheStepsThatHoldThem()
+        {
+            // No gravity, step 1e-5 s for 2 s: 200,000 steps (the issue's 1e-6 s for 10 s took 3.9 GB for 10 samples).
+            JsonObject root = CliRun.Drive();
+            S(root)["gravity"] = new JsonArray(0, 0, 0);
+            S(root)["step"] = 1e-5;
+            S(root)["maxTime"] = 2;
+            Scenario scenario = ScenarioReader.Read(root.ToJsonString()).Single();
+
+            FlightResult sparse = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10 }), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
+            Assert.That(sparse.Steps, Is.EqualTo(200_000));
+            Assert.That(sparse.Points!.Count, Is.LessThanOrEqualTo(2 * 10), "two step ends per sample at most");
+
+            // The samples are the ones the full recording gives, bit for bit (the same steps, flown again).
+            FlightResult full = ScenarioFlight.Simulate(scenario, new Recording(true, Array.Empty<int>()), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
+            Assert.That(full.Points!.Count, Is.EqualTo(200_001));
+            FlightState[] a = ResultWriter.Sample(sparse, 10).ToArray();
+            FlightState[] b = ResultWriter.Sample(full, 10).ToArray();
+            for (int i = 0; i < 10; i++)
+            {
+                Assert.That(a[i].Position, Is.EqualTo(b[i].Position), $"sample {i}");
+                Assert.That(a[i].Velocity, Is.EqualTo(b[i].Velocity), $"sample {i}");
+                Assert.That(a[i].Time, Is.EqualTo(b[i].Time), $"sample {i}");
+            }
+        }
+
+        [Test]
+        public void Samples_OfAShortFlight_AreFlownOnce()
+        {
+            Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single();
+            var budget = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult r = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10, TrajectorySvg.SamplesPerFlight }), budget);
+            Assert.That(r.Points!.Count, Is.EqualTo(r.Steps + 1), "every step kept: below ScenarioFlight.MaxKeptPoints");
+            Assert.That(budget.Total, Is.EqualTo(r.Steps), "one flight's steps spent, not two");
+        }
+
+        [Test]
+        public void WorkBudget_StopsAFileWithAClearError()
+        {
+            Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single(); // 183 steps to the landing
+            var budget = new WorkBudget(100);
+            var error = Assert.Throws<InputError>(() => ScenarioFlight.Simulate(scenario, Recording.None, budget))!;
+            Assert.That(error.Message, Does.StartWith("scenarios[0].step: the file's flights need more than 100 integrator steps"));
+            Assert.That(budget.Total, Is.EqualTo(100));
+        }
+
+        [Test]
+        public void WorkBudget_CountsTheSubstepsOfStableRk4()
+        {
+            // A 1 mg ball at 300 m/s: k C_D s h is about 1400 at the launch, so stable-rk4 splits the first steps into
+            // hundreds of substeps (the ball then slows to its 0.09 m/s terminal speed, one substep a step).
+            JsonObject root = CliRun.Drive();
+            S(root)["ball"] = new JsonObject { ["mass"] = 1e-6, ["radius"] = 0.033 };
+            S(root)["initial"]!["velocity"] = new JsonArray(300, 0, 10);
+            S(root)["maxTime"] = 1;
+            var rk4 = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult plain = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4);
+            Assert.That(rk4.Total, Is.EqualTo(plain.Steps), "one unit a step");
+
+            S(root)["integrator"] = "stable-rk4";
+            var stable = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            FlightResult r = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, stable);
+            TestContext.Out.WriteLine($"stable-rk4: {r.Steps} steps, {stable.Total} substeps counted");
+            Assert.That(stable.Total, Is.GreaterThan(r.Steps + 1000), "substeps counted, not steps");
+        }
+
+        [TestCase(1e15)]
+        [TestCase(-1e15)]
+        [TestCase(1e300)]
+        public void StartTimeTooLargeForTheStep_SaysTimeCannotAdvance(double time)
+        {
+            // 1e15 s used to say "the flight diverged ... use a smaller step" (the state was finite), 1e300 s exited 0
+            // having taken no step.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["time"] = time;
+            CliRun run = CliRun.Simulate(root);
+            AssertInputError(run, "scenarios[0].initial.time: time cannot advance");
+            Assert.That(run.Stderr, Does.Not.Contain("diverged"));
+        }
+
+        [Test]
+        public void StartTimeThatTheStepResolves_StillFlies()
+        {
+            // At 1e6 s a double resolves 1.2e-10 s: a 1/240 s step is 3.6e7 of those.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["time"] = 1e6;
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            Assert.That(run.FirstResult().GetProperty("landing").GetProperty("time").GetDouble() - 1e6, Is.EqualTo(0.7617).Within(1e-3));
+        }
+
+        [TestCase(1e308)]
+        [TestCase(1e-300)]
+        [TestCase(-1e-320)]
+        public void GroundNormal_OfAnyFiniteLength_IsADirection(double z)
+        {
+            // 1e308 was "must be a non-zero direction" (its squared length overflowed); 1e-300 underflowed.
+            JsonObject root = CliRun.Drive();
+            S(root)["ground"]!["normal"] = new JsonArray(0, 0, Math.Abs(z));
+            S(root)["planes"]![0]!["normal"] = new JsonArray(z > 0 ? z : -z, 0, 0);
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            CliRun reference = CliRun.Simulate(CliRun.DriveJson);
+            Assert.That(run.FirstResult().GetProperty("landing").GetRawText(), Is.EqualTo(reference.FirstResult().GetProperty("landing").GetRawText()));
+            Assert.That(run.FirstResult().GetProperty("crossings").GetRawText(), Is.EqualTo(reference.FirstResult().GetProperty("crossings").GetRawText()));
+        }
+
+        private static IEnumerable<TestCaseData> NullFields()
+        {
+            TestCaseData Case(string name, Action<JsonObject> mutate, string path) => new TestCaseData(mutate, path).SetName("Null_" + name);
+            yield return Case("Step", r => S(r)["step"] = null, "scenarios[0].step");
+            yield return Case("MaxTime", r => S(r)["maxTime"] = null, "scenarios[0].maxTime");
+            yield return Case("Gravity", r => S(r)["gravity"] = null, "scenarios[0].gravity");
+            yield return Case("Integrator", r => S(r)["integrator"] = null, "scenarios[0].integrator");
+            yield return Case("AirDensity", r => S(r)["air"]!["density"] = null, "scenarios[0].air.density");
+            yield return Case("Air", r => S(r)["air"] = null, "scenarios[0].air");
+            yield return Case("Name", r => S(r)["name"] = null, "scenarios[0].name");
+            yield return Case("Wind", r => S(r)["air"]!["wind"] = null, "scenarios[0].air.wind");
+            yield return Case("Drag", r => S(r)["aero"]!["drag"] = null, "scenarios[0].aero.drag");
+            yield return Case("Planes", r => S(r)["planes"] = null, "scenarios[0].planes");
+            yield return Case("AngularVelocity", r => S(r)["initial"]!["angularVelocity"] = null, "scenarios[0].initial.angularVelocity");
+            yield return Case("Preset", r => S(r)["preset"] = null, "scenarios[0].preset");
+        }
+
+        [TestCaseSource(nameof(NullFields))]
+        public void Null_IsAnInputError_NamingTheField(Action<JsonObject> mutate, string path)
+        {
+            // The format gives null a meaning only for "ground"; elsewhere it used to mean "default" silently.
+            JsonObject root = CliRun.Drive();
+            mutate(root);
+            AssertInputError(CliRun.Simulate(root), path + ": must not be null (leave the field out to get its default)");
+        }
+
+        [Test]
+        public void NullGround_StillSwitchesTheGroundOff()
+        {
+            JsonObject root = CliRun.Drive();
+            S(root)["ground"] = null;
+            S(root)["maxTime"] = 1;
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            Assert.That(run.FirstResult().GetProperty("landing").ValueKind, Is.EqualTo(JsonValueKind.Null));
+        }
+
+        [Test]
+        public void AimScan_WithTooManyTrials_IsAnInputError()
+        {
+            // elevationScanDegrees 1e-6 over the default [-45, 80] deg: 1.25e8 trial flights (it ran > 60 s before).
+            const string json = """
+                {"aims": [{"ball": {"mass": 0.057, "radius": 0.033}, "launch": {"position": [0, 0, 1]},
+                  "limits": {"elevationScanDegrees": 1e-6},
+                  "find": {"kind": "elevation-to-reach", "speed": 30, "target": [20, 0, 0]}}]}
+                """;
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            int code = Program.Run(new[] { "aim", "-" }, stdout, stderr, new StringReader(json));
+            Assert.That(code, Is.EqualTo(Program.BadInput), stderr.ToString());
+            Assert.That(stderr.ToString(), Does.StartWith("magnusball: aims[0].limits.elevationScanDegrees: the scan would fly 125000000 trial shots"));
+            Assert.That(stderr.ToString(), Does.Contain("at most 10000"));
+        }
+
+        internal static XDocument DrawnSvg(JsonNode root, out CliRun run)
+        {
+            string path = Path.Combine(Path.GetTempPath(), $"magnusball-{Guid.NewGuid():N}.svg");
+            try
+            {
+                run = CliRun.Simulate(root, "--svg", path);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+                return XDocument.Load(path);
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
+        internal static void AssertCoordinatesFinite(XDocument svg)
+        {
+            foreach (XAttribute a in svg.Descendants().Attributes())
+            {
+                string name = a.Name.LocalName;
+                if (name is "x" or "y" or "x1" or "x2" or "y1" or "y2" or "cx" or "cy" or "width" or "height")
+                {
+                    Assert.That(double.TryParse(a.Value, NumberStyles.Float, CultureInfo.InvariantCulture, out double v) && double.IsFinite(v), Is.True, $"{name}=\"{a.Value}\"");
+                }
+                else if (name == "points")
+                {
+                    foreach (string pair in a.Value.Split(' ', StringSplitOptions.RemoveEmptyEntries))
+                    {
+                        Assert.That(pair.Split(',').All(c => double.TryParse(c, NumberStyles.Float, CultureInfo.InvariantCulture, out double v) && double.IsFinite(v)), Is.True, pair);
+                    }
+                }
+            }
+        }
+    }
+}

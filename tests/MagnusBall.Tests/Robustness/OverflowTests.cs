@@ -1,0 +1,134 @@
+using System;
+using MagnusBall.Aerodynamics;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Robustness
+{
+    /// <summary>
+    /// Issue 15: the physics layer never gives NaN for finite input, and gives the true value wherever it fits in a
+    /// double (lengths scaled before squaring). Values beyond double.MaxValue are infinite, never NaN.
+    /// </summary>
+    [TestFixture]
+    public class OverflowTests
+    {
+        private static bool NoNaN(in StateDerivative d) =>
+            !double.IsNaN(d.Acceleration.X) && !double.IsNaN(d.Acceleration.Y) && !double.IsNaN(d.Acceleration.Z) &&
+            !double.IsNaN(d.AngularAcceleration.X) && !double.IsNaN(d.AngularAcceleration.Y) && !double.IsNaN(d.AngularAcceleration.Z);
+
+        [Test]
+        public void Length_ScalesBeforeSquaring()
+        {
+            Assert.That(new Vector3d(1e155, 0, 0).Length, Is.EqualTo(1e155));
+            Assert.That(new Vector3d(3e200, 4e200, 0).Length, Is.EqualTo(5e200).Within(1e185)); // 1 ulp-scale: sqrt of scaled components
+            Assert.That(new Vector3d(1e-160, 0, 0).Length, Is.EqualTo(1e-160));
+            Assert.That(new Vector3d(0, -5e-324, 0).Length, Is.EqualTo(5e-324));
+            Assert.That(new Vector3d(3, 4, 0).Length, Is.EqualTo(5), "the everyday path is the plain formula");
+            Assert.That(new Vector3d(double.MaxValue, double.MaxValue, 0).Length, Is.EqualTo(double.PositiveInfinity), "the true length exceeds double.MaxValue");
+            Assert.That(double.IsNaN(new Vector3d(double.NaN, 0, 0).Length), Is.True);
+        }
+
+        [TestCase(1e308, 0, 0)]
+        [TestCase(-1.7e308, 1.7e308, 1e300)]
+        [TestCase(1e-300, 0, 0)]
+        [TestCase(0, 5e-324, -5e-324)]
+        public void NormalizedOrZero_IsAUnitVectorForEveryNonZeroFiniteVector(double x, double y, double z)
+        {
+            Vector3d n = new Vector3d(x, y, z).NormalizedOrZero();
+            Assert.That(n.Length, Is.EqualTo(1).Within(4e-16));
+            Assert.That(Math.Sign(n.X), Is.EqualTo(Math.Sign(x)));
+        }
+
+        [Test]
+        public void Derivative_AtAHugeFiniteVelocity_IsTheTrueDrag()
+        {
+            // A 1 kg ball (k = 1.225 pi 0.1^2 / 2 = 0.0192 /m), C_D 0.5, at 1e150 m/s: k C_D s^2 = 9.6e297, which fits.
+            // |v|^2 = 1e300 fits too, but s^2 for the Magnus term and w x v at 1e150 m/s x 1e160 rad/s do not.
+            var model = new FlightModel(new Ball(1, 0.1), Air.SeaLevel, Gravity.ZUp, new ConstantDrag(0.5), new ConstantLift(0.2));
+            double k = model.AerodynamicFactor;
+            var state = new FlightState(Vector3d.Zero, new Vector3d(1e150, 0, 0), new Vector3d(0, 1e160, 0));
+            StateDerivative d = model.Derivative(state);
+            Assert.That(d.Acceleration.IsFinite, Is.True, d.ToString());
+            // Drag along -x, lift along w x v = (0, 1, 0) x (1, 0, 0) = -z: the exact values to rounding (a few ulps).
+            Assert.That(d.Acceleration.X, Is.EqualTo(-k * 0.5 * 1e300).Within(1e-14 * k * 1e300));
+            Assert.That(d.Acceleration.Z, Is.EqualTo(-k * 0.2 * 1e300).Within(1e-14 * k * 1e300));
+        }
+
+        [Test]
+        public void Derivative_OfTheIssuesState_IsNeverNaN_AndDivergesAsInfinity()
+        {
+            // The issue's v = (1e155, 0, 0) with a tennis ball: k C_D s^2 = 0.0363 x 0.55 x 1e310 = 2.0e308 > double.MaxValue.
+            var model = FlightModel.Thesis(new Ball(0.057, 0.033), new Air(1.21), Gravity.ZUp);
+            StateDerivative d = model.Derivative(new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e155, 0, 0), new Vector3d(0, 125.7, 0)));
+            Assert.That(NoNaN(d), Is.True, d.ToString());
+            Assert.That(d.Acceleration.X, Is.EqualTo(double.NegativeInfinity), "drag beyond double.MaxValue");
+            Assert.That(d.Acceleration.Y, Is.EqualTo(0), "no force across: 0, not 0 x infinity");
+        }
+
+        [Test]
+        public void Derivative_AtOrdinaryStates_IsBitForBitThePlainFormula()
+        {
+            // The scaled path runs only when the plain one overflows: a drive gives exactly the formula's value.
+            var model = FlightModel.Thesis(new Ball(0.057, 0.033), new Air(1.21), Gravity.ZUp);
+            var v = new Vector3d(29.7, 0, 4.2);
+            var w = new Vector3d(0, 125.7, 0);
+            StateDerivative d = model.Derivative(new FlightState(Vector3d.Zero, v, w));
+            double s = v.Length;
+            Vector3d expected = Gravity.ZUp + v * (-model.AerodynamicFactor * 0.55 * s) +
+                                Vector3d.Cross(w, v / s) * (model.AerodynamicFactor * 0.175 * s * s / w.Length);
+            Assert.That(d.Acceleration, Is.EqualTo(expected));
+        }
+
+        [Test]
+        public void SpinDecay_WithATinyTimeConstant_IsNeverNaN()
+        {
+            var decay = new ExponentialSpinDecay(1e-320); // 1/tau overflows
+            Vector3d a = decay.SpinAcceleration(new Vector3d(0, 1e-20, -1), default);
+            Assert.That(a.X, Is.EqualTo(0), "0, not 0 x infinity");
+            Assert.That(a.Y, Is.EqualTo(-1e-20 / 1e-320), "fits: -1e300");
+            Assert.That(a.Z, Is.EqualTo(double.PositiveInfinity), "1e320 does not fit");
+        }
+
+        [Test]
+        public void AeroConditions_AtATinySpeed_AreNeverNaN()
+        {
+            var zeroSpin = new AeroConditions(1e-310, 0, 0, 0.033, 1.2, 1.8e-5);
+            Assert.That(zeroSpin.SpinParameter, Is.EqualTo(0), "0 spin is 0, not 0 x infinity");
+            var spinning = new AeroConditions(1e-300, 1e-10, 1e-10, 0.033, 1.2, 1.8e-5);
+            Assert.That(spinning.SpinParameter, Is.EqualTo(1e-10 / 1e-300 * 0.033).Within(1e277));
+            var fast = new AeroConditions(1e306, 0, 0, 0.033, 1e3, 1e-10);
+            Assert.That(fast.ReynoldsNumber, Is.EqualTo(double.PositiveInfinity), "beyond double.MaxValue");
+            var slowAir = new AeroConditions(1e306, 0, 0, 1e-10, 1e-3, 1e3);
+            Assert.That(slowAir.ReynoldsNumber, Is.EqualTo(1e-3 / 1e3 * 1e306 * 2e-10).Within(1e287), "fits: no intermediate overflow");
+        }
+
+        [Test]
+        public void LiftLaws_AtHugeSpinParameters_KeepTheirLimits()
+        {
+            var huge = new AeroConditions(1, double.MaxValue, double.MaxValue, 1, 1, 1);
+            Assert.That(StepanekLift.Instance.LiftCoefficient(huge), Is.EqualTo(1 / 2.022).Within(1e-15));
+            Assert.That(NathanBaseballLift.Instance.LiftCoefficient(huge), Is.EqualTo(1.120 / 2.333).Within(1e-15));
+            var table = new PiecewiseLinearLift(new[] { 0.0, 1.0 }, new[] { -1.5e308, 1.5e308 });
+            Assert.That(table.Evaluate(0.5), Is.EqualTo(0).Within(1e293), "halfway between opposite extremes, not infinity");
+            Assert.That(new LinearSpinLift(0).LiftCoefficient(huge), Is.EqualTo(0));
+            Assert.That(new LinearSpinDrag(0.2, 0).DragCoefficient(new AeroConditions(1e-320, 1, 1, 1, 1, 1)), Is.EqualTo(0.2));
+        }
+
+        [Test]
+        public void Spin_Toward_AcceptsTinyAndHugeVectors()
+        {
+            Vector3d w = Spin.Toward(new Vector3d(1e-300, 0, 0), new Vector3d(0, 0, 1e308), 10);
+            Assert.That(w.Length, Is.EqualTo(10).Within(1e-14));
+        }
+
+        [Test]
+        public void Energies_AreNeverNaN()
+        {
+            var model = FlightModel.Vacuum(new Ball(1, 0.1), new Vector3d(0, 0, -1e308));
+            var state = new FlightState(new Vector3d(0, 0, -1e308), new Vector3d(1e200, 0, 0), new Vector3d(1e200, 0, 0));
+            Assert.That(double.IsNaN(model.MechanicalEnergy(state)), Is.False);
+            Assert.That(double.IsNaN(model.RotationalEnergy(state)), Is.False);
+            var small = new FlightState(new Vector3d(0, 0, 1), new Vector3d(3, 0, 4), Vector3d.Zero);
+            Assert.That(FlightModel.Vacuum(new Ball(2, 0.1), Gravity.ZUp).MechanicalEnergy(small), Is.EqualTo(2 * (12.5 + 9.80665)));
+        }
+    }
+}
