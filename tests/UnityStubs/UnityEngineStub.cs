@@ -241,29 +241,47 @@ namespace UnityEngine
 
     public sealed class LineRenderer : Renderer
     {
+        // Unity keeps the points natively; the stub keeps a buffer that only grows, so setting
+        // positionCount allocates no managed memory once the buffer is large enough (as in Unity: none).
         private Vector3[] _positions = new Vector3[0];
+        private int _count;
 
         public int positionCount
         {
-            get => _positions.Length;
-            set => Array.Resize(ref _positions, value);
+            get => _count;
+            set
+            {
+                if (value > _positions.Length)
+                {
+                    Array.Resize(ref _positions, value);
+                }
+
+                for (int i = _count; i < value; i++)
+                {
+                    _positions[i] = Vector3.zero;
+                }
+
+                _count = value;
+            }
         }
 
         public bool useWorldSpace { get; set; } = true;
 
-        public void SetPosition(int index, Vector3 position) => _positions[index] = position;
+        public void SetPosition(int index, Vector3 position) => _positions[Check(index)] = position;
 
-        public Vector3 GetPosition(int index) => _positions[index];
+        public Vector3 GetPosition(int index) => _positions[Check(index)];
 
         // Unity: positionCount must be set first; points beyond it are ignored.
-        public void SetPositions(Vector3[] positions) => Array.Copy(positions, _positions, Math.Min(positions.Length, _positions.Length));
+        public void SetPositions(Vector3[] positions) => Array.Copy(positions, _positions, Math.Min(positions.Length, _count));
 
         public int GetPositions(Vector3[] positions)
         {
-            int count = Math.Min(positions.Length, _positions.Length);
+            int count = Math.Min(positions.Length, _count);
             Array.Copy(_positions, positions, count);
             return count;
         }
+
+        private int Check(int index) => index >= 0 && index < _count ? index : throw new IndexOutOfRangeException();
     }
 
     public sealed class Camera : Behaviour
