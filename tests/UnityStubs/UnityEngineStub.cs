@@ -49,7 +49,7 @@ namespace UnityEngine
     {
         private Transform _transform;
 
-        public Transform transform => gameObject != null ? gameObject.transform : _transform ?? (_transform = new Transform());
+        public Transform transform => gameObject != null ? gameObject.transform : _transform ?? (_transform = new Transform(null));
 
         public GameObject gameObject => StubGameObject;
 
@@ -83,7 +83,7 @@ namespace UnityEngine
 
         public GameObject()
         {
-            transform = new Transform { StubGameObject = this };
+            transform = new Transform(this);
         }
 
         public GameObject(string name)
@@ -128,6 +128,13 @@ namespace UnityEngine
     {
         internal readonly List<Transform> StubChildren = new List<Transform>();
         private Transform _parent;
+
+        // Unity: protected; transforms come with their GameObject.
+        protected Transform()
+        {
+        }
+
+        internal Transform(GameObject owner) => StubGameObject = owner;
 
         public Vector3 position { get; set; }
 
@@ -366,7 +373,7 @@ namespace UnityEngine
         public ContactPoint GetContact(int index) => StubContacts[index];
     }
 
-    public static class Physics
+    public class Physics
     {
         public static Vector3 gravity { get; set; } = new Vector3(0, -9.81f, 0);
     }
