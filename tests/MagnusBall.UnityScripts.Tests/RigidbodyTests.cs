@@ -74,6 +74,24 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void FixedUpdate_AllocatesNothing()
+        {
+            (Rigidbody body, MagnusBallRigidbody aero) = NewBall();
+            body.position = new Vector3(0, 1, 0);
+            aero.Launch(new Vector3(25, 3, 0), new Vector3(0, 0, -300));
+            Action fixedUpdate = Message(aero, "FixedUpdate");
+            fixedUpdate(); // warm-up
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 500; i++)
+            {
+                fixedUpdate();
+                StubControl.SimulateStep(body, Time.fixedDeltaTime);
+            }
+
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+        }
+
+        [Test]
         public void TheSpin_LivesInTheComponent_NotClippedAtMaxAngularVelocity()
         {
             (Rigidbody body, MagnusBallRigidbody aero) = NewBall(); // the tennis preset: with spin decay
