@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
@@ -51,9 +52,9 @@ namespace MagnusBall.UnityScripts.Tests
             return new FixedStepDriver(model, RungeKutta4.Instance, (double)(1f / 240f), start, events, bounce, (double)0.25f);
         }
 
-        private static List<FrameEvent> Record(MagnusBallFlight flight)
+        private static List<FlightEvent> Record(MagnusBallFlight flight)
         {
-            var seen = new List<FrameEvent>();
+            var seen = new List<FlightEvent>();
             flight.Landed += seen.Add;
             flight.Bounced += seen.Add;
             flight.PlaneCrossed += seen.Add;
@@ -78,10 +79,10 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(flight.IsFlying, Is.False, "the flight ends");
         }
 
-        private static List<FrameEvent> ReferenceEvents(FixedStepDriver driver)
+        private static List<FlightEvent> ReferenceEvents(FixedStepDriver driver)
         {
-            var all = new List<FrameEvent>();
-            var buffer = new FrameEvent[16];
+            var all = new List<FlightEvent>();
+            var buffer = new FlightEvent[16];
             for (int i = 0; i < 1_000_000 && !driver.IsFinished; i++)
             {
                 AdvanceResult r = driver.Advance(driver.FixedStep, buffer);
@@ -101,12 +102,12 @@ namespace MagnusBall.UnityScripts.Tests
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.None, stepIn);
             Time.fixedDeltaTime = 1f / 240f;
-            List<FrameEvent> seen = Record(flight);
+            List<FlightEvent> seen = Record(flight);
             flight.Launch(Velocity, SpinVector);
             Fly(flight, frameDelta);
 
-            FrameEvent landing = ReferenceEvents(ReferenceDriver(null)).Find(e => e.Kind == FrameEventKind.Landing);
-            FrameEvent landed = seen.Find(e => e.Kind == FrameEventKind.Landing);
+            FlightEvent landing = ReferenceEvents(ReferenceDriver(null)).Find(e => e.Kind == FlightEventKinds.Landing);
+            FlightEvent landed = seen.Find(e => e.Kind == FlightEventKinds.Landing);
             Assert.That(landed.Position, Is.EqualTo(landing.Position), "bitwise: same model, integrator, step and events as the driver");
             Assert.That(landed.Time, Is.EqualTo(landing.Time));
             Assert.That(landed.State.Velocity, Is.EqualTo(landing.State.Velocity));
@@ -117,11 +118,11 @@ namespace MagnusBall.UnityScripts.Tests
         public void TheEvents_FireOnceEach_InTimeOrder_AsTheDriverReportsThem()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true); // tennis preset: hard court
-            List<FrameEvent> seen = Record(flight);
+            List<FlightEvent> seen = Record(flight);
             flight.Launch(Velocity, SpinVector);
             Fly(flight, 1f / 60f);
 
-            List<FrameEvent> expected = ReferenceEvents(ReferenceDriver(CrossBounce.Hard, watchNet: true));
+            List<FlightEvent> expected = ReferenceEvents(ReferenceDriver(CrossBounce.Hard, watchNet: true));
             Assert.That(seen.Count, Is.EqualTo(expected.Count), "one call per event");
             for (int i = 0; i < seen.Count; i++)
             {
@@ -132,12 +133,12 @@ namespace MagnusBall.UnityScripts.Tests
                 }
             }
 
-            Assert.That(seen.FindAll(e => e.Kind == FrameEventKind.PlaneCrossing).Count, Is.EqualTo(1), "the net once");
-            Assert.That(seen.FindAll(e => e.Kind == FrameEventKind.Bounce).Count, Is.GreaterThanOrEqualTo(2));
-            Assert.That(seen.FindAll(e => e.Kind == FrameEventKind.Stop).Count, Is.EqualTo(1));
-            Assert.That(seen[seen.Count - 1].Kind, Is.EqualTo(FrameEventKind.Stop), "the stop ends it");
-            Assert.That(seen.FindAll(e => e.Kind == FrameEventKind.Landing), Is.Empty, "with a bounce model the ball bounces, it does not land");
-            Assert.That(seen.FindIndex(e => e.Kind == FrameEventKind.PlaneCrossing), Is.LessThan(seen.FindIndex(e => e.Kind == FrameEventKind.Bounce)), "over the net, then the bounce");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.PlaneCrossing).Count, Is.EqualTo(1), "the net once");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Bounce).Count, Is.GreaterThanOrEqualTo(2));
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Rest).Count, Is.EqualTo(1));
+            Assert.That(seen[seen.Count - 1].Kind, Is.EqualTo(FlightEventKinds.Rest), "the stop ends it");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Landing), Is.Empty, "with a bounce model the ball bounces, it does not land");
+            Assert.That(seen.FindIndex(e => e.Kind == FlightEventKinds.PlaneCrossing), Is.LessThan(seen.FindIndex(e => e.Kind == FlightEventKinds.Bounce)), "over the net, then the bounce");
         }
 
         [Test]
@@ -147,7 +148,7 @@ namespace MagnusBall.UnityScripts.Tests
             Vector3d Landing(float topspin, float sidespin)
             {
                 MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
-                FrameEvent landed = default;
+                FlightEvent landed = default;
                 flight.Landed += e => landed = e;
                 flight.Launch(v, topspin, sidespin);
                 Fly(flight, 1f / 60f);
@@ -200,7 +201,7 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(line.positionCount, Is.EqualTo(preview.PointCount));
             Vector3 end = line.GetPosition(line.positionCount - 1);
 
-            var bounces = new List<FrameEvent>();
+            var bounces = new List<FlightEvent>();
             flight.Bounced += bounces.Add;
             flight.Launch(Velocity, SpinVector);
             StubControl.DeltaTime = 1f / 60f;

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Text.RegularExpressions;
+using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
@@ -165,17 +166,17 @@ namespace MagnusBall.UnityScripts.Tests
             throw new InvalidOperationException("the ball never came down");
         }
 
-        private static FrameEvent DriverLanding(FlightModel model, IIntegrator integrator, double step, in FlightState start)
+        private static FlightEvent DriverLanding(FlightModel model, IIntegrator integrator, double step, in FlightState start)
         {
             var up = new Vector3d(0, 1, 0);
             var driver = new FixedStepDriver(model, integrator, step, start, new FlightEventSet(up, new Plane(up * model.Ball.Radius, up)));
-            var events = new FrameEvent[8];
+            var events = new FlightEvent[8];
             for (int i = 0; i < 1_000_000 && !driver.IsFinished; i++)
             {
                 AdvanceResult r = driver.Advance(step, events);
                 for (int k = 0; k < r.EventCount; k++)
                 {
-                    if (events[k].Kind == FrameEventKind.Landing)
+                    if (events[k].Kind == FlightEventKinds.Landing)
                     {
                         return events[k];
                     }
@@ -200,7 +201,7 @@ namespace MagnusBall.UnityScripts.Tests
                 FlightState exact = shot.Launch();
                 // The Rigidbody holds floats: start every path from the float-rounded launch.
                 var start = new FlightState(D(F(exact.Position)), D(F(exact.Velocity)), D(F(exact.AngularVelocity)));
-                FrameEvent reference = DriverLanding(model, RungeKutta4.Instance, 1.0 / 240, start);
+                FlightEvent reference = DriverLanding(model, RungeKutta4.Instance, 1.0 / 240, start);
                 double range = Horizontal(reference.Position, start.Position);
                 double e50 = Horizontal(PhysXLanding(model, start, 0.02f), reference.Position);
                 double e240 = Horizontal(PhysXLanding(model, start, 1f / 240f), reference.Position);

@@ -1,5 +1,6 @@
 extern alias InputSystemVariant;
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Samples.TennisScene;
 using MagnusBall.Samples.TennisScene.Scripts;
@@ -49,10 +50,10 @@ namespace MagnusBall.UnityScripts.Tests
             Call(ball.Flight, "Update");
         }
 
-        private static (System.Collections.Generic.List<FrameEvent> Touches, Vector3 Drawn, Vector3d Stop) FlyAt(float frameDelta, bool fixedUpdate = false)
+        private static (System.Collections.Generic.List<FlightEvent> Touches, Vector3 Drawn, Vector3d Stop) FlyAt(float frameDelta, bool fixedUpdate = false)
         {
             TennisBall ball = NewBall(fixedUpdate);
-            var touches = new System.Collections.Generic.List<FrameEvent>();
+            var touches = new System.Collections.Generic.List<FlightEvent>();
             Call(ball, "Start"); // builds the model from the inspector defaults and launches
             ball.Touched += touches.Add;
             StubControl.DeltaTime = frameDelta;
@@ -99,7 +100,7 @@ namespace MagnusBall.UnityScripts.Tests
         {
             // The inspector's front/top/left defaults are the flat serve's velocity rounded to 0.01 m/s, so the
             // Unity ball and the headless table's first row must land within a few centimetres of each other.
-            FrameEvent landing = FlyAt(1f / 60f).Touches[0];
+            FlightEvent landing = FlyAt(1f / 60f).Touches[0];
             var headless = new ShotSimulation(new SceneSettings()).Run(StandardShots.FlatServe, Span<Vector3d>.Empty);
             TestContext.Out.WriteLine($"Unity defaults land at {landing.Position}; headless flat serve at {headless.Landing}");
             // 5 cm: the 0.005 m/s rounding of the inspector's velocity moves a 0.44 s flight by well under that.
@@ -125,7 +126,7 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(first.x, Is.EqualTo(ball.servePosition.x));
             Assert.That(first.y, Is.EqualTo(ball.servePosition.y));
 
-            FrameEvent landing = FlyAt(1f / 60f).Touches[0];
+            FlightEvent landing = FlyAt(1f / 60f).Touches[0];
             // The line ends at the landing the ball then flies to (float rounding only: 1e-5 m).
             Assert.That(last.x, Is.EqualTo(landing.Position.X).Within(1e-5));
             Assert.That(last.z, Is.EqualTo(landing.Position.Z).Within(1e-5));

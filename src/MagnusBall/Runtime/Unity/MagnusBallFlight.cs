@@ -1,5 +1,6 @@
 #nullable enable
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -79,7 +80,7 @@ namespace MagnusBall.Components
         [Tooltip("Turn the transform with the ball's spin.")]
         public bool rotateWithSpin = true;
 
-        private readonly FrameEvent[] _events = new FrameEvent[16];
+        private readonly FlightEvent[] _events = new FlightEvent[16];
         private FlightModel? _model;
         private IIntegrator? _integrator;
         private FlightEventSet? _eventSet;
@@ -92,25 +93,32 @@ namespace MagnusBall.Components
         private int _segmentVersion;
 
         /// <summary>The ball came down and, without a bounce model, the flight ended there.</summary>
-        public event Action<FrameEvent>? Landed;
+        public event Action<FlightEvent>? Landed;
 
-        /// <summary>The ball bounced (<see cref="FrameEvent.AfterBounce"/> is the state leaving the ground).</summary>
-        public event Action<FrameEvent>? Bounced;
+        /// <summary>The ball bounced (<see cref="FlightEvent.After"/> is the state leaving the ground).</summary>
+        public event Action<FlightEvent>? Bounced;
 
-        /// <summary>The ball's centre crossed a watched plane along its normal (<see cref="FrameEvent.PlaneIndex"/> says which).</summary>
-        public event Action<FrameEvent>? PlaneCrossed;
+        /// <summary>The ball's centre crossed a watched plane along its normal (<see cref="FlightEvent.PlaneIndex"/> says which).</summary>
+        public event Action<FlightEvent>? PlaneCrossed;
 
         /// <summary>The ball reached the top of an arc.</summary>
-        public event Action<FrameEvent>? ApexReached;
+        public event Action<FlightEvent>? ApexReached;
 
-        /// <summary>The ball stopped rolling: the flight has ended (with a bounce model).</summary>
-        public event Action<FrameEvent>? Stopped;
+        /// <summary>The ball came to rest (the driver's <see cref="FlightEventKinds.Rest"/> event): the flight has ended (with a bounce model).</summary>
+        public event Action<FlightEvent>? Stopped;
 
         /// <summary>The driver of the current flight (null before the first launch).</summary>
         public FixedStepDriver? Driver => _driver;
 
         /// <summary>True from a launch until the flight ends (or <see cref="Cancel"/>).</summary>
         public bool IsFlying => _flying;
+
+        /// <summary>
+        /// True when the driver refused a step that diverged (a plain explicit integrator far beyond its
+        /// stability limit): the flight ended there, at the last good state. Use the stable RK4 integrator
+        /// or a shorter fixed step.
+        /// </summary>
+        public bool Diverged => _driver != null && _driver.Diverged;
 
         /// <summary>The flight model (built from the inspector at the first use, or given to <see cref="Configure"/>).</summary>
         public FlightModel Model
@@ -339,25 +347,25 @@ namespace MagnusBall.Components
         }
 
         // The one place that knows the driver's event type: adapt here when it changes.
-        private void Raise(in FrameEvent e)
+        private void Raise(in FlightEvent e)
         {
             switch (e.Kind)
             {
-                case FrameEventKind.Landing:
+                case FlightEventKinds.Landing:
                     Landed?.Invoke(e);
                     break;
-                case FrameEventKind.Bounce:
-                    _segmentStart = e.AfterBounce;
+                case FlightEventKinds.Bounce:
+                    _segmentStart = e.After;
                     _segmentVersion++;
                     Bounced?.Invoke(e);
                     break;
-                case FrameEventKind.PlaneCrossing:
+                case FlightEventKinds.PlaneCrossing:
                     PlaneCrossed?.Invoke(e);
                     break;
-                case FrameEventKind.Apex:
+                case FlightEventKinds.Apex:
                     ApexReached?.Invoke(e);
                     break;
-                case FrameEventKind.Stop:
+                case FlightEventKinds.Rest:
                     Stopped?.Invoke(e);
                     break;
             }

@@ -1,5 +1,6 @@
 #nullable enable
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Queries;
 using UnityEngine;
 

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Stepping;
 using UnityEngine;
@@ -134,7 +135,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         public bool IsFlying => Flight.IsFlying;
 
         /// <summary>Raised at every touch of the court: each bounce (or, with no surface, the landing that ends the flight).</summary>
-        public event Action<FrameEvent> Touched;
+        public event Action<FlightEvent> Touched;
 
         private void Start()
         {
@@ -189,24 +190,24 @@ namespace MagnusBall.Samples.TennisScene.Scripts
             transform.rotation = Quaternion.identity;
         }
 
-        private void OnNet(FrameEvent e) =>
+        private void OnNet(FlightEvent e) =>
             Debug.Log($"net: the ball passes {_simulation.NetClearance(e.Position):F2} m above the cord at t = {e.Time:F3} s");
 
-        private void OnBounce(FrameEvent e)
+        private void OnBounce(FlightEvent e)
         {
             Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
-                      $"{e.State.Velocity.Length:F1} m/s in, {e.AfterBounce.Velocity.Length:F1} m/s out ({e.Regime})" +
+                      $"{e.State.Velocity.Length:F1} m/s in, {e.After.Velocity.Length:F1} m/s out ({e.Regime})" +
                       (e.StartsRolling ? ", now rolling" : string.Empty));
             Touched?.Invoke(e);
         }
 
-        private void OnLanding(FrameEvent e)
+        private void OnLanding(FlightEvent e)
         {
             Debug.Log($"lands at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s (no bounce model)");
             Touched?.Invoke(e);
         }
 
-        private void OnStop(FrameEvent e) =>
+        private void OnStop(FlightEvent e) =>
             Debug.Log($"stops at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
 
         private static string IntegratorName(IntegratorChoice choice) => FlightSettings.Integrator(choice).Name;
