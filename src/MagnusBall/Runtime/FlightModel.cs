@@ -101,6 +101,12 @@ namespace MagnusBall
         /// </summary>
         public double AerodynamicFactor => _dragFactor;
 
+        /// <summary>
+        /// Test hook: when set, every call of <see cref="Derivative"/> adds one to it, so tests count real evaluations of
+        /// the model instead of trusting a counter's formula. Null (no cost but one check) in every shipped use.
+        /// </summary>
+        internal EvaluationCount? CountedEvaluations { get; set; }
+
         /// <summary>True when the air exerts a force (density &gt; 0 and a drag or lift law): the one place this is decided.</summary>
         internal bool HasAerodynamics => _hasAero;
 
@@ -145,6 +151,7 @@ namespace MagnusBall
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
         public StateDerivative Derivative(in FlightState state)
         {
+            CountedEvaluations?.Add();
             Vector3d acceleration = Gravity;
             Vector3d spinAcceleration = default;
             Vector3d w = state.AngularVelocity;
@@ -256,5 +263,15 @@ namespace MagnusBall
         public override string ToString() =>
             $"FlightModel({Ball}, {Air}, g={Gravity}, drag={Drag?.ToString() ?? "off"}, lift={Lift?.ToString() ?? "off"}, " +
             $"spinDecay={SpinDecay?.ToString() ?? "off"})";
+    }
+
+    /// <summary>A count of <see cref="FlightModel.Derivative"/> calls (a test hook; see FlightModel.CountedEvaluations).</summary>
+    internal sealed class EvaluationCount
+    {
+        /// <summary>Calls so far.</summary>
+        public long Calls;
+
+        /// <summary>Counts one call.</summary>
+        public void Add() => Calls++;
     }
 }

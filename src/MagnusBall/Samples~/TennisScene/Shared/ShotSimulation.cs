@@ -2,6 +2,7 @@
 using System;
 using MagnusBall.Flight;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Swings;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;
 
@@ -255,6 +256,30 @@ namespace MagnusBall.Samples.TennisScene
             double elevation = Math.Asin(Vector3d.Dot(v, TennisCourt.Up) / v.Length) * (180 / Math.PI);
             double azimuth = Math.Atan2(Vector3d.Dot(v, TennisCourt.Left), Vector3d.Dot(v, TennisCourt.Downrange)) * (180 / Math.PI);
             return shot.WithAngles(elevation, azimuth);
+        }
+
+        /// <summary>
+        /// The same swing (racket speed, path, face turn, impact point, incoming ball) with its face tilt and azimuth
+        /// solved by the library's inverse (<see cref="SwingAim"/> on <see cref="AimSolver"/>) so that the ball first
+        /// touches the court at (<paramref name="x"/>, <paramref name="z"/>); null when the swing cannot reach it.
+        /// </summary>
+        /// <param name="swing">The swing shot to aim; its face tilt and azimuth are the starting guess.</param>
+        /// <param name="x">Target contact point along the court, m.</param>
+        /// <param name="z">Target contact point across the court, m.</param>
+        /// <param name="minimumElevationDegrees">The lowest launch elevation the aim solver tries, degrees (raise it for a lob, so it is not solved as a drive).</param>
+        public TennisSwing? AimSwing(TennisSwing swing, double x, double z, double minimumElevationDegrees = -45)
+        {
+            if (swing == null)
+            {
+                throw new ArgumentNullException(nameof(swing));
+            }
+
+            var solver = new AimSolver(
+                Settings.Model, Settings.Integrator, Settings.FixedStep, Events.Ground!.Value, MaxFlightSeconds, minimumElevationDegrees);
+            var aim = new SwingAim(solver, Settings.Ball);
+            var target = new Vector3d(x, 0, z) + TennisCourt.Up * Settings.Ball.Radius;
+            RacketAim result = aim.RacketFaceToReach(swing.Swing, TennisSwing.Frame, swing.Start, swing.IncomingVelocity, swing.IncomingSpin, target);
+            return result.IsSolved ? swing.WithSwing(result.Swing) : null;
         }
 
         private static void Append(Span<Vector3d> path, ref int count, in Vector3d point)
