@@ -1,11 +1,17 @@
+extern alias InputSystemVariant;
 using System;
-using System.Reflection;
 using MagnusBall.Flight;
+using MagnusBall.Components;
 using MagnusBall.Samples.TennisScene;
-using MagnusBall.Samples.TennisScene.Unity;
+using MagnusBall.Samples.TennisScene.Scripts;
 using MagnusBall.Stepping;
+using MagnusBall.UnityStubs;
 using NUnit.Framework;
 using UnityEngine;
+using UnityEngine.InputSystem;
+using static MagnusBall.UnityScripts.Tests.UnityLoop;
+using InputSystemCameraSwitch = InputSystemVariant::MagnusBall.Samples.TennisScene.Scripts.CameraSwitch;
+using InputSystemSceneInput = InputSystemVariant::MagnusBall.Samples.TennisScene.Scripts.SceneInput;
 
 namespace MagnusBall.UnityScripts.Tests
 {
@@ -19,34 +25,49 @@ namespace MagnusBall.UnityScripts.Tests
     public class ScriptTests
     {
         [TearDown]
-        public void ClearInput() => Input.StubKeysDown.Clear();
+        public void ClearInput()
+        {
+            StubControl.ReleaseKeys();
+            StubControl.ConnectKeyboard(false);
+        }
 
-        private static void Call(object script, string unityMessage) =>
-            script.GetType().GetMethod(unityMessage, BindingFlags.Instance | BindingFlags.NonPublic)!.Invoke(script, null);
+        private static TennisBall NewBall(bool fixedUpdate = false)
+        {
+            var holder = new GameObject("ball");
+            TennisBall ball = Add<TennisBall>(holder);
+            ball.stepInFixedUpdate = fixedUpdate;
+            return ball;
+        }
+
+        private static void Frame(TennisBall ball, bool fixedUpdate)
+        {
+            if (fixedUpdate)
+            {
+                Call(ball.Flight, "FixedUpdate");
+            }
+
+            Call(ball, "Update");
+            Call(ball.Flight, "Update");
+        }
 
         private static (System.Collections.Generic.List<FlightEvent> Touches, Vector3 Drawn, Vector3d Stop) FlyAt(float frameDelta, bool fixedUpdate = false)
         {
-            var ball = new TennisBall { stepInFixedUpdate = fixedUpdate };
+            TennisBall ball = NewBall(fixedUpdate);
             var touches = new System.Collections.Generic.List<FlightEvent>();
             Call(ball, "Start"); // builds the model from the inspector defaults and launches
             ball.Touched += touches.Add;
-            Time.deltaTime = frameDelta;
+            StubControl.DeltaTime = frameDelta;
             Time.fixedDeltaTime = ball.fixedStep;
             for (int frame = 0; frame < 100_000 && ball.IsFlying; frame++)
             {
-                if (fixedUpdate)
-                {
-                    Call(ball, "FixedUpdate");
-                }
-
-                Call(ball, "Update");
+                Frame(ball, fixedUpdate);
             }
 
             Assert.That(ball.IsFlying, Is.False, "the ball comes to rest");
             Assert.That(touches.Count, Is.GreaterThanOrEqualTo(2), "it bounces on the hard court");
             for (int frame = 0; frame < 3; frame++)
             {
-                Call(ball, "Update"); // let the render state come to rest
+                Frame(ball, false); // let the render state come to rest
             }
 
             return (touches, ball.transform.position, ball.Driver.State.Position);
@@ -91,13 +112,13 @@ namespace MagnusBall.UnityScripts.Tests
         [Test]
         public void TheLine_IsThePathTheBallFlies()
         {
-            var ball = new TennisBall();
+            // The scene's line is the package's preview component following the scene's ball.
+            TennisBall ball = NewBall();
             Call(ball, "Start");
-            var holder = new GameObject();
+            var holder = new GameObject("line");
             LineRenderer renderer = holder.AddComponent<LineRenderer>();
-            TrajectoryLine line = holder.AddComponent<TrajectoryLine>();
-            line.ball = ball;
-            Call(line, "Awake");
+            MagnusBallTrajectoryPreview line = Add<MagnusBallTrajectoryPreview>(holder);
+            line.flight = ball.Flight;
             Call(line, "LateUpdate");
 
             Assert.That(renderer.positionCount, Is.GreaterThan(10));
@@ -112,7 +133,7 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
-        public void F1_ShowsTheSecondaryCamera_F2_ThePrimary()
+        public void F1_ShowsTheSecondaryCamera_F2_ThePrimary_ThroughTheInputManager()
         {
             var primary = new Camera();
             var secondary = new Camera();
@@ -120,14 +141,73 @@ namespace MagnusBall.UnityScripts.Tests
             Call(cameras, "Start");
             Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((true, false)));
 
-            Input.StubKeysDown.Add(KeyCode.F1);
+            // This variant is compiled with ENABLE_LEGACY_INPUT_MANAGER: a key pressed in the Input System is not seen.
+            StubControl.ConnectKeyboard(true);
+            StubControl.InputSystemKeysDown.Add(Key.F1);
+            Call(cameras, "Update");
+            Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((true, false)));
+
+            StubControl.LegacyKeysDown.Add(KeyCode.F1);
             Call(cameras, "Update");
             Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((false, true)));
 
-            Input.StubKeysDown.Clear();
-            Input.StubKeysDown.Add(KeyCode.F2);
+            StubControl.ReleaseKeys();
+            StubControl.LegacyKeysDown.Add(KeyCode.F2);
             Call(cameras, "Update");
             Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((true, false)));
+        }
+
+        [Test]
+        public void F1_ShowsTheSecondaryCamera_F2_ThePrimary_ThroughTheInputSystem()
+        {
+            var primary = new Camera();
+            var secondary = new Camera();
+            var cameras = new InputSystemCameraSwitch { primaryCamera = primary, secondaryCamera = secondary };
+            Call(cameras, "Start");
+
+            // Compiled with ENABLE_INPUT_SYSTEM: the Input Manager is not read (in Unity it would throw), and
+            // without a keyboard nothing is pressed.
+            StubControl.LegacyKeysDown.Add(KeyCode.F1);
+            Call(cameras, "Update");
+            Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((true, false)));
+
+            StubControl.ConnectKeyboard(true);
+            StubControl.InputSystemKeysDown.Add(Key.F1);
+            Call(cameras, "Update");
+            Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((false, true)));
+
+            StubControl.ReleaseKeys();
+            StubControl.InputSystemKeysDown.Add(Key.F2);
+            Call(cameras, "Update");
+            Assert.That((primary.enabled, secondary.enabled), Is.EqualTo((true, false)));
+        }
+
+        [TestCase(KeyCode.Space, Key.Space)]
+        [TestCase(KeyCode.A, Key.A)]
+        [TestCase(KeyCode.R, Key.R)]
+        [TestCase(KeyCode.Z, Key.Z)]
+        [TestCase(KeyCode.F1, Key.F1)]
+        [TestCase(KeyCode.F12, Key.F12)]
+        [TestCase(KeyCode.Alpha0, Key.Digit0)]
+        [TestCase(KeyCode.Alpha9, (Key)49)] // Digit9: Digit1 (41) + 8
+        public void KeyCodes_MapToTheInputSystemsKeys(KeyCode code, Key key) =>
+            Assert.That(InputSystemSceneInput.ToInputSystem(code), Is.EqualTo(key));
+
+        [Test]
+        public void Space_Launches_R_Resets_InEitherBackend()
+        {
+            TennisBall ball = NewBall();
+            ball.launchOnStart = false;
+            Call(ball, "Start");
+            Assert.That(ball.IsFlying, Is.False);
+            StubControl.LegacyKeysDown.Add(KeyCode.Space);
+            Frame(ball, false);
+            Assert.That(ball.IsFlying, Is.True);
+            StubControl.ReleaseKeys();
+            StubControl.LegacyKeysDown.Add(KeyCode.R);
+            Frame(ball, false);
+            Assert.That(ball.IsFlying, Is.False);
+            Assert.That(ball.transform.position.x, Is.EqualTo(ball.servePosition.x), "back at the serving position");
         }
 
         [Test]
@@ -136,10 +216,11 @@ namespace MagnusBall.UnityScripts.Tests
             var holder = new GameObject();
             CourtBuilder court = holder.AddComponent<CourtBuilder>();
             court.Build();
+            Transform root = holder.transform.Find(CourtBuilder.RootName);
             var parts = new System.Collections.Generic.List<GameObject>();
-            for (int i = 0; i < holder.transform.childCount; i++)
+            for (int i = 0; i < root.childCount; i++)
             {
-                parts.Add(holder.transform.GetChild(i).gameObject);
+                parts.Add(root.GetChild(i).gameObject);
             }
 
             GameObject surface = parts.Find(p => p.name == "court")!;
@@ -167,6 +248,27 @@ namespace MagnusBall.UnityScripts.Tests
                 Assert.That(Math.Abs(c.x) + s.x / 2, Is.LessThanOrEqualTo(23.77f / 2 + 1e-4), line.name);
                 Assert.That(Math.Abs(c.z) + s.z / 2, Is.LessThanOrEqualTo(10.97f / 2 + 1e-4), line.name);
             }
+        }
+
+        [Test]
+        public void TheCourt_BuiltInEditMode_IsNotBuiltAgainOnPlay_AndSharesFourMaterials()
+        {
+            var holder = new GameObject();
+            CourtBuilder court = holder.AddComponent<CourtBuilder>();
+            int before = StubControl.MaterialsCreated;
+            court.Build(); // the "Build court" context menu, in edit mode
+            Transform built = holder.transform.Find(CourtBuilder.RootName);
+            int parts = built.childCount;
+            Assert.That(StubControl.MaterialsCreated - before, Is.EqualTo(4), "one material per colour, none per part (renderer.material would copy one per part)");
+
+            Call(court, "Start"); // Play
+            Assert.That(holder.transform.childCount, Is.EqualTo(1), "one court");
+            Assert.That(holder.transform.Find(CourtBuilder.RootName), Is.SameAs(built), "Start keeps the court built in edit mode");
+
+            court.Build(); // the context menu again: replaces the court
+            Assert.That(holder.transform.childCount, Is.EqualTo(1));
+            Assert.That(holder.transform.Find(CourtBuilder.RootName).childCount, Is.EqualTo(parts));
+            Assert.That(built == null, Is.True, "the old court is destroyed (Unity's destroyed-object null)");
         }
     }
 }

@@ -58,6 +58,21 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void TheComponentsAssemblyDefinition_ReferencesTheCore_WithEngineReferences()
+        {
+            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Runtime", "Unity", "MagnusBall.Unity.asmdef")));
+            JsonElement root = asmdef.RootElement;
+            Assert.That(root.GetProperty("name").GetString(), Is.EqualTo("MagnusBall.Unity"));
+            Assert.That(root.GetProperty("noEngineReferences").GetBoolean(), Is.False, "the components use UnityEngine");
+            Assert.That(root.GetProperty("autoReferenced").GetBoolean(), Is.True);
+            Assert.That(root.GetProperty("references").EnumerateArray().Select(r => r.GetString()), Is.EqualTo(new[] { "MagnusBall" }));
+
+            // The engine-free core must not compile the components (they need UnityEngine).
+            string csproj = File.ReadAllText(Path.Combine(Package, "Runtime", "MagnusBall.csproj"));
+            Assert.That(csproj, Does.Contain("<Compile Remove=\"Unity/**\" />"));
+        }
+
+        [Test]
         public void EveryAsset_HasAMetaFile_WithAUniqueGuid()
         {
             var assets = Directory.EnumerateFileSystemEntries(Package, "*", SearchOption.AllDirectories)

@@ -1,23 +1,59 @@
-// A STUB of the few UnityEngine types the TennisScene sample scripts use, with Unity's own names and
-// signatures, so that CI can compile src/MagnusBall/Samples~/TennisScene/Scripts without Unity (no Unity reference-assembly
-// package restores from NuGet here). It is not Unity: the members keep values and do nothing else. Add a
-// member here only when a script needs it, with the exact signature Unity's scripting reference gives.
+// A STUB of the few UnityEngine types that MagnusBall.Unity (src/MagnusBall/Runtime/Unity) and the TennisScene
+// sample scripts use, with Unity's own names and signatures (Unity 6000.0; every public member is listed in
+// unity-api-reference.txt with the file of UnityCsReference it was checked in, and StubApiTests fails on a
+// public member that is not listed). It is not Unity: the members keep values and do nothing else, except
+// where Unity's behaviour is what a script could get wrong (Object's destroyed-object null, Renderer.material
+// instantiating a copy, LineRenderer.SetPositions ignoring points beyond positionCount). Tests drive it
+// (frame time, keys, collisions) through MagnusBall.UnityStubs.StubControl, which scripts cannot see.
 using System;
+using System.Collections.Generic;
+using MagnusBall.UnityStubs;
 
 namespace UnityEngine
 {
     public class Object
     {
+        internal bool StubDestroyed;
+
         public string name { get; set; } = string.Empty;
+
+        // Unity: a destroyed object compares equal to null and converts to false.
+        public static bool operator ==(Object x, Object y) => Compare(x, y);
+
+        public static bool operator !=(Object x, Object y) => !Compare(x, y);
+
+        public static implicit operator bool(Object exists) => !Compare(exists, null);
+
+        public override bool Equals(object other) => other is Object o ? Compare(this, o) : other == null && StubDestroyed;
+
+        public override int GetHashCode() => base.GetHashCode();
+
+        public static void Destroy(Object obj) => StubControl.Destroy(obj);
+
+        public static void DestroyImmediate(Object obj) => StubControl.Destroy(obj);
+
+        private static bool Compare(Object x, Object y)
+        {
+            bool xNull = ReferenceEquals(x, null) || x.StubDestroyed;
+            bool yNull = ReferenceEquals(y, null) || y.StubDestroyed;
+            if (xNull && yNull)
+            {
+                return true;
+            }
+
+            return !xNull && !yNull && ReferenceEquals(x, y);
+        }
     }
 
     public class Component : Object
     {
         private Transform _transform;
 
-        public Transform transform => gameObject != null ? gameObject.transform : _transform ?? (_transform = new Transform());
+        public Transform transform => gameObject != null ? gameObject.transform : _transform ?? (_transform = new Transform(null));
 
-        public GameObject gameObject { get; internal set; }
+        public GameObject gameObject => StubGameObject;
+
+        internal GameObject StubGameObject;
 
         public T GetComponent<T>() => gameObject != null ? gameObject.GetComponent<T>() : default;
     }
@@ -43,19 +79,25 @@ namespace UnityEngine
 
     public sealed class GameObject : Object
     {
-        private readonly System.Collections.Generic.List<Component> _components = new System.Collections.Generic.List<Component>();
+        internal readonly List<Component> StubComponents = new List<Component>();
 
         public GameObject()
         {
-            transform = new Transform { gameObject = this };
+            transform = new Transform(this);
+        }
+
+        public GameObject(string name)
+            : this()
+        {
+            this.name = name;
         }
 
         public Transform transform { get; }
 
         public static GameObject CreatePrimitive(PrimitiveType type)
         {
-            var created = new GameObject { name = type.ToString() };
-            created.AddComponent<MeshRenderer>();
+            var created = new GameObject(type.ToString());
+            created.AddComponent<MeshRenderer>().sharedMaterial = StubControl.DefaultMaterial;
             return created;
         }
 
@@ -63,14 +105,14 @@ namespace UnityEngine
             where T : Component
         {
             T component = Activator.CreateInstance<T>();
-            component.gameObject = this;
-            _components.Add(component);
+            component.StubGameObject = this;
+            StubComponents.Add(component);
             return component;
         }
 
         public T GetComponent<T>()
         {
-            foreach (Component component in _components)
+            foreach (Component component in StubComponents)
             {
                 if (component is T found)
                 {
@@ -84,6 +126,16 @@ namespace UnityEngine
 
     public class Transform : Component
     {
+        internal readonly List<Transform> StubChildren = new List<Transform>();
+        private Transform _parent;
+
+        // Unity: protected; transforms come with their GameObject.
+        protected Transform()
+        {
+        }
+
+        internal Transform(GameObject owner) => StubGameObject = owner;
+
         public Vector3 position { get; set; }
 
         public Vector3 localPosition { get; set; }
@@ -92,30 +144,102 @@ namespace UnityEngine
 
         public Quaternion rotation { get; set; } = Quaternion.identity;
 
-        private readonly System.Collections.Generic.List<Transform> _children = new System.Collections.Generic.List<Transform>();
+        public Transform parent
+        {
+            get => _parent;
+            set => SetParent(value);
+        }
 
-        public Transform parent { get; private set; }
+        public int childCount => StubChildren.Count;
 
-        public int childCount => _children.Count;
+        public Transform GetChild(int index) => StubChildren[index];
 
-        public Transform GetChild(int index) => _children[index];
+        public Transform Find(string n)
+        {
+            foreach (Transform child in StubChildren)
+            {
+                if (child.gameObject != null && child.gameObject.name == n)
+                {
+                    return child;
+                }
+            }
+
+            return null;
+        }
+
+        public void SetParent(Transform p) => SetParent(p, true);
 
         public void SetParent(Transform parent, bool worldPositionStays)
         {
-            this.parent?._children.Remove(this);
-            this.parent = parent;
-            parent?._children.Add(this);
+            _parent?.StubChildren.Remove(this);
+            _parent = parent;
+            parent?.StubChildren.Add(this);
+        }
+    }
+
+    public sealed class Shader : Object
+    {
+        private Shader()
+        {
         }
     }
 
     public class Material : Object
     {
+        public Material(Shader shader)
+        {
+            StubControl.MaterialsCreated++;
+        }
+
+        public Material(Material source)
+        {
+            color = source.color;
+            StubControl.MaterialsCreated++;
+        }
+
+        [Obsolete("Creating materials from shader source string is no longer supported. Use Shader assets instead.", false)]
+        public Material(string contents)
+        {
+            StubControl.MaterialsCreated++;
+        }
+
         public Color color { get; set; }
     }
 
     public class Renderer : Component
     {
-        public Material material { get; set; } = new Material();
+        private Material _material;
+        private bool _instantiated;
+
+        // Unity: the first read of .material instantiates a copy of the shared material for this renderer.
+        public Material material
+        {
+            get
+            {
+                if (!_instantiated && _material != null)
+                {
+                    _material = new Material(_material);
+                }
+
+                _instantiated = true;
+                return _material;
+            }
+            set
+            {
+                _material = value;
+                _instantiated = true;
+            }
+        }
+
+        public Material sharedMaterial
+        {
+            get => _material;
+            set
+            {
+                _material = value;
+                _instantiated = false;
+            }
+        }
     }
 
     public class MeshRenderer : Renderer
@@ -124,23 +248,134 @@ namespace UnityEngine
 
     public sealed class LineRenderer : Renderer
     {
+        // Unity keeps the points natively; the stub keeps a buffer that only grows, so setting
+        // positionCount allocates no managed memory once the buffer is large enough (as in Unity: none).
         private Vector3[] _positions = new Vector3[0];
+        private int _count;
 
         public int positionCount
         {
-            get => _positions.Length;
-            set => Array.Resize(ref _positions, value);
+            get => _count;
+            set
+            {
+                if (value > _positions.Length)
+                {
+                    Array.Resize(ref _positions, value);
+                }
+
+                for (int i = _count; i < value; i++)
+                {
+                    _positions[i] = Vector3.zero;
+                }
+
+                _count = value;
+            }
         }
 
         public bool useWorldSpace { get; set; } = true;
 
-        public void SetPosition(int index, Vector3 position) => _positions[index] = position;
+        public void SetPosition(int index, Vector3 position) => _positions[Check(index)] = position;
 
-        public Vector3 GetPosition(int index) => _positions[index];
+        public Vector3 GetPosition(int index) => _positions[Check(index)];
+
+        // Unity: positionCount must be set first; points beyond it are ignored.
+        public void SetPositions(Vector3[] positions) => Array.Copy(positions, _positions, Math.Min(positions.Length, _count));
+
+        public int GetPositions(Vector3[] positions)
+        {
+            int count = Math.Min(positions.Length, _count);
+            Array.Copy(_positions, positions, count);
+            return count;
+        }
+
+        private int Check(int index) => index >= 0 && index < _count ? index : throw new IndexOutOfRangeException();
     }
 
     public sealed class Camera : Behaviour
     {
+    }
+
+    public enum ForceMode
+    {
+        Force = 0,
+        Acceleration = 5,
+        Impulse = 1,
+        VelocityChange = 2,
+    }
+
+    public class Rigidbody : Component
+    {
+        // What AddForce accumulated this step, as an acceleration (StubControl.SimulateStep integrates it).
+        internal Vector3 StubAcceleration;
+        internal Vector3 StubVelocityChange;
+
+        public Vector3 linearVelocity { get; set; }
+
+        public Vector3 angularVelocity { get; set; }
+
+        public float mass { get; set; } = 1;
+
+        public bool useGravity { get; set; } = true;
+
+        public bool isKinematic { get; set; }
+
+        public Vector3 position { get; set; }
+
+        public float maxAngularVelocity { get; set; } = 7;
+
+        public void AddForce(Vector3 force) => AddForce(force, ForceMode.Force);
+
+        public void AddForce(Vector3 force, ForceMode mode)
+        {
+            switch (mode)
+            {
+                case ForceMode.Force:
+                    StubAcceleration = StubAcceleration.StubPlus(force.StubTimes(1f / mass));
+                    break;
+                case ForceMode.Acceleration:
+                    StubAcceleration = StubAcceleration.StubPlus(force);
+                    break;
+                case ForceMode.Impulse:
+                    StubVelocityChange = StubVelocityChange.StubPlus(force.StubTimes(1f / mass));
+                    break;
+                default:
+                    StubVelocityChange = StubVelocityChange.StubPlus(force);
+                    break;
+            }
+        }
+    }
+
+    public struct ContactPoint
+    {
+        internal ContactPoint(Vector3 point, Vector3 normal)
+        {
+            StubPoint = point;
+            StubNormal = normal;
+        }
+
+        private readonly Vector3 StubPoint;
+        private readonly Vector3 StubNormal;
+
+        public Vector3 point => StubPoint;
+
+        public Vector3 normal => StubNormal;
+    }
+
+    public class Collision
+    {
+        internal ContactPoint[] StubContacts = new ContactPoint[0];
+        internal Rigidbody StubRigidbody;
+
+        public Rigidbody rigidbody => StubRigidbody;
+
+        public int contactCount => StubContacts.Length;
+
+        public ContactPoint GetContact(int index) => StubContacts[index];
+    }
+
+    public class Physics
+    {
+        public static Vector3 gravity { get; set; } = new Vector3(0, -9.81f, 0);
     }
 
     public struct Vector3
@@ -157,6 +392,10 @@ namespace UnityEngine
         }
 
         public static Vector3 zero => new Vector3(0, 0, 0);
+
+        internal Vector3 StubPlus(Vector3 b) => new Vector3(x + b.x, y + b.y, z + b.z);
+
+        internal Vector3 StubTimes(float s) => new Vector3(x * s, y * s, z * s);
 
         public override string ToString() => $"({x:F2}, {y:F2}, {z:F2})";
     }
@@ -186,11 +425,11 @@ namespace UnityEngine
             return new Quaternion((float)(axis.x * s), (float)(axis.y * s), (float)(axis.z * s), (float)Math.Cos(half));
         }
 
-        public static Quaternion operator *(Quaternion a, Quaternion b) => new Quaternion(
-            a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-            a.w * b.y + a.y * b.w + a.z * b.x - a.x * b.z,
-            a.w * b.z + a.z * b.w + a.x * b.y - a.y * b.x,
-            a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+        public static Quaternion operator *(Quaternion lhs, Quaternion rhs) => new Quaternion(
+            lhs.w * rhs.x + lhs.x * rhs.w + lhs.y * rhs.z - lhs.z * rhs.y,
+            lhs.w * rhs.y + lhs.y * rhs.w + lhs.z * rhs.x - lhs.x * rhs.z,
+            lhs.w * rhs.z + lhs.z * rhs.w + lhs.x * rhs.y - lhs.y * rhs.x,
+            lhs.w * rhs.w - lhs.x * rhs.x - lhs.y * rhs.y - lhs.z * rhs.z);
     }
 
     public struct Color
@@ -215,60 +454,84 @@ namespace UnityEngine
     {
         None = 0,
         Space = 32,
+        Alpha0 = 48,
+        Alpha9 = 57,
+        A = 97,
         R = 114,
+        Z = 122,
         F1 = 282,
         F2 = 283,
+        F12 = 293,
     }
 
-    public static class Input
+    public class Input
     {
-        /// <summary>Stub: keys "pressed this frame"; tests may fill it.</summary>
-        public static readonly System.Collections.Generic.HashSet<KeyCode> StubKeysDown = new System.Collections.Generic.HashSet<KeyCode>();
-
-        public static bool GetKeyDown(KeyCode key) => StubKeysDown.Contains(key);
+        public static bool GetKeyDown(KeyCode key) => StubControl.LegacyKeysDown.Contains(key);
     }
 
-    public static class Time
+    public class Time
     {
-        public static float deltaTime { get; set; } = 1f / 60f;
+        public static float deltaTime => StubControl.DeltaTime;
 
         public static float fixedDeltaTime { get; set; } = 0.02f;
     }
 
-    public static class Debug
+    public class Debug
     {
         public static void Log(object message) => Console.WriteLine(message);
     }
 
-    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true)]
-    public class HeaderAttribute : Attribute
+    [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = false)]
+    public abstract class PropertyAttribute : Attribute
     {
-        public HeaderAttribute(string header) => this.header = header;
+        protected PropertyAttribute()
+        {
+        }
 
-        public readonly string header;
+        public int order { get; set; }
     }
 
-    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true)]
-    public class TooltipAttribute : Attribute
+    [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = true)]
+    public class HeaderAttribute : PropertyAttribute
     {
-        public TooltipAttribute(string tooltip) => this.tooltip = tooltip;
+        public readonly string header;
 
+        public HeaderAttribute(string header) => this.header = header;
+    }
+
+    [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)]
+    public class TooltipAttribute : PropertyAttribute
+    {
         public readonly string tooltip;
+
+        public TooltipAttribute(string tooltip) => this.tooltip = tooltip;
     }
 
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
     public sealed class RequireComponent : Attribute
     {
-        public RequireComponent(Type requiredComponent) => m_Type0 = requiredComponent;
-
         public Type m_Type0;
+
+        public RequireComponent(Type requiredComponent) => m_Type0 = requiredComponent;
+    }
+
+    public sealed class AddComponentMenu : Attribute
+    {
+        public AddComponentMenu(string menuName) => componentMenu = menuName;
+
+        public string componentMenu { get; }
+    }
+
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)]
+    public sealed class DisallowMultipleComponent : Attribute
+    {
     }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public sealed class ContextMenu : Attribute
     {
-        public ContextMenu(string itemName) => menuItem = itemName;
-
         public readonly string menuItem;
+
+        public ContextMenu(string itemName) => menuItem = itemName;
     }
 }

@@ -1,10 +1,10 @@
 using UnityEngine;
 
-namespace MagnusBall.Samples.TennisScene.Unity
+namespace MagnusBall.Samples.TennisScene.Scripts
 {
     /// <summary>
     /// Two cameras, as in the thesis's scene (Agrawal 2023, section 3.2): F1 shows the secondary camera,
-    /// F2 the primary one.
+    /// F2 the primary one. Keys are read through <see cref="SceneInput"/> (Input System or Input Manager).
     /// </summary>
     public class CameraSwitch : MonoBehaviour
     {
@@ -19,11 +19,11 @@ namespace MagnusBall.Samples.TennisScene.Unity
 
         private void Update()
         {
-            if (Input.GetKeyDown(secondaryKey))
+            if (SceneInput.WasPressed(secondaryKey))
             {
                 Show(primary: false);
             }
-            else if (Input.GetKeyDown(primaryKey))
+            else if (SceneInput.WasPressed(primaryKey))
             {
                 Show(primary: true);
             }

@@ -1,7 +1,7 @@
-using MagnusBall;
+using MagnusBall.Components;
 using UnityEngine;
 
-namespace MagnusBall.Samples.TennisScene.Unity
+namespace MagnusBall.Samples.TennisScene.Scripts
 {
     /// <summary>
     /// Builds the court from primitives at Start, to the ITF dimensions in <see cref="TennisCourt"/>: the
@@ -9,6 +9,14 @@ namespace MagnusBall.Samples.TennisScene.Unity
     /// The court lies in the x-z plane with the net along z at x = 0 (the thesis's axes: x into the screen,
     /// y up, z to the left).
     /// </summary>
+    /// <remarks>
+    /// Everything is built under one child, "Court". Start builds only if there is none, so a court built in
+    /// edit mode with the "Build court" context menu (and saved with the scene) is not built again on Play;
+    /// the context menu replaces an existing court. The parts share four materials (surface, run-off, lines,
+    /// net), copied once per build from the primitives' shared material and assigned as sharedMaterial:
+    /// reading <c>renderer.material</c> would instantiate a copy per part, which in edit mode leaks into the
+    /// scene. A rebuild destroys the previous build's materials.
+    /// </remarks>
     public class CourtBuilder : MonoBehaviour
     {
         public Color surfaceColor = new Color(0.24f, 0.45f, 0.30f, 1f);
@@ -18,16 +26,52 @@ namespace MagnusBall.Samples.TennisScene.Unity
         [Tooltip("Vertical slices of the net, to follow the cord from the posts down to the centre strap.")]
         public int netSegments = 16;
 
+        /// <summary>The name of the child everything is built under.</summary>
+        public const string RootName = "Court";
+
         private const float LineThickness = 0.002f; // lines stand 2 mm proud of the surface so they draw on top
 
-        private void Start() => Build();
+        private Transform _root;
+        private Material[] _materials = new Material[0];
+        private Material _surface, _runoff, _line, _net;
 
-        /// <summary>Creates the court's objects under this transform.</summary>
+        private void Start()
+        {
+            if (transform.Find(RootName) == null)
+            {
+                Build();
+            }
+        }
+
+        /// <summary>Creates the court's objects under a child "Court" of this transform, replacing an existing one.</summary>
         [ContextMenu("Build court")]
         public void Build()
         {
-            Box("runoff", new Vector3d(0, -0.011, 0), new Vector3d(TennisCourt.Length + 12, 0.02, TennisCourt.DoublesWidth + 8), runoffColor);
-            Box("court", new Vector3d(0, -0.005, 0), new Vector3d(TennisCourt.Length, 0.01, TennisCourt.DoublesWidth), surfaceColor);
+            Transform existing = transform.Find(RootName);
+            if (existing != null)
+            {
+                DestroyImmediate(existing.gameObject); // the context menu runs in edit mode, where Destroy is not allowed
+            }
+
+            foreach (Material old in _materials)
+            {
+                if (old != null)
+                {
+                    DestroyImmediate(old);
+                }
+            }
+
+            var root = new GameObject(RootName);
+            root.transform.SetParent(transform, false);
+            _root = root.transform;
+            _materials = new Material[4];
+            _surface = null;
+            _runoff = null;
+            _line = null;
+            _net = null;
+
+            Paint(Box("runoff", new Vector3d(0, -0.011, 0), new Vector3d(TennisCourt.Length + 12, 0.02, TennisCourt.DoublesWidth + 8)), ref _runoff, runoffColor, 0);
+            Paint(Box("court", new Vector3d(0, -0.005, 0), new Vector3d(TennisCourt.Length, 0.01, TennisCourt.DoublesWidth)), ref _surface, surfaceColor, 1);
 
             foreach (CourtLine line in TennisCourt.Lines())
             {
@@ -41,7 +85,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
                 Vector3d size = runsAlongX
                     ? new Vector3d(length, LineThickness, TennisCourt.LineWidth)
                     : new Vector3d(TennisCourt.LineWidth, LineThickness, length);
-                Box(line.Name, centre + TennisCourt.Up * (LineThickness / 2), size, lineColor);
+                Paint(Box(line.Name, centre + TennisCourt.Up * (LineThickness / 2), size), ref _line, lineColor, 2);
             }
 
             double half = TennisCourt.PostOffset;
@@ -50,29 +94,42 @@ namespace MagnusBall.Samples.TennisScene.Unity
             {
                 double z = -half + (i + 0.5) * width;
                 double height = TennisCourt.NetHeightAt(z);
-                Box("net", new Vector3d(0, height / 2, z), new Vector3d(0.02, height, width), netColor);
+                Paint(Box("net", new Vector3d(0, height / 2, z), new Vector3d(0.02, height, width)), ref _net, netColor, 3);
             }
 
             foreach (double z in new[] { -half, half })
             {
                 GameObject post = GameObject.CreatePrimitive(PrimitiveType.Cylinder);
                 post.name = "net post";
-                post.transform.SetParent(transform, false);
+                post.transform.SetParent(_root, false);
                 // A Unity cylinder is 2 units tall: scale y by half the height.
                 post.transform.localPosition = UnityFrame.ToUnity(new Vector3d(0, TennisCourt.NetHeightAtPosts / 2, z));
                 post.transform.localScale = new Vector3(0.08f, (float)(TennisCourt.NetHeightAtPosts / 2), 0.08f);
-                post.GetComponent<Renderer>().material.color = netColor;
+                Paint(post, ref _net, netColor, 3);
             }
         }
 
-        private void Box(string name, Vector3d centre, Vector3d size, Color color)
+        private GameObject Box(string name, Vector3d centre, Vector3d size)
         {
             GameObject box = GameObject.CreatePrimitive(PrimitiveType.Cube);
             box.name = name;
-            box.transform.SetParent(transform, false);
+            box.transform.SetParent(_root, false);
             box.transform.localPosition = UnityFrame.ToUnity(centre);
             box.transform.localScale = UnityFrame.ToUnity(size);
-            box.GetComponent<Renderer>().material.color = color;
+            return box;
+        }
+
+        // One material per colour per build, copied from the primitive's shared default material.
+        private void Paint(GameObject part, ref Material material, Color color, int slot)
+        {
+            Renderer renderer = part.GetComponent<Renderer>();
+            if (material == null)
+            {
+                material = new Material(renderer.sharedMaterial) { color = color };
+                _materials[slot] = material;
+            }
+
+            renderer.sharedMaterial = material;
         }
     }
 }

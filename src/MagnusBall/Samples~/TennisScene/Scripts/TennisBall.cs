@@ -1,31 +1,11 @@
 using System;
 using MagnusBall.Flight;
-using MagnusBall;
-using MagnusBall.Integration;
+using MagnusBall.Components;
 using MagnusBall.Stepping;
 using UnityEngine;
 
-namespace MagnusBall.Samples.TennisScene.Unity
+namespace MagnusBall.Samples.TennisScene.Scripts
 {
-    /// <summary>Which integrator steps the ball (the inspector's drop-down).</summary>
-    public enum IntegratorChoice
-    {
-        /// <summary>Explicit Euler (first order; the thesis's alternative).</summary>
-        Euler,
-
-        /// <summary>Semi-implicit Euler (first order; the usual game-engine method).</summary>
-        SemiImplicitEuler,
-
-        /// <summary>Heun / RK2 (second order).</summary>
-        Heun,
-
-        /// <summary>Classic RK4 (fourth order; the thesis's default).</summary>
-        RungeKutta4,
-
-        /// <summary>RK4 with stability-safe substeps (StableIntegrator): for large fixed steps with light, fast balls.</summary>
-        StableRungeKutta4,
-    }
-
     /// <summary>The court surface the ball bounces on (the inspector's drop-down).</summary>
     public enum CourtSurface
     {
@@ -53,17 +33,17 @@ namespace MagnusBall.Samples.TennisScene.Unity
     }
 
     /// <summary>
-    /// The tennis ball. Its flight is computed by MagnusBall (gravity, drag, Magnus) in fixed steps through a
-    /// <see cref="FixedStepDriver"/>, fed from <c>Update</c> with <c>Time.deltaTime</c> (or from
-    /// <c>FixedUpdate</c>), and the transform is set to the interpolated render state. No Rigidbody: Unity clips
-    /// a Rigidbody's angular velocity at <c>maxAngularVelocity</c> (7 rad/s by default before 2022, 50 rad/s
-    /// after), far below a tennis ball's 100-400 rad/s, so the spin lives in the library's state only.
+    /// The tennis ball: the scene's settings (ball, air, coefficients, court, integrator, fixed step, from the
+    /// inspector) handed to the package's <see cref="MagnusBallFlight"/> component, which flies the transform
+    /// through a <see cref="FixedStepDriver"/> from <c>Update</c> (or <c>FixedUpdate</c>) and raises the
+    /// events this script logs. No Rigidbody: the spin lives in the library's state (see MagnusBallFlight).
     /// </summary>
     /// <remarks>
     /// World axes are the thesis's scene: +x into the screen (down the court), +y up, +z to the left (see
     /// <see cref="TennisCourt"/>). The library works in these coordinates unchanged (<see cref="UnityFrame"/>).
-    /// Space launches, R puts the ball back at the serving position.
+    /// Space launches, R puts the ball back at the serving position (keys through <see cref="SceneInput"/>).
     /// </remarks>
+    [RequireComponent(typeof(MagnusBallFlight))]
     public class TennisBall : MonoBehaviour
     {
         [Header("Initial velocity, m/s (thesis start screen: front = +x, top = +y, left = +z)")]
@@ -114,20 +94,45 @@ namespace MagnusBall.Samples.TennisScene.Unity
         public KeyCode launchKey = KeyCode.Space;
         public KeyCode resetKey = KeyCode.R;
 
-        private readonly FlightEvent[] _events = new FlightEvent[8];
         private SceneSettings _settings;
         private ShotSimulation _simulation;
-        private FixedStepDriver _driver;
-        private bool _flying;
+        private MagnusBallFlight _flight;
+
+        /// <summary>The flight component that flies this ball.</summary>
+        public MagnusBallFlight Flight
+        {
+            get
+            {
+                if (_flight == null)
+                {
+                    // Unity adds it for the RequireComponent; added here too when the script is created in code.
+                    _flight = GetComponent<MagnusBallFlight>();
+                    if (_flight == null)
+                    {
+                        _flight = gameObject.AddComponent<MagnusBallFlight>();
+                    }
+
+                    _flight.Landed += OnLanding;
+                    _flight.Bounced += OnBounce;
+                    _flight.PlaneCrossed += OnNet;
+                    _flight.Stopped += OnStop;
+                }
+
+                return _flight;
+            }
+        }
 
         /// <summary>The driver of the current flight (null before the first launch).</summary>
-        public FixedStepDriver Driver => _driver;
+        public FixedStepDriver Driver => Flight.Driver;
+
+        /// <summary>The shot simulation of the last launch (the scene's events: the court and the net).</summary>
+        public ShotSimulation Simulation => _simulation;
 
         /// <summary>The scene settings built from the inspector at the last launch.</summary>
         public SceneSettings Settings => _settings;
 
         /// <summary>True while the ball is in the air.</summary>
-        public bool IsFlying => _flying;
+        public bool IsFlying => Flight.IsFlying;
 
         /// <summary>Raised at every touch of the court: each bounce (or, with no surface, the landing that ends the flight).</summary>
         public event Action<FlightEvent> Touched;
@@ -143,53 +148,28 @@ namespace MagnusBall.Samples.TennisScene.Unity
 
         private void Update()
         {
-            if (Input.GetKeyDown(launchKey))
+            if (SceneInput.WasPressed(launchKey))
             {
                 Launch();
             }
 
-            if (Input.GetKeyDown(resetKey))
+            if (SceneInput.WasPressed(resetKey))
             {
                 ResetBall();
             }
-
-            if (_driver == null)
-            {
-                return;
-            }
-
-            if (!stepInFixedUpdate && _flying)
-            {
-                // Frame time in, fixed steps out: the flight does not depend on the frame rate.
-                Step(Time.deltaTime);
-            }
-
-            // Update mode: draw the state interpolated between the last two fixed steps (alpha = accumulator / step).
-            // FixedUpdate mode: draw the latest fixed state, the one Unity's own FixedUpdate physics sees (no
-            // interpolation: the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
-            FlightState render = stepInFixedUpdate ? _driver.State : _driver.RenderState;
-            transform.position = UnityFrame.ToUnity(render.Position);
-            ShowSpin(render.AngularVelocity, Time.deltaTime);
         }
 
-        private void FixedUpdate()
-        {
-            if (stepInFixedUpdate && _flying && _driver != null)
-            {
-                // With fixedStep equal to Time.fixedDeltaTime this is exactly one library step per FixedUpdate.
-                Step(Time.fixedDeltaTime);
-            }
-        }
-
-        /// <summary>Builds the model from the inspector and launches the ball from the serving position.</summary>
+        /// <summary>Builds the scene's model from the inspector, hands it to the flight component and launches the ball from the serving position.</summary>
         public void Launch()
         {
             _settings = new SceneSettings(
                 mass, radius, airDensity, useStepanekCoefficients, dragCoefficient, magnusCoefficient,
                 IntegratorName(integrator), fixedStep, surface.ToString().ToLowerInvariant());
             _simulation = new ShotSimulation(_settings);
-            _driver = _simulation.CreateDriver(LaunchState(), maxFrameDelta);
-            _flying = true;
+            MagnusBallFlight flight = Flight;
+            flight.stepIn = stepInFixedUpdate ? StepIn.FixedUpdate : StepIn.Update;
+            flight.Configure(_settings.Model, _settings.Integrator, _settings.FixedStep, _simulation.Events, _settings.Bounce, maxFrameDelta);
+            flight.Launch(LaunchState());
         }
 
         /// <summary>The launch state from the inspector fields, in Unity's (= the library's) coordinates.</summary>
@@ -205,67 +185,31 @@ namespace MagnusBall.Samples.TennisScene.Unity
         /// <summary>Puts the ball back at the serving position, not flying.</summary>
         public void ResetBall()
         {
-            _flying = false;
-            _driver = null;
+            Flight.Cancel();
             transform.position = servePosition;
             transform.rotation = Quaternion.identity;
         }
 
-        private void Step(float frameDelta)
-        {
-            AdvanceResult result = _driver.Advance(frameDelta, _events);
-            for (int i = 0; i < result.EventCount; i++)
-            {
-                FlightEvent e = _events[i];
-                switch (e.Kind)
-                {
-                    case FlightEventKinds.PlaneCrossing:
-                        Debug.Log($"net: the ball passes {_simulation.NetClearance(e.Position):F2} m above the cord at t = {e.Time:F3} s");
-                        break;
-                    case FlightEventKinds.Bounce:
-                        Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
-                                  $"{e.State.Velocity.Length:F1} m/s in, {e.After.Velocity.Length:F1} m/s out ({e.Regime})" +
-                                  (e.StartsRolling ? ", now rolling" : string.Empty));
-                        Touched?.Invoke(e);
-                        break;
-                    case FlightEventKinds.Landing:
-                        Debug.Log($"lands at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s (no bounce model)");
-                        Touched?.Invoke(e);
-                        break;
-                    case FlightEventKinds.Rest:
-                        Debug.Log($"stops at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
-                        break;
-                }
-            }
+        private void OnNet(FlightEvent e) =>
+            Debug.Log($"net: the ball passes {_simulation.NetClearance(e.Position):F2} m above the cord at t = {e.Time:F3} s");
 
-            _flying = !_driver.IsFinished;
+        private void OnBounce(FlightEvent e)
+        {
+            Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
+                      $"{e.State.Velocity.Length:F1} m/s in, {e.After.Velocity.Length:F1} m/s out ({e.Regime})" +
+                      (e.StartsRolling ? ", now rolling" : string.Empty));
+            Touched?.Invoke(e);
         }
 
-        private void ShowSpin(Vector3d angularVelocity, float frameDelta)
+        private void OnLanding(FlightEvent e)
         {
-            // Spin the mesh for the eye. Unity rotates by the left-hand rule, the same convention the spin is
-            // expressed in, so the axis goes in unchanged.
-            double rate = angularVelocity.Length;
-            if (!_flying || rate <= 0)
-            {
-                return;
-            }
-
-            float degrees = (float)(rate * frameDelta * (180.0 / Math.PI));
-            Vector3 axis = UnityFrame.ToUnity(angularVelocity / rate);
-            transform.rotation = Quaternion.AngleAxis(degrees, axis) * transform.rotation;
+            Debug.Log($"lands at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s (no bounce model)");
+            Touched?.Invoke(e);
         }
 
-        private static string IntegratorName(IntegratorChoice choice)
-        {
-            switch (choice)
-            {
-                case IntegratorChoice.Euler: return ExplicitEuler.Instance.Name;
-                case IntegratorChoice.SemiImplicitEuler: return SemiImplicitEuler.Instance.Name;
-                case IntegratorChoice.Heun: return Heun.Instance.Name;
-                case IntegratorChoice.StableRungeKutta4: return StableIntegrator.RungeKutta4.Name;
-                default: return RungeKutta4.Instance.Name;
-            }
-        }
+        private void OnStop(FlightEvent e) =>
+            Debug.Log($"stops at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
+
+        private static string IntegratorName(IntegratorChoice choice) => FlightSettings.Integrator(choice).Name;
     }
 }

@@ -1,0 +1,417 @@
+#nullable enable
+using System;
+using MagnusBall.Flight;
+using MagnusBall.Contact;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
+using MagnusBall.Stepping;
+using UnityEngine;
+
+namespace MagnusBall.Components
+{
+    /// <summary>Where a component takes its fixed steps.</summary>
+    public enum StepIn
+    {
+        /// <summary>In <c>Update</c>, from <c>Time.deltaTime</c>; the transform shows the interpolated render state.</summary>
+        Update = 0,
+
+        /// <summary>In <c>FixedUpdate</c>, from <c>Time.fixedDeltaTime</c>; the transform shows the latest fixed state.</summary>
+        FixedUpdate = 1,
+    }
+
+    /// <summary>
+    /// Flies the GameObject's transform as a spinning ball: gravity, drag and the Magnus force from MagnusBall,
+    /// stepped at a fixed step by a <see cref="FixedStepDriver"/> (the same landing at any frame rate), with
+    /// events for the landing, each bounce, each crossing of a watched plane (a net), the apex and the stop.
+    /// No Rigidbody: the spin lives in the library's state, never in Unity's clipped angularVelocity.
+    /// </summary>
+    /// <remarks>
+    /// <para>Add it to a GameObject (a sphere of the ball's size), pick a preset or a custom ball in the
+    /// inspector and call <see cref="Launch(Vector3, Vector3)"/> or <see cref="Launch(Vector3, float, float)"/>
+    /// from a script. The ball flies from the transform's position. Code can replace the inspector's model,
+    /// integrator, events and bounce with <see cref="Configure"/>.</para>
+    /// <para>Unity's world is y-up and left-handed; the library runs in it unchanged (see <see cref="UnityFrame"/>),
+    /// with gravity <see cref="Gravity.YUp"/>. The ground is the plane y = <see cref="groundHeight"/>; the ball
+    /// touches it when its centre is one radius above.</para>
+    /// <para>Events are raised from inside <c>Update</c> (or <c>FixedUpdate</c>), once each, in time order,
+    /// with their exact time and state (located inside the step; they may lie up to one fixed step after
+    /// what is drawn). Nothing allocates per frame after the launch.</para>
+    /// </remarks>
+    [AddComponentMenu("MagnusBall/Ball Flight")]
+    [DisallowMultipleComponent]
+    public class MagnusBallFlight : MonoBehaviour
+    {
+        /// <summary>The ball, its aerodynamics, the air and the bounce.</summary>
+        public FlightSettings settings = new FlightSettings();
+
+        /// <summary>The integrator.</summary>
+        [Header("Stepping")]
+        [Tooltip("RK4 is accurate to micrometres at 1/240 s; semi-implicit Euler is what PhysX does.")]
+        public IntegratorChoice integrator = IntegratorChoice.RungeKutta4;
+
+        /// <summary>The fixed step, s.</summary>
+        [Tooltip("Fixed step, s. The flight is the same at any frame rate for a given step.")]
+        public float fixedStep = 1f / 240f;
+
+        /// <summary>Frame-time clamp, s: a longer frame (a hitch) is cut to this.</summary>
+        [Tooltip("Frame-time clamp, s: a longer frame (a hitch) is cut to this.")]
+        public float maxFrameDelta = (float)FixedStepDriver.DefaultMaxFrameDeltaSeconds;
+
+        /// <summary>Step in Update (interpolated drawing) or in FixedUpdate.</summary>
+        [Tooltip("Update: from Time.deltaTime, drawn interpolated. FixedUpdate: from Time.fixedDeltaTime, drawn at the fixed state.")]
+        public StepIn stepIn = StepIn.Update;
+
+        /// <summary>Height of the ground plane, m (the court's surface, not the ball's centre).</summary>
+        [Header("World")]
+        [Tooltip("y of the ground, m. The ball lands when its bottom touches it.")]
+        public float groundHeight;
+
+        /// <summary>Watch a plane (a net) and raise <see cref="PlaneCrossed"/> when the ball's centre crosses it along its normal.</summary>
+        [Tooltip("Raise PlaneCrossed when the ball's centre crosses this plane along its normal (a net).")]
+        public bool watchPlane;
+
+        /// <summary>A point of the watched plane, m.</summary>
+        public Vector3 planePoint = Vector3.zero;
+
+        /// <summary>The watched plane's normal (need not be unit length).</summary>
+        public Vector3 planeNormal = new Vector3(1, 0, 0);
+
+        /// <summary>Turn the transform with the ball's spin (for the eye; the physics does not need it).</summary>
+        [Tooltip("Turn the transform with the ball's spin.")]
+        public bool rotateWithSpin = true;
+
+        private readonly FlightEvent[] _events = new FlightEvent[16];
+        private FlightModel? _model;
+        private IIntegrator? _integrator;
+        private FlightEventSet? _eventSet;
+        private IBounceModel? _bounce;
+        private double _fixedStep;
+        private double _maxFrameDelta;
+        private FixedStepDriver? _driver;
+        private bool _flying;
+        private FlightState _segmentStart;
+        private int _segmentVersion;
+
+        /// <summary>The ball came down and, without a bounce model, the flight ended there.</summary>
+        public event Action<FlightEvent>? Landed;
+
+        /// <summary>The ball bounced (<see cref="FlightEvent.After"/> is the state leaving the ground).</summary>
+        public event Action<FlightEvent>? Bounced;
+
+        /// <summary>The ball's centre crossed a watched plane along its normal (<see cref="FlightEvent.PlaneIndex"/> says which).</summary>
+        public event Action<FlightEvent>? PlaneCrossed;
+
+        /// <summary>The ball reached the top of an arc.</summary>
+        public event Action<FlightEvent>? ApexReached;
+
+        /// <summary>The ball came to rest (the driver's <see cref="FlightEventKinds.Rest"/> event): the flight has ended (with a bounce model).</summary>
+        public event Action<FlightEvent>? Stopped;
+
+        /// <summary>The driver of the current flight (null before the first launch).</summary>
+        public FixedStepDriver? Driver => _driver;
+
+        /// <summary>True from a launch until the flight ends (or <see cref="Cancel"/>).</summary>
+        public bool IsFlying => _flying;
+
+        /// <summary>
+        /// True when the driver refused a step that diverged (a plain explicit integrator far beyond its
+        /// stability limit): the flight ended there, at the last good state. Use the stable RK4 integrator
+        /// or a shorter fixed step.
+        /// </summary>
+        public bool Diverged => _driver != null && _driver.Diverged;
+
+        /// <summary>The flight model (built from the inspector at the first use, or given to <see cref="Configure"/>).</summary>
+        public FlightModel Model
+        {
+            get
+            {
+                EnsureConfigured();
+                return _model!;
+            }
+        }
+
+        /// <summary>The integrator.</summary>
+        public IIntegrator Integrator
+        {
+            get
+            {
+                EnsureConfigured();
+                return _integrator!;
+            }
+        }
+
+        /// <summary>The fixed step, s.</summary>
+        public double FixedStep
+        {
+            get
+            {
+                EnsureConfigured();
+                return _fixedStep;
+            }
+        }
+
+        /// <summary>What each step is scanned for: the ground (one radius up), the apex and the watched plane.</summary>
+        public FlightEventSet EventSet
+        {
+            get
+            {
+                EnsureConfigured();
+                return _eventSet!;
+            }
+        }
+
+        /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
+        public IBounceModel? BounceModel
+        {
+            get
+            {
+                EnsureConfigured();
+                return _bounce;
+            }
+        }
+
+        /// <summary>Where the current arc starts: the launch state, or the state leaving the latest bounce.</summary>
+        public FlightState ArcStart => _segmentStart;
+
+        /// <summary>Changes at every launch and every bounce: a new <see cref="ArcStart"/> (the trajectory preview watches it).</summary>
+        public int ArcVersion => _segmentVersion;
+
+        /// <summary>
+        /// Rebuilds the model, integrator, events and bounce from the inspector fields (call it after changing
+        /// them at run time; the next launch uses them). Undoes <see cref="Configure"/>.
+        /// </summary>
+        /// <exception cref="ArgumentException">A field is out of range or the preset unknown (the message names it); nothing changes.</exception>
+        public void ApplySettings()
+        {
+            FlightModel model = settings.CreateModel(Gravity.YUp);
+            IBounceModel? bounce = settings.CreateBounce();
+            Vector3d up = UnityFrame.Up;
+            var ground = new Plane(up * (groundHeight + model.Ball.Radius), up);
+            FlightEventSet events = watchPlane
+                ? new FlightEventSet(up, ground, new[] { new Plane(UnityFrame.ToLibrary(planePoint), UnityFrame.ToLibrary(planeNormal)) })
+                : new FlightEventSet(up, ground);
+            IIntegrator chosen = FlightSettings.Integrator(integrator);
+            Set(model, chosen, fixedStep, events, bounce, maxFrameDelta);
+        }
+
+        /// <summary>
+        /// Uses a model, integrator, fixed step, event set and bounce built in code instead of the inspector's
+        /// (for example a scene's shared settings); the next launch uses them.
+        /// </summary>
+        /// <param name="model">The flight model (Unity's world: gravity along -y for a y-up scene).</param>
+        /// <param name="integratorToUse">The integrator.</param>
+        /// <param name="fixedStepSeconds">The fixed step, s; finite and &gt; 0.</param>
+        /// <param name="events">What to scan each step for; its ground is where the ball's centre touches down.</param>
+        /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
+        /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0.</param>
+        /// <exception cref="ArgumentException">A value is null or out of range (the message names it); nothing changes.</exception>
+        public void Configure(
+            FlightModel model, IIntegrator integratorToUse, double fixedStepSeconds, FlightEventSet events, IBounceModel? bounce,
+            double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds)
+        {
+            Set(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+        }
+
+        /// <summary>Launches the ball from the transform's position.</summary>
+        /// <param name="velocity">Launch velocity, m/s, in world coordinates.</param>
+        /// <param name="angularVelocity">Spin, rad/s, about world axes by Unity's left-hand rule.</param>
+        /// <exception cref="ArgumentException">A component is not finite; nothing changes.</exception>
+        public void Launch(Vector3 velocity, Vector3 angularVelocity) =>
+            Launch(new FlightState(UnityFrame.ToLibrary(transform.position), UnityFrame.ToLibrary(velocity), UnityFrame.ToLibrary(angularVelocity)));
+
+        /// <summary>
+        /// Launches the ball from the transform's position with spin given by its effect, right in any
+        /// handedness: topspin makes it dip (negative: backspin, it floats), sidespin curls it to the left of
+        /// its direction of travel seen from above (negative: to the right).
+        /// </summary>
+        /// <param name="velocity">Launch velocity, m/s, in world coordinates (not vertical when there is spin).</param>
+        /// <param name="topspinRpm">Topspin, rev/min; negative for backspin.</param>
+        /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left.</param>
+        /// <exception cref="ArgumentException">A value is not finite; nothing changes.</exception>
+        public void Launch(Vector3 velocity, float topspinRpm, float sidespinRpm)
+        {
+            RequireFinite(topspinRpm, nameof(topspinRpm));
+            RequireFinite(sidespinRpm, nameof(sidespinRpm));
+            Vector3d v = UnityFrame.ToLibrary(velocity);
+            Launch(new FlightState(UnityFrame.ToLibrary(transform.position), v, SpinByEffect(v, topspinRpm, sidespinRpm)));
+        }
+
+        /// <summary>Launches the ball from a state in double precision (its time is the flight's start time).</summary>
+        /// <param name="start">Position, m; velocity, m/s; spin, rad/s (left-hand rule); all finite.</param>
+        /// <exception cref="ArgumentException">A component is not finite, or the configuration is out of range; nothing changes.</exception>
+        public void Launch(in FlightState start)
+        {
+            if (!start.IsFinite)
+            {
+                throw new ArgumentException($"start must have finite position, velocity, spin and time; got {start}.", nameof(start));
+            }
+
+            EnsureConfigured();
+            // Build first, swap after: a bad configuration throws with the old flight intact.
+            var driver = new FixedStepDriver(_model!, _integrator!, _fixedStep, start, _eventSet, _bounce, _maxFrameDelta);
+            _driver = driver;
+            _flying = true;
+            _segmentStart = start;
+            _segmentVersion++;
+            transform.position = UnityFrame.ToUnity(start.Position);
+        }
+
+        /// <summary>
+        /// Ends the flight where it is, without an event: the component stops moving the transform and
+        /// <see cref="Driver"/> is null until the next launch.
+        /// </summary>
+        public void Cancel()
+        {
+            _flying = false;
+            _driver = null;
+        }
+
+        /// <summary>
+        /// The angular velocity, rad/s, of <paramref name="topspinRpm"/> topspin and <paramref name="sidespinRpm"/>
+        /// sidespin for a ball moving along <paramref name="velocity"/> in Unity's world (up = +y), built with
+        /// <see cref="Spin.Topspin"/>, <see cref="Spin.Backspin"/> and <see cref="Spin.Toward"/>.
+        /// </summary>
+        /// <param name="velocity">Velocity, m/s.</param>
+        /// <param name="topspinRpm">Topspin, rev/min; negative for backspin.</param>
+        /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left of the direction of travel.</param>
+        public static Vector3d SpinByEffect(Vector3d velocity, double topspinRpm, double sidespinRpm)
+        {
+            Vector3d up = UnityFrame.Up;
+            Vector3d spin = Vector3d.Zero;
+            if (topspinRpm > 0)
+            {
+                spin += Spin.Topspin(velocity, up, Spin.FromRpm(topspinRpm));
+            }
+            else if (topspinRpm < 0)
+            {
+                spin += Spin.Backspin(velocity, up, Spin.FromRpm(-topspinRpm));
+            }
+
+            if (sidespinRpm != 0)
+            {
+                // Left of the direction of travel seen from above. Unity is left-handed: right = up x forward,
+                // so left = forward x up (for a ball flying along +x, left is +z).
+                Vector3d left = Vector3d.Cross(velocity, up);
+                spin += Spin.Toward(velocity, sidespinRpm > 0 ? left : -left, Spin.FromRpm(Math.Abs(sidespinRpm)));
+            }
+
+            return spin;
+        }
+
+        private void Update()
+        {
+            if (_driver == null)
+            {
+                return;
+            }
+
+            if (stepIn == StepIn.Update && _flying)
+            {
+                Step(Time.deltaTime);
+            }
+
+            // Update: the state interpolated between the last two fixed steps. FixedUpdate: the latest fixed
+            // state (the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
+            FlightState render = stepIn == StepIn.Update ? _driver.RenderState : _driver.State;
+            transform.position = UnityFrame.ToUnity(render.Position);
+            if (rotateWithSpin && _flying)
+            {
+                double rate = render.AngularVelocity.Length;
+                if (rate > 0)
+                {
+                    // Unity rotates by the left-hand rule, the convention the spin is in: the axis goes in unchanged.
+                    float degrees = (float)(rate * Time.deltaTime * (180.0 / Math.PI));
+                    transform.rotation = Quaternion.AngleAxis(degrees, UnityFrame.ToUnity(render.AngularVelocity / rate)) * transform.rotation;
+                }
+            }
+        }
+
+        private void FixedUpdate()
+        {
+            if (stepIn == StepIn.FixedUpdate && _flying && _driver != null)
+            {
+                Step(Time.fixedDeltaTime);
+            }
+        }
+
+        private void Step(float frameDelta)
+        {
+            FixedStepDriver driver = _driver!;
+            AdvanceResult result = driver.Advance(frameDelta, _events);
+            for (int i = 0; i < result.EventCount; i++)
+            {
+                Raise(_events[i]);
+            }
+
+            _flying = !driver.IsFinished;
+        }
+
+        // The one place that knows the driver's event type: adapt here when it changes.
+        private void Raise(in FlightEvent e)
+        {
+            switch (e.Kind)
+            {
+                case FlightEventKinds.Landing:
+                    Landed?.Invoke(e);
+                    break;
+                case FlightEventKinds.Bounce:
+                    _segmentStart = e.After;
+                    _segmentVersion++;
+                    Bounced?.Invoke(e);
+                    break;
+                case FlightEventKinds.PlaneCrossing:
+                    PlaneCrossed?.Invoke(e);
+                    break;
+                case FlightEventKinds.Apex:
+                    ApexReached?.Invoke(e);
+                    break;
+                case FlightEventKinds.Rest:
+                    Stopped?.Invoke(e);
+                    break;
+            }
+        }
+
+        private void EnsureConfigured()
+        {
+            if (_model == null)
+            {
+                ApplySettings();
+            }
+        }
+
+        private void Set(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        {
+            if (model == null)
+            {
+                throw new ArgumentNullException(nameof(model));
+            }
+
+            if (integratorToUse == null)
+            {
+                throw new ArgumentNullException(nameof(integratorToUse));
+            }
+
+            if (events == null)
+            {
+                throw new ArgumentNullException(nameof(events));
+            }
+
+            // The driver checks the numbers (fixed step, clamp, a ground for the bounce) and names them.
+            _ = new FixedStepDriver(model, integratorToUse, step, new FlightState(Vector3d.Zero, Vector3d.Zero, Vector3d.Zero), events, bounce, maxFrame);
+            _model = model;
+            _integrator = integratorToUse;
+            _fixedStep = step;
+            _eventSet = events;
+            _bounce = bounce;
+            _maxFrameDelta = maxFrame;
+        }
+
+        private static void RequireFinite(float value, string name)
+        {
+            if (float.IsNaN(value) || float.IsInfinity(value))
+            {
+                throw new ArgumentOutOfRangeException(name, value, $"{name} must be a finite number; got {value}.");
+            }
+        }
+    }
+}

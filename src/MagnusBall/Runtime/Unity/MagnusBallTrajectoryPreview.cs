@@ -1,0 +1,142 @@
+#nullable enable
+using System;
+using MagnusBall.Flight;
+using MagnusBall.Queries;
+using UnityEngine;
+
+namespace MagnusBall.Components
+{
+    /// <summary>
+    /// Draws a ball's predicted path with a <see cref="LineRenderer"/>, from MagnusBall's
+    /// <see cref="TrajectoryPredictor"/> with the same model, integrator, fixed step and events as a
+    /// <see cref="MagnusBallFlight"/>, so the ball follows the line exactly. It re-predicts only when the
+    /// launch changes: a new launch or bounce of the followed flight (<see cref="MagnusBallFlight.ArcVersion"/>),
+    /// or a different state given to <see cref="Show"/>. The points go to the line with one
+    /// <c>SetPositions</c> from an array allocated once; a frame with nothing new allocates nothing.
+    /// </summary>
+    /// <remarks>
+    /// Add it to a GameObject with a LineRenderer (it is required), drag the ball's MagnusBallFlight into
+    /// <see cref="flight"/>. Before a launch, call <see cref="Show"/> with the launch you are aiming to see it;
+    /// while the ball flies it shows the current arc (from the launch, then from each bounce) to the next
+    /// touch of the ground.
+    /// </remarks>
+    [AddComponentMenu("MagnusBall/Trajectory Preview")]
+    [RequireComponent(typeof(LineRenderer))]
+    public class MagnusBallTrajectoryPreview : MonoBehaviour
+    {
+        /// <summary>The ball whose model is used and whose arcs are followed.</summary>
+        [Tooltip("The ball: its model, integrator and fixed step are used for the prediction.")]
+        public MagnusBallFlight? flight;
+
+        /// <summary>Show the followed ball's current arc while it flies.</summary>
+        [Tooltip("While the ball flies, show its current arc (from the launch or the latest bounce).")]
+        public bool followFlight = true;
+
+        /// <summary>Most points drawn (one per fixed step, plus the landing).</summary>
+        [Tooltip("Most points drawn (one per fixed step).")]
+        public int maxPoints = 2048;
+
+        /// <summary>Longest prediction, s.</summary>
+        [Tooltip("Longest prediction, s.")]
+        public float maxDuration = 10f;
+
+        private LineRenderer? _line;
+        private TrajectoryPredictor? _predictor;
+        private Vector3d[] _path = Array.Empty<Vector3d>();
+        private Vector3[] _points = Array.Empty<Vector3>();
+        private FlightState _requested;
+        private bool _hasRequest;
+        private FlightState _drawn;
+        private bool _hasDrawn;
+        private int _followedVersion = -1;
+
+        /// <summary>How many times the path was predicted (a new launch, bounce or request each).</summary>
+        public int Predictions { get; private set; }
+
+        /// <summary>How many points the line has now.</summary>
+        public int PointCount { get; private set; }
+
+        /// <summary>
+        /// Shows the path of a launch that has not happened yet (an aim); re-predicted at the next
+        /// <c>LateUpdate</c> only if it differs from what is drawn.
+        /// </summary>
+        /// <param name="launch">The launch state (position m, velocity m/s, spin rad/s); finite.</param>
+        /// <exception cref="ArgumentException">A component is not finite; nothing changes.</exception>
+        public void Show(in FlightState launch)
+        {
+            if (!launch.IsFinite)
+            {
+                throw new ArgumentException($"launch must be finite; got {launch}.", nameof(launch));
+            }
+
+            _requested = launch;
+            _hasRequest = true;
+        }
+
+        /// <summary>Clears the line and any requested launch.</summary>
+        public void Clear()
+        {
+            _hasRequest = false;
+            _hasDrawn = false;
+            PointCount = 0;
+            if (_line != null)
+            {
+                _line.positionCount = 0;
+            }
+        }
+
+        private void Awake()
+        {
+            _line = GetComponent<LineRenderer>();
+            _line.useWorldSpace = true;
+            int n = Math.Max(2, maxPoints);
+            _path = new Vector3d[n];
+            _points = new Vector3[n];
+        }
+
+        private void LateUpdate()
+        {
+            if (flight == null || _line == null)
+            {
+                return;
+            }
+
+            if (followFlight && flight.Driver != null && flight.ArcVersion != _followedVersion)
+            {
+                _followedVersion = flight.ArcVersion;
+                _hasRequest = false;
+                Draw(flight.ArcStart);
+            }
+            else if (_hasRequest && !(_hasDrawn && Same(_requested, _drawn)))
+            {
+                Draw(_requested);
+            }
+        }
+
+        private void Draw(in FlightState from)
+        {
+            MagnusBallFlight ball = flight!;
+            if (_predictor == null || _predictor.Model != ball.Model || _predictor.Integrator != ball.Integrator ||
+                _predictor.Step != ball.FixedStep || _predictor.Events != ball.EventSet)
+            {
+                _predictor = new TrajectoryPredictor(ball.Model, ball.Integrator, ball.FixedStep, ball.EventSet);
+            }
+
+            int count = _predictor.Predict(from, maxDuration, _path).SampleCount;
+            for (int i = 0; i < count; i++)
+            {
+                _points[i] = UnityFrame.ToUnity(_path[i]);
+            }
+
+            _line!.positionCount = count;
+            _line.SetPositions(_points); // Unity uses the first positionCount points
+            PointCount = count;
+            Predictions++;
+            _drawn = from;
+            _hasDrawn = true;
+        }
+
+        private static bool Same(in FlightState a, in FlightState b) =>
+            a.Position.Equals(b.Position) && a.Velocity.Equals(b.Velocity) && a.AngularVelocity.Equals(b.AngularVelocity);
+    }
+}

@@ -1,0 +1,275 @@
+using System;
+using System.Collections.Generic;
+using MagnusBall.Flight;
+using MagnusBall.Components;
+using MagnusBall.Contact;
+using MagnusBall.Integration;
+using MagnusBall.Presets;
+using MagnusBall.Queries;
+using MagnusBall.Stepping;
+using MagnusBall.UnityStubs;
+using NUnit.Framework;
+using UnityEngine;
+using static MagnusBall.UnityScripts.Tests.UnityLoop;
+
+namespace MagnusBall.UnityScripts.Tests
+{
+    /// <summary>
+    /// The package's MagnusBall.Unity components on the UnityEngine stub: the flight component lands where
+    /// the core's FixedStepDriver does, to the bit; its events fire once each, in order; the trajectory
+    /// preview is the path flown, re-predicted only when the launch changes, and allocates nothing per frame.
+    /// </summary>
+    [TestFixture]
+    [NonParallelizable] // the stub's Time is static, as Unity's is
+    public class ComponentTests
+    {
+        private static readonly Vector3 Velocity = new Vector3(24f, 6f, 1.5f);
+        private static readonly Vector3 SpinVector = new Vector3(10f, -20f, -250f);
+        private static readonly Vector3 Start = new Vector3(-10f, 1.2f, 0.5f);
+
+        private static MagnusBallFlight NewFlight(SurfaceChoice surface, StepIn stepIn = StepIn.Update, bool watchNet = false)
+        {
+            var holder = new GameObject("ball");
+            holder.transform.position = Start;
+            MagnusBallFlight flight = Add<MagnusBallFlight>(holder);
+            flight.settings.surface = surface;
+            flight.stepIn = stepIn;
+            flight.watchPlane = watchNet;
+            flight.ApplySettings();
+            return flight;
+        }
+
+        /// <summary>What the inspector's defaults mean, built independently from the core's public API.</summary>
+        private static FixedStepDriver ReferenceDriver(IBounceModel? bounce, bool watchNet = false)
+        {
+            FlightModel model = SportPresets.Tennis.CreateModel(new Air((double)(float)Air.SeaLevelDensity), Gravity.YUp);
+            var up = new Vector3d(0, 1, 0);
+            var ground = new Plane(up * model.Ball.Radius, up);
+            FlightEventSet events = watchNet
+                ? new FlightEventSet(up, ground, new[] { new Plane(Vector3d.Zero, new Vector3d(1, 0, 0)) })
+                : new FlightEventSet(up, ground);
+            var start = new FlightState(new Vector3d(Start.x, Start.y, Start.z), new Vector3d(Velocity.x, Velocity.y, Velocity.z), new Vector3d(SpinVector.x, SpinVector.y, SpinVector.z));
+            return new FixedStepDriver(model, RungeKutta4.Instance, (double)(1f / 240f), start, events, bounce, (double)0.25f);
+        }
+
+        private static List<FlightEvent> Record(MagnusBallFlight flight)
+        {
+            var seen = new List<FlightEvent>();
+            flight.Landed += seen.Add;
+            flight.Bounced += seen.Add;
+            flight.PlaneCrossed += seen.Add;
+            flight.ApexReached += seen.Add;
+            flight.Stopped += seen.Add;
+            return seen;
+        }
+
+        private static void Fly(MagnusBallFlight flight, float frameDelta, int maxFrames = 200_000)
+        {
+            StubControl.DeltaTime = frameDelta;
+            for (int frame = 0; frame < maxFrames && flight.IsFlying; frame++)
+            {
+                if (flight.stepIn == StepIn.FixedUpdate)
+                {
+                    Call(flight, "FixedUpdate");
+                }
+
+                Call(flight, "Update");
+            }
+
+            Assert.That(flight.IsFlying, Is.False, "the flight ends");
+        }
+
+        private static List<FlightEvent> ReferenceEvents(FixedStepDriver driver)
+        {
+            var all = new List<FlightEvent>();
+            var buffer = new FlightEvent[16];
+            for (int i = 0; i < 1_000_000 && !driver.IsFinished; i++)
+            {
+                AdvanceResult r = driver.Advance(driver.FixedStep, buffer);
+                for (int k = 0; k < r.EventCount; k++)
+                {
+                    all.Add(buffer[k]);
+                }
+            }
+
+            return all;
+        }
+
+        [TestCase(1f / 60f, StepIn.Update)]
+        [TestCase(1f / 144f, StepIn.Update)]
+        [TestCase(0f, StepIn.FixedUpdate)]
+        public void ALaunch_LandsOnTheSameBitsAsTheDriver(float frameDelta, StepIn stepIn)
+        {
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None, stepIn);
+            Time.fixedDeltaTime = 1f / 240f;
+            List<FlightEvent> seen = Record(flight);
+            flight.Launch(Velocity, SpinVector);
+            Fly(flight, frameDelta);
+
+            FlightEvent landing = ReferenceEvents(ReferenceDriver(null)).Find(e => e.Kind == FlightEventKinds.Landing);
+            FlightEvent landed = seen.Find(e => e.Kind == FlightEventKinds.Landing);
+            Assert.That(landed.Position, Is.EqualTo(landing.Position), "bitwise: same model, integrator, step and events as the driver");
+            Assert.That(landed.Time, Is.EqualTo(landing.Time));
+            Assert.That(landed.State.Velocity, Is.EqualTo(landing.State.Velocity));
+            TestContext.Out.WriteLine($"lands at {landed.Position}, t = {landed.Time:R} s");
+        }
+
+        [Test]
+        public void TheEvents_FireOnceEach_InTimeOrder_AsTheDriverReportsThem()
+        {
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true); // tennis preset: hard court
+            List<FlightEvent> seen = Record(flight);
+            flight.Launch(Velocity, SpinVector);
+            Fly(flight, 1f / 60f);
+
+            List<FlightEvent> expected = ReferenceEvents(ReferenceDriver(CrossBounce.Hard, watchNet: true));
+            Assert.That(seen.Count, Is.EqualTo(expected.Count), "one call per event");
+            for (int i = 0; i < seen.Count; i++)
+            {
+                Assert.That((seen[i].Kind, seen[i].Time, seen[i].Position), Is.EqualTo((expected[i].Kind, expected[i].Time, expected[i].Position)), $"event {i}");
+                if (i > 0)
+                {
+                    Assert.That(seen[i].Time, Is.GreaterThanOrEqualTo(seen[i - 1].Time), "time order");
+                }
+            }
+
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.PlaneCrossing).Count, Is.EqualTo(1), "the net once");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Bounce).Count, Is.GreaterThanOrEqualTo(2));
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Rest).Count, Is.EqualTo(1));
+            Assert.That(seen[seen.Count - 1].Kind, Is.EqualTo(FlightEventKinds.Rest), "the stop ends it");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Landing), Is.Empty, "with a bounce model the ball bounces, it does not land");
+            Assert.That(seen.FindIndex(e => e.Kind == FlightEventKinds.PlaneCrossing), Is.LessThan(seen.FindIndex(e => e.Kind == FlightEventKinds.Bounce)), "over the net, then the bounce");
+        }
+
+        [Test]
+        public void SpinByEffect_TopspinDips_SidespinCurlsLeft_InUnitysFrame()
+        {
+            var v = new Vector3(25f, 4f, 0f); // along +x: Unity's left of +x is +z (left-handed, y up)
+            Vector3d Landing(float topspin, float sidespin)
+            {
+                MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+                FlightEvent landed = default;
+                flight.Landed += e => landed = e;
+                flight.Launch(v, topspin, sidespin);
+                Fly(flight, 1f / 60f);
+                return landed.Position;
+            }
+
+            Vector3d plain = Landing(0, 0);
+            Assert.That(Landing(3000, 0).X, Is.LessThan(plain.X - 0.5), "topspin dips: lands shorter (by metres at 3000 rpm)");
+            Assert.That(Landing(-3000, 0).X, Is.GreaterThan(plain.X + 0.5), "backspin floats");
+            Assert.That(Landing(0, 2000).Z, Is.GreaterThan(0.2), "sidespin > 0 curls to the left, +z");
+            Assert.That(Landing(0, -2000).Z, Is.LessThan(-0.2), "and < 0 to the right");
+        }
+
+        [Test]
+        public void ABadLaunch_Throws_NamingTheParameter_AndLeavesTheFlight()
+        {
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            flight.Launch(Velocity, SpinVector);
+            FixedStepDriver driver = flight.Driver!;
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => flight.Launch(Velocity, float.NaN, 0f));
+            Assert.That(e!.ParamName, Is.EqualTo("topspinRpm"));
+            var e2 = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(float.PositiveInfinity, 0, 0), SpinVector));
+            Assert.That(e2!.ParamName, Is.EqualTo("start"));
+            flight.fixedStep = -1;
+            var e3 = Assert.Throws<ArgumentOutOfRangeException>(() => flight.ApplySettings());
+            Assert.That(e3!.ParamName, Is.EqualTo("fixedStep"));
+            Assert.That(flight.Driver, Is.SameAs(driver));
+            Assert.That(flight.IsFlying, Is.True);
+            Assert.That(flight.FixedStep, Is.EqualTo((double)(1f / 240f)), "the old configuration stays");
+        }
+
+        [Test]
+        public void ThePreview_IsThePathFlown_AndIsPredictedOnlyWhenTheLaunchChanges()
+        {
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset);
+            var holder = new GameObject("line");
+            LineRenderer line = holder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+
+            // Before the launch: an aim shown through Show, predicted once however many frames pass.
+            var aim = new FlightState(new Vector3d(Start.x, Start.y, Start.z), new Vector3d(Velocity.x, Velocity.y, Velocity.z), new Vector3d(SpinVector.x, SpinVector.y, SpinVector.z));
+            for (int i = 0; i < 10; i++)
+            {
+                preview.Show(aim);
+                Call(preview, "LateUpdate");
+            }
+
+            Assert.That(preview.Predictions, Is.EqualTo(1));
+            Assert.That(line.positionCount, Is.EqualTo(preview.PointCount));
+            Vector3 end = line.GetPosition(line.positionCount - 1);
+
+            var bounces = new List<FlightEvent>();
+            flight.Bounced += bounces.Add;
+            flight.Launch(Velocity, SpinVector);
+            StubControl.DeltaTime = 1f / 60f;
+            int frames = 0;
+            while (flight.IsFlying && frames++ < 100_000)
+            {
+                Call(flight, "Update");
+                Call(preview, "LateUpdate");
+                if (bounces.Count == 1 && preview.Predictions == 2)
+                {
+                    // The first arc's line ends where the ball bounced (float rounding of tens of metres: 1e-5 m).
+                    Assert.That(end.x, Is.EqualTo(bounces[0].Position.X).Within(1e-5));
+                    Assert.That(end.z, Is.EqualTo(bounces[0].Position.Z).Within(1e-5));
+                }
+            }
+
+            // One prediction for the aim, one at the launch, one per bounce; none in the other frames.
+            Assert.That(frames, Is.GreaterThan(100));
+            Assert.That(preview.Predictions, Is.EqualTo(2 + bounces.Count));
+        }
+
+        [Test]
+        public void ThePreview_AndTheFlight_AllocateNothingPerFrame()
+        {
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true);
+            var holder = new GameObject("line");
+            holder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+            int events = 0;
+            flight.Bounced += e => events++;
+            flight.PlaneCrossed += e => events++;
+            Action update = Message(flight, "Update"), lateUpdate = Message(preview, "LateUpdate");
+            StubControl.DeltaTime = 1f / 60f;
+            // Warm-up: one whole flight (the first prediction builds the predictor; first calls JIT the code).
+            flight.Launch(Velocity, SpinVector);
+            while (flight.IsFlying)
+            {
+                update();
+                lateUpdate();
+            }
+
+            events = 0;
+            int predictionsBefore = preview.Predictions;
+            flight.Launch(Velocity, SpinVector); // a launch allocates its driver; the frames after it nothing
+
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            int frames = 0;
+            while (flight.IsFlying && frames++ < 100_000)
+            {
+                update();
+                lateUpdate(); // re-predicts at every bounce
+            }
+
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(frames, Is.GreaterThan(100));
+            Assert.That(events, Is.GreaterThan(2), "bounces and the net happened in the measured frames");
+            Assert.That(preview.Predictions - predictionsBefore, Is.GreaterThan(2), "and the preview re-predicted in them");
+            Assert.That(allocated, Is.EqualTo(0), $"{allocated} B over {frames} frames");
+
+            // And a preview with nothing new to draw allocates nothing either.
+            before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 1000; i++)
+            {
+                lateUpdate();
+            }
+
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+        }
+    }
+}

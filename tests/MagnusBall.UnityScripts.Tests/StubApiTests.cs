@@ -1,0 +1,144 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Reflection;
+using NUnit.Framework;
+
+namespace MagnusBall.UnityScripts.Tests
+{
+    /// <summary>
+    /// The UnityEngine stub may only be a subset of Unity's API: every public type and member it declares in
+    /// the UnityEngine namespaces must be listed in tests/UnityStubs/unity-api-reference.txt, the signatures
+    /// checked by hand against Unity's C# reference source (and the Input System package's source), with the
+    /// branch, commit and file noted there. A member added to the stub without checking fails here.
+    /// </summary>
+    [TestFixture]
+    public class StubApiTests
+    {
+        private static readonly Assembly Stub = typeof(UnityEngine.Object).Assembly;
+
+        /// <summary>The stub's public API, one normalized signature a line (the reference file's format).</summary>
+        internal static IEnumerable<string> Signatures()
+        {
+            foreach (Type type in Stub.GetExportedTypes().Where(t => t.Namespace != null && t.Namespace.StartsWith("UnityEngine", StringComparison.Ordinal)).OrderBy(t => t.FullName, StringComparer.Ordinal))
+            {
+                yield return TypeLine(type);
+                const BindingFlags declared = BindingFlags.Public | BindingFlags.Instance | BindingFlags.Static | BindingFlags.DeclaredOnly;
+                foreach (MemberInfo member in type.GetMembers(declared).OrderBy(m => m.Name, StringComparer.Ordinal).ThenBy(m => m.ToString(), StringComparer.Ordinal))
+                {
+                    string? line = MemberLine(type, member);
+                    if (line != null)
+                    {
+                        yield return line;
+                    }
+                }
+            }
+        }
+
+        private static string TypeLine(Type t)
+        {
+            string kind = t.IsEnum ? "enum" : t.IsValueType ? "struct" : t.IsInterface ? "interface"
+                : t.IsAbstract && t.IsSealed ? "static class" : t.IsAbstract ? "abstract class" : t.IsSealed ? "sealed class" : "class";
+            string line = $"{kind} {t.FullName}";
+            if (t.BaseType != null && t.BaseType != typeof(object) && t.BaseType != typeof(ValueType) && t.BaseType != typeof(Enum))
+            {
+                line += " : " + Name(t.BaseType);
+            }
+
+            AttributeUsageAttribute? usage = t.GetCustomAttribute<AttributeUsageAttribute>(inherit: false);
+            if (usage != null)
+            {
+                line += $" [AttributeUsage({usage.ValidOn}, AllowMultiple={usage.AllowMultiple}, Inherited={usage.Inherited})]";
+            }
+
+            return line;
+        }
+
+        private static string? MemberLine(Type t, MemberInfo member)
+        {
+            string owner = t.FullName!;
+            switch (member)
+            {
+                case ConstructorInfo c:
+                    return $"ctor {owner}({Parameters(c)})";
+                case MethodInfo m when !m.IsSpecialName || m.Name.StartsWith("op_", StringComparison.Ordinal):
+                    string generic = m.IsGenericMethodDefinition ? "<" + string.Join(", ", m.GetGenericArguments().Select(a => a.Name)) + ">" : string.Empty;
+                    return $"method {(m.IsStatic ? "static " : string.Empty)}{Name(m.ReturnType)} {owner}.{m.Name}{generic}({Parameters(m)})";
+                case PropertyInfo p:
+                    MethodInfo? get = p.GetGetMethod(), set = p.GetSetMethod();
+                    bool isStatic = (get ?? set)!.IsStatic;
+                    ParameterInfo[] index = p.GetIndexParameters();
+                    string name = index.Length > 0 ? "this[" + string.Join(", ", index.Select(i => Name(i.ParameterType))) + "]" : p.Name;
+                    return $"property {(isStatic ? "static " : string.Empty)}{Name(p.PropertyType)} {owner}.{name} {{{(get != null ? " get;" : string.Empty)}{(set != null ? " set;" : string.Empty)} }}";
+                case FieldInfo f when t.IsEnum:
+                    return f.IsSpecialName ? null : $"enum {owner}.{f.Name} = {Convert.ToInt64(f.GetRawConstantValue())}";
+                case FieldInfo f:
+                    return $"field {(f.IsStatic ? "static " : string.Empty)}{(f.IsInitOnly ? "readonly " : string.Empty)}{Name(f.FieldType)} {owner}.{f.Name}";
+                case EventInfo e:
+                    return $"event {Name(e.EventHandlerType!)} {owner}.{e.Name}";
+                case Type nested:
+                    return $"nested {nested.FullName}";
+                default:
+                    return null; // accessors (listed with their property)
+            }
+        }
+
+        private static string Parameters(MethodBase method) =>
+            string.Join(", ", method.GetParameters().Select(p => Name(p.ParameterType) + " " + p.Name));
+
+        private static string Name(Type type)
+        {
+            if (type.IsGenericParameter)
+            {
+                return type.Name;
+            }
+
+            if (type.IsArray)
+            {
+                return Name(type.GetElementType()!) + "[]";
+            }
+
+            return type.FullName ?? type.Name;
+        }
+
+        private static HashSet<string> Reference()
+        {
+            string path = Path.Combine(UnityLoop.RepositoryRoot(), "tests", "UnityStubs", "unity-api-reference.txt");
+            return new HashSet<string>(
+                File.ReadAllLines(path)
+                    .Select(l => l.Split('#')[0].Trim())
+                    .Where(l => l.Length > 0),
+                StringComparer.Ordinal);
+        }
+
+        [Test]
+        public void EveryPublicMemberOfTheStub_IsInUnitysReferenceList()
+        {
+            HashSet<string> reference = Reference();
+            List<string> missing = Signatures().Where(s => !reference.Contains(s)).ToList();
+            Assert.That(missing, Is.Empty,
+                "public stub members not in tests/UnityStubs/unity-api-reference.txt (check them in UnityCsReference, then list them):\n" +
+                string.Join("\n", missing));
+        }
+
+        [Test]
+        public void TheReferenceList_HasNoEntryTheStubLacks()
+        {
+            // Stale lines would let a member come back unchecked after its signature changed.
+            var stub = new HashSet<string>(Signatures(), StringComparer.Ordinal);
+            List<string> stale = Reference().Where(r => !stub.Contains(r)).ToList();
+            Assert.That(stale, Is.Empty, "lines of unity-api-reference.txt the stub no longer has:\n" + string.Join("\n", stale));
+        }
+
+        [Test]
+        public void TheStubsTestHook_IsNotVisibleToScripts()
+        {
+            Type hook = Stub.GetType("MagnusBall.UnityStubs.StubControl", throwOnError: true)!;
+            Assert.That(hook.IsPublic, Is.False, "internal: only the tests (InternalsVisibleTo) reach it");
+            Assert.That(typeof(UnityEngine.Time).GetProperty("deltaTime")!.CanWrite, Is.False, "Time.deltaTime is get-only, as in Unity");
+            Assert.That(typeof(UnityEngine.Material).GetConstructor(Type.EmptyTypes), Is.Null, "Unity's Material has no parameterless constructor");
+            Assert.That(typeof(UnityEngine.TooltipAttribute).BaseType, Is.EqualTo(typeof(UnityEngine.PropertyAttribute)));
+        }
+    }
+}

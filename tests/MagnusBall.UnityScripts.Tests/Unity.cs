@@ -1,0 +1,46 @@
+using System;
+using System.IO;
+using System.Reflection;
+using NUnit.Framework;
+using UnityEngine;
+
+namespace MagnusBall.UnityScripts.Tests
+{
+    /// <summary>Calls scripts the way Unity's player loop does (their messages are private, found by name).</summary>
+    internal static class UnityLoop
+    {
+        /// <summary>Calls a Unity message (Awake, Start, Update, ...) if the script has it.</summary>
+        public static void Call(object script, string message, params object[] arguments)
+        {
+            MethodInfo? method = script.GetType().GetMethod(message, BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public);
+            method?.Invoke(script, arguments.Length == 0 ? null : arguments);
+        }
+
+        /// <summary>A message as a delegate: calling it allocates nothing (MethodInfo.Invoke would).</summary>
+        public static Action Message(object script, string message) =>
+            (Action)Delegate.CreateDelegate(typeof(Action), script, script.GetType().GetMethod(message, BindingFlags.Instance | BindingFlags.NonPublic)!);
+
+        /// <summary>AddComponent, then Awake, as Unity does.</summary>
+        public static T Add<T>(GameObject holder)
+            where T : Component
+        {
+            T component = holder.AddComponent<T>();
+            Call(component, "Awake");
+            return component;
+        }
+
+        /// <summary>The repository root (the folder with MagnusBall.sln).</summary>
+        public static string RepositoryRoot()
+        {
+            for (var directory = new DirectoryInfo(TestContext.CurrentContext.TestDirectory); directory != null; directory = directory.Parent)
+            {
+                if (File.Exists(Path.Combine(directory.FullName, "MagnusBall.sln")))
+                {
+                    return directory.FullName;
+                }
+            }
+
+            throw new InvalidOperationException("MagnusBall.sln not found above the test directory");
+        }
+    }
+}
