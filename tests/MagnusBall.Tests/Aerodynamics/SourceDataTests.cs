@@ -92,6 +92,33 @@ namespace MagnusBall.Tests.Aerodynamics
         }
 
         [Test]
+        public void GolfLaws_AllocateNothing_AndRefuseBadConstants()
+        {
+            var drag = GolfSpinReynoldsDrag.TrackManCalibrated;
+            var lift = GolfSpinReynoldsLift.BearmanHarvey;
+            var c = new AeroConditions(60, 600, 580, 0.021335, 1.184, 1.84e-5);
+            double sum = drag.DragCoefficient(c) + lift.LiftCoefficient(c);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 10_000; i++)
+            {
+                sum += drag.DragCoefficient(c) + lift.LiftCoefficient(c);
+            }
+
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+            Assert.That(double.IsFinite(sum));
+
+            // No flow, no lift; zero spin, no lift; the limits of the drag crisis are finite.
+            Assert.That(lift.Evaluate(0.2, 0), Is.EqualTo(0));
+            Assert.That(lift.Evaluate(0, 1e5), Is.EqualTo(0));
+            Assert.That(double.IsFinite(lift.Evaluate(1e6, 1e-300)));
+            Assert.That(drag.Evaluate(0, 1e300), Is.EqualTo(drag.Floor));
+            Assert.That(() => new GolfSpinReynoldsDrag(-0.1, 0, 0, 1e5, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("floor"));
+            Assert.That(() => new GolfSpinReynoldsDrag(0.2, 0, 0, 1e5, 0), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("crisisWidth"));
+            Assert.That(() => new GolfSpinReynoldsLift(0.6, 0.25, 1.5, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("reynoldsExponent"));
+            Assert.That(() => new GolfSpinReynoldsLift(0.6, double.NaN, 0.1, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("halfSpin"));
+        }
+
+        [Test]
         public void GolfSmitsSmithTable_IsItsSourceTable()
         {
             var rows = ReadCsv("smits-smith-1994-golf-lift.csv");

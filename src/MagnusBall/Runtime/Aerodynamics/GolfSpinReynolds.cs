@@ -14,7 +14,7 @@ namespace MagnusBall.Aerodynamics
     /// it and to a + c + b S below it.</para>
     /// <para><see cref="BearmanHarvey"/> holds the five constants fitted here to Bearman &amp; Harvey's 210 grid
     /// points (data/coefficients/bearman-harvey-1976-golf.csv); <see cref="TrackManCalibrated"/> the set the
-    /// <c>golf</c> preset flies, with some of them refitted once to 24 TrackMan shots (docs/presets.md says which).
+    /// <c>golf</c> preset flies, with the floor a refitted once to 24 TrackMan shots (docs/presets.md).
     /// Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
     /// </remarks>
     public sealed class GolfSpinReynoldsDrag : IDragModel
@@ -59,11 +59,11 @@ namespace MagnusBall.Aerodynamics
         public static GolfSpinReynoldsDrag BearmanHarvey { get; } = new GolfSpinReynoldsDrag(0.2301, 0.2839, 0.0399, 97237, 10160);
 
         /// <summary>
-        /// The <c>golf</c> preset's drag: <see cref="BearmanHarvey"/>'s form with a and b refitted once, together
-        /// with the lift's two constants, to the 24 shots of data/published/golf-trackman-session.json
-        /// (docs/presets.md, "Golf: the calibration").
+        /// The <c>golf</c> preset's drag: <see cref="BearmanHarvey"/> with one constant, the floor a, refitted once
+        /// to all 24 shots of data/published/golf-trackman-session.json (0.2301 -> 0.2240; docs/presets.md, "Golf:
+        /// the calibration"). The other four constants are Bearman &amp; Harvey's.
         /// </summary>
-        public static GolfSpinReynoldsDrag TrackManCalibrated { get; } = new GolfSpinReynoldsDrag(0.1961, 0.3354, 0.0399, 97237, 10160);
+        public static GolfSpinReynoldsDrag TrackManCalibrated { get; } = new GolfSpinReynoldsDrag(0.2240, 0.2839, 0.0399, 97237, 10160);
 
         /// <inheritdoc />
         public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinParameter, conditions.ReynoldsNumber);
@@ -92,8 +92,9 @@ namespace MagnusBall.Aerodynamics
     /// 0.20 at 0.15, 0.37 at 0.43, 0.47 at 0.94), is a little lower at high Reynolds number for the same S, and
     /// drops at the lowest speeds where the boundary layer stays laminar (0.10 at 13.7 m/s and S 0.31). The
     /// saturating S/(S + h) factor, the weak power of Re and the logistic onset carry those three features.</para>
-    /// <para><see cref="BearmanHarvey"/>: fitted to the 210 grid points; <see cref="TrackManCalibrated"/>: m and h
-    /// refitted once to the 24 TrackMan shots. Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
+    /// <para><see cref="BearmanHarvey"/>: fitted to the 210 grid points; the <c>golf</c> preset flies it unchanged
+    /// (its calibration refits only the drag floor, <see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>).
+    /// Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
     /// </remarks>
     public sealed class GolfSpinReynoldsLift : ILiftModel
     {
@@ -137,12 +138,6 @@ namespace MagnusBall.Aerodynamics
         /// the most laminar point).
         /// </summary>
         public static GolfSpinReynoldsLift BearmanHarvey { get; } = new GolfSpinReynoldsLift(0.6063, 0.2539, 0.091, 13916, 16734);
-
-        /// <summary>
-        /// The <c>golf</c> preset's lift: <see cref="BearmanHarvey"/>'s form with m and h refitted once, together
-        /// with the drag's a and b, to the 24 TrackMan shots (docs/presets.md).
-        /// </summary>
-        public static GolfSpinReynoldsLift TrackManCalibrated { get; } = new GolfSpinReynoldsLift(0.4063, 0.1069, 0.091, 13916, 16734);
 
         /// <inheritdoc />
         public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter, conditions.ReynoldsNumber);
