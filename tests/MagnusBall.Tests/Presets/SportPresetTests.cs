@@ -23,7 +23,7 @@ namespace MagnusBall.Tests.Presets
             Assert.That(SportPresets.FromName(" table tennis "), Is.SameAs(SportPresets.TableTennis));
             Assert.That(SportPresets.Names, Is.EquivalentTo(new[]
             {
-                "tennis", "tennis-free-flight", "soccer", "baseball", "golf", "golf-smits-smith", "table-tennis", "basketball",
+                "tennis", "tennis-free-flight", "soccer", "baseball", "golf", "golf-smits-smith", "table-tennis", "basketball", "golf-bearman-harvey", "golf-linear-2023",
             }));
         }
 

@@ -33,8 +33,8 @@ namespace MagnusBall.Aerodynamics
         /// Golf drag calibrated here to two TrackMan tour averages (2023): C_D = 0.1845 + 0.3533 S. With the
         /// Smits &amp; Smith lift table, 4 %/s spin decay and ISA sea-level air, (a, b) were solved so that the
         /// driver (171 mph, 10.4 deg, 2545 rpm) carries 282 yd and the 7-iron (123 mph, 16.1 deg, 7124 rpm)
-        /// 176 yd. This is the one calibrated parameter set in the presets; the rest of the golf model is as
-        /// published. See docs/presets.md for the apex and landing angles it gives.
+        /// 176 yd. The <c>golf-linear-2023</c> preset's drag (the <c>golf</c> preset before issue 12, when this was
+        /// its one calibrated parameter set); see docs/presets.md.
         /// </summary>
         public static LinearSpinDrag GolfTrackManCalibrated { get; } = new LinearSpinDrag(0.1845, 0.3533);
 

@@ -76,21 +76,51 @@ namespace MagnusBall.Presets
             "(C_D, C_L; as ported in pybaseball); Nathan 2008, Am. J. Phys. 76:119 (spin decay, tau 5 s at 100 mph).");
 
         /// <summary>
-        /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed);
-        /// Smits &amp; Smith's (1994) piecewise-linear C_L (<see cref="PiecewiseLinearLift.GolfSmitsSmith"/>) with
-        /// the drag law's two constants calibrated to the TrackMan driver and 7-iron carries,
-        /// C_D = 0.1845 + 0.3533 S (<see cref="LinearSpinDrag.GolfTrackManCalibrated"/>; Smits &amp; Smith's own
-        /// 0.24 + 0.18 S is <see cref="GolfSmitsSmith"/>); spin decay 4 %/s (TrackMan; tau = -1/ln 0.96 = 24.5 s).
+        /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed); drag
+        /// rising with spin and a drag crisis in the Reynolds number, lift saturating in spin
+        /// (<see cref="GolfSpinReynoldsDrag"/>, <see cref="GolfSpinReynoldsLift"/>), the form fitted to Bearman &amp;
+        /// Harvey's (1976) wind-tunnel grid, then one constant, the drag floor, refitted once to all 24 shots of a
+        /// TrackMan session (<see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>; the lift is
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>; docs/presets.md); spin decay 4 %/s (TrackMan;
+        /// tau = -1/ln 0.96 = 24.5 s).
         /// </summary>
         public static SportPreset Golf { get; } = new SportPreset(
             "golf",
             new Ball(0.04593, 0.021335, Ball.SolidSphereInertiaFactor),
+            GolfSpinReynoldsDrag.TrackManCalibrated,
+            GolfSpinReynoldsLift.BearmanHarvey,
+            new ExponentialSpinDecay(GolfSpinDecayTimeConstant),
+            "USGA Rules of Golf, equipment appendix (45.93 g, 42.67 mm); C_D(S, Re) and C_L(S, Re) in the form fitted to " +
+            "Bearman & Harvey 1976, Aeronautical Quarterly 27:112 (Figs. 7-8), the drag floor refitted to 24 TrackMan shots " +
+            "(data/published/golf-trackman-session.json); spin decay 4 %/s (TrackMan).");
+
+        /// <summary>
+        /// Golf with the wind-tunnel law as fitted to Bearman &amp; Harvey (1976), uncalibrated: the <see cref="Golf"/>
+        /// ball and spin decay with <see cref="GolfSpinReynoldsDrag.BearmanHarvey"/> and
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within a few
+        /// per cent, drivers 11-20 % short; on the tour averages it is within 1.8 % (median), docs/validation.md.
+        /// </summary>
+        public static SportPreset GolfBearmanHarvey { get; } = new SportPreset(
+            "golf-bearman-harvey",
+            Golf.Ball,
+            GolfSpinReynoldsDrag.BearmanHarvey,
+            GolfSpinReynoldsLift.BearmanHarvey,
+            Golf.SpinDecay,
+            "As golf, but the C_D(S, Re) and C_L(S, Re) fitted to Bearman & Harvey 1976 (Aeronautical Quarterly 27:112, Figs. 7-8) uncalibrated.");
+
+        /// <summary>
+        /// The <c>golf</c> preset as it was before the wind-tunnel law (kept so old scenarios can reproduce their
+        /// numbers): Smits &amp; Smith's lift table with C_D = 0.1845 + 0.3533 S, two constants calibrated to the 2023
+        /// TrackMan tour driver and 7-iron carries (<see cref="LinearSpinDrag.GolfTrackManCalibrated"/>).
+        /// </summary>
+        public static SportPreset GolfLinear2023 { get; } = new SportPreset(
+            "golf-linear-2023",
+            Golf.Ball,
             LinearSpinDrag.GolfTrackManCalibrated,
             PiecewiseLinearLift.GolfSmitsSmith,
-            new ExponentialSpinDecay(GolfSpinDecayTimeConstant),
-            "USGA Rules of Golf, equipment appendix (45.93 g, 42.67 mm); Smits & Smith 1994, Science and Golf II " +
-            "(piecewise-linear C_L; C_D = a + b S with a, b calibrated here to TrackMan 2023 tour driver and 7-iron carries: " +
-            "0.1845 + 0.3533 S); spin decay 4 %/s (TrackMan).");
+            Golf.SpinDecay,
+            "The golf preset before issue 12: Smits & Smith 1994 lift table, C_D = 0.1845 + 0.3533 S calibrated to the TrackMan 2023 " +
+            "tour driver and 7-iron carries; spin decay 4 %/s.");
 
         /// <summary>
         /// Golf as published by Smits &amp; Smith (1994), uncalibrated: the <see cref="Golf"/> ball, lift and spin
@@ -106,19 +136,21 @@ namespace MagnusBall.Presets
             "As golf, but Smits & Smith's own C_D = 0.24 + 0.18 S (Science and Golf II, 1994; secondary transcription).");
 
         /// <summary>
-        /// Table tennis: ITTF ball (40 mm, 2.7 g), thin shell. No table-tennis coefficient measurement was found
-        /// here, so these are stated assumptions: C_D = 0.47, the textbook subcritical value for a smooth sphere
-        /// (Reynolds number 1e4-1e5; e.g. Achenbach 1972, J. Fluid Mech. 54:565); lift from Stepanek's saturating
-        /// curve C_L = S/(2.022 S + 0.981), borrowed from tennis; spin decay 2 % per 6.4 m as for tennis.
+        /// Table tennis: ITTF ball (40 mm, 2.7 g), thin shell. Drag: the law Mencke et al. (2020, Am. J. Phys. 88:934,
+        /// eqs. 23 and 47) fly their measured table-tennis lob with (Fig. 7), Goff &amp; Carre's logistic in speed and
+        /// their spin power law (<see cref="GoffCarreSoccerDrag"/>): a trajectory fit, not a wind-tunnel measurement of
+        /// a table-tennis ball. Stated assumptions: lift from Stepanek's saturating tennis curve C_L = S/(2.022 S + 0.981)
+        /// (no table-tennis lift data was available here); spin decay 2 % per 6.4 m as for tennis.
         /// </summary>
         public static SportPreset TableTennis { get; } = new SportPreset(
             "table-tennis",
             new Ball(0.0027, 0.020, Ball.ThinShellInertiaFactor),
-            new ConstantDrag(0.47),
+            GoffCarreSoccerDrag.Instance,
             StepanekLift.Instance,
             SpeedProportionalSpinDecay.TennisCrossLindsey,
-            "ITTF Handbook 2.3 (40 mm, 2.7 g). Assumptions (no table-tennis measurement found): C_D = 0.47, smooth sphere, " +
-            "subcritical (Achenbach 1972); C_L from Stepanek's tennis curve; spin decay as tennis (Cross & Lindsey 2014).");
+            "ITTF Handbook 2.3 (40 mm, 2.7 g). C_D: Mencke et al. 2020, Am. J. Phys. 88:934 (eqs. 23, 47; the Goff & Carre logistic " +
+            "they fly their table-tennis lob with). Assumptions (no table-tennis measurement found): C_L from Stepanek's tennis curve; " +
+            "spin decay as tennis (Cross & Lindsey 2014).");
 
         /// <summary>
         /// Basketball: FIBA size 7 (circumference 749-780 mm, 567-650 g; 0.6 kg and r = 0.1205 m used), thin
@@ -141,7 +173,7 @@ namespace MagnusBall.Presets
         /// <summary>Every preset, in the order of <see cref="Names"/>.</summary>
         public static IReadOnlyList<SportPreset> All { get; } = Array.AsReadOnly(new[]
         {
-            Tennis, TennisFreeFlight, Soccer, Baseball, Golf, GolfSmitsSmith, TableTennis, Basketball,
+            Tennis, TennisFreeFlight, Soccer, Baseball, Golf, GolfSmitsSmith, TableTennis, Basketball, GolfBearmanHarvey, GolfLinear2023,
         });
 
         /// <summary>The names <see cref="FromName"/> accepts.</summary>

@@ -1,0 +1,166 @@
+using System;
+
+namespace MagnusBall.Aerodynamics
+{
+    /// <summary>
+    /// Golf-ball drag that rises with spin and has a drag crisis in the Reynolds number:
+    /// C_D = a + b S + c / (1 + exp((Re - Re_c) / w)), with S = r|w|/s and Re = rho s 2r / mu.
+    /// </summary>
+    /// <remarks>
+    /// <para>The form follows the wind-tunnel picture of a dimpled ball (Bearman &amp; Harvey 1976, Aeronautical
+    /// Quarterly 27:112, Figs. 7 and 8): drag grows about linearly with the spin parameter at every speed, and
+    /// rises by a few hundredths below a critical Reynolds number (the "drag crisis" of a dimpled ball lies near
+    /// Re 1e5, inside a golf shot's speed range). The logistic makes the crisis smooth; C_D tends to a + b S above
+    /// it and to a + c + b S below it.</para>
+    /// <para><see cref="BearmanHarvey"/> holds the five constants fitted here to Bearman &amp; Harvey's 210 grid
+    /// points (data/coefficients/bearman-harvey-1976-golf.csv); <see cref="TrackManCalibrated"/> the set the
+    /// <c>golf</c> preset flies, with the floor a refitted once to 24 TrackMan shots (docs/presets.md).
+    /// Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
+    /// </remarks>
+    public sealed class GolfSpinReynoldsDrag : IDragModel
+    {
+        /// <summary>Creates the law.</summary>
+        /// <param name="floor">a, C_D above the crisis at zero spin; finite, &gt;= 0.</param>
+        /// <param name="spinSlope">b, the rise of C_D per unit spin parameter; finite, &gt;= 0.</param>
+        /// <param name="crisisRise">c, how much higher C_D is far below the crisis; finite, &gt;= 0.</param>
+        /// <param name="crisisReynolds">Re_c, the crisis' middle; finite, &gt; 0.</param>
+        /// <param name="crisisWidth">w, its width in Reynolds number; finite, &gt; 0.</param>
+        /// <exception cref="ArgumentOutOfRangeException">A value is out of range; the message names it.</exception>
+        public GolfSpinReynoldsDrag(double floor, double spinSlope, double crisisRise, double crisisReynolds, double crisisWidth)
+        {
+            Floor = Require.NonNegative(floor, nameof(floor));
+            SpinSlope = Require.NonNegative(spinSlope, nameof(spinSlope));
+            CrisisRise = Require.NonNegative(crisisRise, nameof(crisisRise));
+            CrisisReynolds = Require.Positive(crisisReynolds, nameof(crisisReynolds));
+            CrisisWidth = Require.Positive(crisisWidth, nameof(crisisWidth));
+        }
+
+        /// <summary>a, C_D above the crisis at zero spin.</summary>
+        public double Floor { get; }
+
+        /// <summary>b, the rise of C_D per unit spin parameter.</summary>
+        public double SpinSlope { get; }
+
+        /// <summary>c, the extra drag far below the crisis.</summary>
+        public double CrisisRise { get; }
+
+        /// <summary>Re_c, the Reynolds number in the middle of the crisis.</summary>
+        public double CrisisReynolds { get; }
+
+        /// <summary>w, the crisis' width in Reynolds number.</summary>
+        public double CrisisWidth { get; }
+
+        /// <summary>
+        /// Fitted here (least squares, all 210 points) to Bearman &amp; Harvey's (1976) wind-tunnel grid for a
+        /// hexagonally dimpled ball, 13.7-88.1 m/s and 2000-6000 rpm, as transcribed in
+        /// data/coefficients/bearman-harvey-1976-golf.csv: a 0.2301, b 0.2839, c 0.0399, Re_c 97 237, w 10 160.
+        /// Residuals: rms 0.007 for speeds of 29.9 m/s and above (Re &gt;= 8.2e4), rms 0.018 below, largest 0.043.
+        /// </summary>
+        public static GolfSpinReynoldsDrag BearmanHarvey { get; } = new GolfSpinReynoldsDrag(0.2301, 0.2839, 0.0399, 97237, 10160);
+
+        /// <summary>
+        /// The <c>golf</c> preset's drag: <see cref="BearmanHarvey"/> with one constant, the floor a, refitted once
+        /// to all 24 shots of data/published/golf-trackman-session.json (0.2301 -> 0.2240; docs/presets.md, "Golf:
+        /// the calibration"). The other four constants are Bearman &amp; Harvey's.
+        /// </summary>
+        public static GolfSpinReynoldsDrag TrackManCalibrated { get; } = new GolfSpinReynoldsDrag(0.2240, 0.2839, 0.0399, 97237, 10160);
+
+        /// <inheritdoc />
+        public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinParameter, conditions.ReynoldsNumber);
+
+        /// <summary>C_D at spin parameter <paramref name="spinParameter"/> and Reynolds number <paramref name="reynoldsNumber"/>.</summary>
+        /// <param name="spinParameter">S = r|w|/s (negative or NaN counts as 0).</param>
+        /// <param name="reynoldsNumber">Re = rho s 2r / mu (&gt;= 0).</param>
+        public double Evaluate(double spinParameter, double reynoldsNumber)
+        {
+            double s = spinParameter > 0 ? spinParameter : 0.0;
+            // exp overflows to +inf far above the crisis, where c/inf = 0 is the right limit; no NaN for Re >= 0.
+            return Floor + SpinSlope * s + CrisisRise / (1.0 + Math.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
+        }
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            $"GolfSpinReynoldsDrag({Floor:R} + {SpinSlope:R} S + {CrisisRise:R}/(1 + exp((Re - {CrisisReynolds:R})/{CrisisWidth:R})))";
+    }
+
+    /// <summary>
+    /// Golf-ball lift that saturates in the spin parameter and weakens with the Reynolds number:
+    /// C_L = m S/(S + h) (1e5/Re)^q / (1 + exp(-(Re - Re_o)/w_o)), with S = S_perp = r|w x v_hat|/s.
+    /// </summary>
+    /// <remarks>
+    /// <para>Bearman &amp; Harvey's (1976) lift grid rises steeply at small spin and levels off (0.13 at S 0.05,
+    /// 0.20 at 0.15, 0.37 at 0.43, 0.47 at 0.94), is a little lower at high Reynolds number for the same S, and
+    /// drops at the lowest speeds where the boundary layer stays laminar (0.10 at 13.7 m/s and S 0.31). The
+    /// saturating S/(S + h) factor, the weak power of Re and the logistic onset carry those three features.</para>
+    /// <para><see cref="BearmanHarvey"/>: fitted to the 210 grid points; the <c>golf</c> preset flies it unchanged
+    /// (its calibration refits only the drag floor, <see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>).
+    /// Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
+    /// </remarks>
+    public sealed class GolfSpinReynoldsLift : ILiftModel
+    {
+        private const double ReferenceReynolds = 1e5;
+
+        /// <summary>Creates the law.</summary>
+        /// <param name="saturation">m, the lift the spin factor tends to; finite, &gt;= 0.</param>
+        /// <param name="halfSpin">h, the spin parameter at which the spin factor reaches m/2; finite, &gt; 0.</param>
+        /// <param name="reynoldsExponent">q, lift scales as (1e5/Re)^q; finite, in [0, 1].</param>
+        /// <param name="onsetReynolds">Re_o, the middle of the low-speed lift onset; finite, &gt;= 0.</param>
+        /// <param name="onsetWidth">w_o, its width in Reynolds number; finite, &gt; 0.</param>
+        /// <exception cref="ArgumentOutOfRangeException">A value is out of range; the message names it.</exception>
+        public GolfSpinReynoldsLift(double saturation, double halfSpin, double reynoldsExponent, double onsetReynolds, double onsetWidth)
+        {
+            Saturation = Require.NonNegative(saturation, nameof(saturation));
+            HalfSpin = Require.Positive(halfSpin, nameof(halfSpin));
+            ReynoldsExponent = Require.InRange(reynoldsExponent, 0, 1, nameof(reynoldsExponent));
+            OnsetReynolds = Require.NonNegative(onsetReynolds, nameof(onsetReynolds));
+            OnsetWidth = Require.Positive(onsetWidth, nameof(onsetWidth));
+        }
+
+        /// <summary>m, the saturation value of the spin factor.</summary>
+        public double Saturation { get; }
+
+        /// <summary>h, the half-saturation spin parameter.</summary>
+        public double HalfSpin { get; }
+
+        /// <summary>q, the Reynolds-number exponent.</summary>
+        public double ReynoldsExponent { get; }
+
+        /// <summary>Re_o, the middle of the low-speed onset.</summary>
+        public double OnsetReynolds { get; }
+
+        /// <summary>w_o, the onset's width.</summary>
+        public double OnsetWidth { get; }
+
+        /// <summary>
+        /// Fitted here (least squares, all 210 points) to Bearman &amp; Harvey's (1976) lift grid
+        /// (data/coefficients/bearman-harvey-1976-golf.csv): m 0.6063, h 0.2539, q 0.091, Re_o 13 916, w_o 16 734.
+        /// Residuals: rms 0.013 for speeds of 29.9 m/s and above, 0.041 below, largest 0.19 (13.7 m/s, 2000 rpm,
+        /// the most laminar point).
+        /// </summary>
+        public static GolfSpinReynoldsLift BearmanHarvey { get; } = new GolfSpinReynoldsLift(0.6063, 0.2539, 0.091, 13916, 16734);
+
+        /// <inheritdoc />
+        public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter, conditions.ReynoldsNumber);
+
+        /// <summary>C_L at transverse spin parameter <paramref name="spinParameter"/> and Reynolds number <paramref name="reynoldsNumber"/>.</summary>
+        /// <param name="spinParameter">S_perp (0 or less, or NaN, gives 0).</param>
+        /// <param name="reynoldsNumber">Re (0 or less gives 0: no flow, no lift).</param>
+        public double Evaluate(double spinParameter, double reynoldsNumber)
+        {
+            if (!(spinParameter > 0) || !(reynoldsNumber > 0))
+            {
+                return 0.0;
+            }
+
+            double spin = Saturation * spinParameter / (spinParameter + HalfSpin);
+            // Re is held at 1 or more inside the power so a near-zero speed cannot make it overflow (q <= 1).
+            double reynolds = Math.Pow(ReferenceReynolds / Math.Max(reynoldsNumber, 1.0), ReynoldsExponent);
+            double onset = 1.0 / (1.0 + Math.Exp(-(reynoldsNumber - OnsetReynolds) / OnsetWidth));
+            return spin * reynolds * onset;
+        }
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            $"GolfSpinReynoldsLift({Saturation:R} S/(S + {HalfSpin:R}) (1e5/Re)^{ReynoldsExponent:R}, onset {OnsetReynolds:R}/{OnsetWidth:R})";
+    }
+}
