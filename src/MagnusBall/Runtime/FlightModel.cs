@@ -39,6 +39,7 @@ namespace MagnusBall
         private readonly bool _hasAero;
         private readonly bool _windVaries; // a wind profile: the wind depends on the height
         private readonly Vector3d _wind;   // the uniform wind (read once here, not per evaluation)
+        private readonly FlightKernel _kernel; // the ODE specialised for these laws (picked once, here)
 
         /// <summary>Creates a flight model.</summary>
         /// <param name="ball">The ball (mass, radius, inertia).</param>
@@ -70,6 +71,7 @@ namespace MagnusBall
             _hasAero = (drag != null || lift != null) && air.Density > 0;
             _windVaries = air.WindProfile != null && Up.LengthSquared > 0;
             _wind = air.Wind;
+            _kernel = FlightKernelFactory.Create(this);
         }
 
         /// <summary>The ball.</summary>
@@ -140,7 +142,24 @@ namespace MagnusBall
         /// of cost every integrator is measured in. Allocates nothing; finite for every finite state.
         /// </summary>
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
-        public StateDerivative Derivative(in FlightState state)
+        /// <remarks>
+        /// Runs through a kernel specialised for this model's laws when the model is built: each built-in law is a
+        /// struct the JIT inlines, and only the inputs some law reads are computed (no Reynolds number unless a law
+        /// reads it). Laws of your own (any <see cref="IDragModel"/>, <see cref="ILiftModel"/> or
+        /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
+        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit.
+        /// </remarks>
+        public StateDerivative Derivative(in FlightState state) => _kernel.Derivative(state);
+
+        /// <summary>The kernel this model's evaluations and the built-in fixed steps run through.</summary>
+        internal FlightKernel Kernel => _kernel;
+
+        /// <summary>
+        /// The general formula, every law called through its interface: what <see cref="Derivative"/> computes, bit for
+        /// bit (the tests hold the kernel to it).
+        /// </summary>
+        /// <param name="state">The state.</param>
+        internal StateDerivative GeneralDerivative(in FlightState state)
         {
             Vector3d acceleration = Gravity;
             Vector3d spinAcceleration = default;
