@@ -182,7 +182,17 @@ namespace MagnusBall.Batch
                 az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
             }
 
-            if (Lift != LiftKind.None)
+            if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
+            {
+                // No law reads a spin parameter: the kernel's folded form, ((rho A / 2m) C_L s / |w|) (w x v_rel).
+                Vector<double> cx = wy * rz - wz * ry, cy = wz * rx - wx * rz, cz = wx * ry - wy * rx;
+                Vector<double> liftScale = new Vector<double>(_liftConstant) * speed * (Vector<double>.One / spinRate);
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, Vector<double>.Zero);
+                ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
+                ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
+                az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
+            }
+            else if (Lift != LiftKind.None)
             {
                 Vector<double> unit = Vector<double>.One / speed;
                 Vector<double> dx = rx * unit, dy = ry * unit, dz = rz * unit;
