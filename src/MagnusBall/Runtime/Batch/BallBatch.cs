@@ -327,66 +327,91 @@ namespace MagnusBall.Batch
             Vector<double> sx = new Vector<double>(_sx, start), sy = new Vector<double>(_sy, start), sz = new Vector<double>(_sz, start);
             bool spins = laws.Decay != VectorLaws.DecayKind.None;
 
-            // k2 at (v + h/2 a1, w + h/2 dw1)
-            Vector<double> v2x = vx + half * ax, v2y = vy + half * ay, v2z = vz + half * az;
-            Vector<double> w2x = wx, w2y = wy, w2z = wz;
-            if (spins)
+            // k2, k3, k4 and the end rates from one evaluation site (the laws inlined once), RungeKutta4's grouping.
+            Vector<double> v2x = default, v2y = default, v2z = default, v3x = default, v3y = default, v3z = default;
+            Vector<double> a2x = default, a2y = default, a2z = default, a3x = default, a3y = default, a3z = default;
+            Vector<double> s2x = default, s2y = default, s2z = default, s3x = default, s3y = default, s3z = default;
+            Vector<double> vkx = vx, vky = vy, vkz = vz, akx = ax, aky = ay, akz = az, skx = sx, sky = sy, skz = sz;
+            Vector<double> npx = px, npy = py, npz = pz, nvx, nvy, nvz, nwx = wx, nwy = wy, nwz = wz;
+            Vector<double> nax, nay, naz, nsx, nsy, nsz;
+            for (int stage = 0; ; stage++)
             {
-                w2x = wx + half * sx;
-                w2y = wy + half * sy;
-                w2z = wz + half * sz;
+                if (stage < 3)
+                {
+                    Vector<double> c = stage == 2 ? h : half;
+                    nvx = vx + c * akx;
+                    nvy = vy + c * aky;
+                    nvz = vz + c * akz;
+                    if (spins)
+                    {
+                        nwx = wx + c * skx;
+                        nwy = wy + c * sky;
+                        nwz = wz + c * skz;
+                    }
+                }
+                else
+                {
+                    npx = px + (vx + two * (v2x + v3x) + vkx) * sixth;
+                    npy = py + (vy + two * (v2y + v3y) + vky) * sixth;
+                    npz = pz + (vz + two * (v2z + v3z) + vkz) * sixth;
+                    nvx = vx + (ax + two * (a2x + a3x) + akx) * sixth;
+                    nvy = vy + (ay + two * (a2y + a3y) + aky) * sixth;
+                    nvz = vz + (az + two * (a2z + a3z) + akz) * sixth;
+                    if (spins)
+                    {
+                        nwx = wx + (sx + two * (s2x + s3x) + skx) * sixth;
+                        nwy = wy + (sy + two * (s2y + s3y) + sky) * sixth;
+                        nwz = wz + (sz + two * (s2z + s3z) + skz) * sixth;
+                    }
+                    else
+                    {
+                        nwx = wx + sx * sixth;
+                        nwy = wy + sy * sixth;
+                        nwz = wz + sz * sixth;
+                    }
+                }
+
+                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz);
+                if (stage == 3)
+                {
+                    break;
+                }
+
+                if (stage == 0)
+                {
+                    v2x = nvx;
+                    v2y = nvy;
+                    v2z = nvz;
+                    a2x = nax;
+                    a2y = nay;
+                    a2z = naz;
+                    s2x = nsx;
+                    s2y = nsy;
+                    s2z = nsz;
+                }
+                else if (stage == 1)
+                {
+                    v3x = nvx;
+                    v3y = nvy;
+                    v3z = nvz;
+                    a3x = nax;
+                    a3y = nay;
+                    a3z = naz;
+                    s3x = nsx;
+                    s3y = nsy;
+                    s3z = nsz;
+                }
+
+                vkx = nvx;
+                vky = nvy;
+                vkz = nvz;
+                akx = nax;
+                aky = nay;
+                akz = naz;
+                skx = nsx;
+                sky = nsy;
+                skz = nsz;
             }
-
-            laws.Rates(v2x, v2y, v2z, w2x, w2y, w2z, out Vector<double> a2x, out Vector<double> a2y, out Vector<double> a2z,
-                out Vector<double> s2x, out Vector<double> s2y, out Vector<double> s2z);
-
-            Vector<double> v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
-            Vector<double> w3x = wx, w3y = wy, w3z = wz;
-            if (spins)
-            {
-                w3x = wx + half * s2x;
-                w3y = wy + half * s2y;
-                w3z = wz + half * s2z;
-            }
-
-            laws.Rates(v3x, v3y, v3z, w3x, w3y, w3z, out Vector<double> a3x, out Vector<double> a3y, out Vector<double> a3z,
-                out Vector<double> s3x, out Vector<double> s3y, out Vector<double> s3z);
-
-            Vector<double> v4x = vx + h * a3x, v4y = vy + h * a3y, v4z = vz + h * a3z;
-            Vector<double> w4x = wx, w4y = wy, w4z = wz;
-            if (spins)
-            {
-                w4x = wx + h * s3x;
-                w4y = wy + h * s3y;
-                w4z = wz + h * s3z;
-            }
-
-            laws.Rates(v4x, v4y, v4z, w4x, w4y, w4z, out Vector<double> a4x, out Vector<double> a4y, out Vector<double> a4z,
-                out Vector<double> s4x, out Vector<double> s4y, out Vector<double> s4z);
-
-            // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as RungeKutta4 groups it
-            Vector<double> npx = px + (vx + two * (v2x + v3x) + v4x) * sixth;
-            Vector<double> npy = py + (vy + two * (v2y + v3y) + v4y) * sixth;
-            Vector<double> npz = pz + (vz + two * (v2z + v3z) + v4z) * sixth;
-            Vector<double> nvx = vx + (ax + two * (a2x + a3x) + a4x) * sixth;
-            Vector<double> nvy = vy + (ay + two * (a2y + a3y) + a4y) * sixth;
-            Vector<double> nvz = vz + (az + two * (a2z + a3z) + a4z) * sixth;
-            Vector<double> nwx, nwy, nwz;
-            if (spins)
-            {
-                nwx = wx + (sx + two * (s2x + s3x) + s4x) * sixth;
-                nwy = wy + (sy + two * (s2y + s3y) + s4y) * sixth;
-                nwz = wz + (sz + two * (s2z + s3z) + s4z) * sixth;
-            }
-            else
-            {
-                nwx = wx + sx * sixth;
-                nwy = wy + sy * sixth;
-                nwz = wz + sz * sixth;
-            }
-
-            laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out Vector<double> nax, out Vector<double> nay, out Vector<double> naz,
-                out Vector<double> nsx, out Vector<double> nsy, out Vector<double> nsz);
 
             // Which lanes need the scalar finish: a landing is possible (the cubic's lower bound over the step is not
             // clearly above the plane: min(f0, f1) <= 4/27 (max(-m0, 0) + max(m1, 0)), with a margin), or a number is

@@ -249,7 +249,10 @@ namespace MagnusBall.Batch
             Vector<double> e = biased - new Vector<double>(1023);
             Vector<double> m = Vector.AsVectorDouble((bits & new Vector<long>(0x000F_FFFF_FFFF_FFFFL)) | new Vector<long>(0x3FF0_0000_0000_0000L));
             // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 has a fractional part in [0.1, 0.9], far from an integer.
-            Vector<double> q = Vector.ConvertToDouble(Vector.ConvertToInt64((e + new Vector<double>(0.5)) * new Vector<double>(0.2)));
+            // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 - 0.5 lies within 0.4 of q, and adding and subtracting 2^52 rounds it
+            // to the nearest integer (exact: every value here is a small integer or within 2^52).
+            Vector<double> q = (((e + new Vector<double>(0.5)) * new Vector<double>(0.2) - new Vector<double>(0.5)) + new Vector<double>(Magic)) -
+                new Vector<double>(Magic);
             Vector<double> r = e - new Vector<double>(5) * q;
             Vector<double> s = new Vector<double>(2) * m - new Vector<double>(3);
             Vector<double> s2 = s * s;
@@ -269,12 +272,18 @@ namespace MagnusBall.Batch
             Vector<double> y2 = y * y;
             Vector<double> d = Vector<double>.One - (a * y) * (y2 * y2);
             y += (y * d) * (new Vector<double>(0.2) + d * new Vector<double>(0.12));
-            // 2^(-2q): its bit pattern (1023 - 2q) 2^52 built as an exact double, then converted.
-            Vector<double> scaleBits = (new Vector<double>(1023) - new Vector<double>(2) * q) * new Vector<double>(4503599627370496.0);
-            Vector<double> scale = Vector.AsVectorDouble(Vector.ConvertToInt64(scaleBits));
+            // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
+            // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
+            // which Vector<T> lacks on some runtimes).
+            Vector<long> biasedScale = Vector.AsVectorInt64(new Vector<double>(1023) - new Vector<double>(2) * q + new Vector<double>(Magic)) -
+                new Vector<long>(MagicBits);
+            Vector<double> scale = Vector.AsVectorDouble(biasedScale * new Vector<long>(1L << 52));
             Vector<long> finite = Vector.LessThanOrEqual(x, new Vector<double>(double.MaxValue));
             return Vector.ConditionalSelect(finite, y * scale, Vector<double>.Zero);
         }
+
+        private const double Magic = 4503599627370496.0; // 2^52
+        private const long MagicBits = 0x4330_0000_0000_0000L; // its bit pattern
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void Select(Vector<double> r, double value, double tableValue, double powerValue, ref Vector<double> table, ref Vector<double> power)
