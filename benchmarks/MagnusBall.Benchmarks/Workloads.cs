@@ -101,6 +101,13 @@ namespace MagnusBall.Benchmarks
         /// <summary>The same on the full tennis model.</summary>
         public double Rk4FullShot() => Rk4Shot(_fullModel);
 
+        /// <summary>The 480 steps on the thesis's ODE through the kernel's internal multi-step call (no per-step dispatch or checks).</summary>
+        public double Rk4ThesisRun()
+        {
+            StateDerivative derivative = _thesisModel.Derivative(_start);
+            return _thesisModel.Kernel.RungeKutta4Steps(_start, ref derivative, Step, ShotSteps).Position.X;
+        }
+
         private double Rk4Shot(FlightModel model)
         {
             FlightState state = _start;
