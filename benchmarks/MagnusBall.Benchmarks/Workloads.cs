@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Batch;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;

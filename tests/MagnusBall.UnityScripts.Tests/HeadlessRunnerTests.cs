@@ -64,6 +64,34 @@ namespace MagnusBall.UnityScripts.Tests
             }
         }
 
+        [Test]
+        public void TheSwingTable_PrintsEachSwingNextToItsLaunch_AndBySwingFliesThem()
+        {
+            (int code, string output, string error) = Run("--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            string[] rows = output.Split('\n');
+            foreach (string shot in new[] { "flat serve", "kick serve", "topspin forehand", "slice backhand", "topspin lob", "drop shot" })
+            {
+                // "  name  racket path face turn ACOR azim -> v elev azim top side landing in"
+                string row = rows.Single(r => r.StartsWith("  " + shot, StringComparison.Ordinal));
+                Assert.That(row, Does.Contain("->"), row);
+                Assert.That(row.TrimEnd().EndsWith("in", StringComparison.Ordinal), Is.True, row);
+            }
+
+            (code, output, error) = Run("--by-swing", "--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            rows = output.Split('\n');
+            foreach (string shot in new[] { "flat serve", "kick serve", "topspin forehand", "slice backhand", "topspin lob", "drop shot" })
+            {
+                string row = rows.Single(r => r.StartsWith(shot, StringComparison.Ordinal));
+                Assert.That(row.Split(' ', StringSplitOptions.RemoveEmptyEntries), Does.Contain("in"), row);
+            }
+
+            (code, _, error) = Run("--by-swing", "--speed", "30", "--no-svg");
+            Assert.That(code, Is.EqualTo(2));
+            Assert.That(error, Does.Contain("--by-swing"));
+        }
+
         [TestCase("--speed", "fast", "--speed must be a finite number")]
         [TestCase("--elevation", "95", "--elevation must be in [-89.9, 89.9]")]
         [TestCase("--shot", "smash", "--shot must be one of")]

@@ -17,7 +17,8 @@ namespace MagnusBall.Samples.TennisScene.Headless
 @"usage: dotnet run --project samples/TennisScene/Headless -- [options]
 
 With no shot options, flies the six standard shots (flat serve, kick serve, topspin forehand,
-slice backhand, topspin lob, drop shot). Any shot option flies one custom shot instead, starting
+slice backhand, topspin lob, drop shot), then the same six made by racket swings, each swing
+printed next to the launch it produced. Any shot option flies one custom shot instead, starting
 from the topspin forehand's values.
 
 shot options (court frame: x from the net toward the far baseline, y up, z to the hitter's left):
@@ -32,6 +33,7 @@ shot options (court frame: x from the net toward the far baseline, y up, z to th
   --z M               hitting position across the court
   --target AREA       court | deuce | ad  (what counts as in)
   --aim X,Z           solve elevation and azimuth (AimSolver) so the ball first touches the court at (X, Z)
+  --by-swing          fly the six standard shots as made by racket swings (StandardSwings) instead of by launch
 scene options:
   --integrator NAME   euler | semi-implicit-euler | heun | rk4 | stable-rk4 (default rk4)
   --step S            fixed step (default 1/240)
@@ -83,6 +85,22 @@ exit codes: 0 ok, 2 bad options";
             Console.WriteLine();
             Console.WriteLine(ShotTable.Legend);
 
+            if (options.Swings.Count > 0)
+            {
+                // The shots made by swings: the swing next to the launch the library's impact law produced.
+                var swingReports = new List<ShotReport>();
+                foreach (TennisSwing swing in options.Swings)
+                {
+                    swingReports.Add(simulation.Run(swing.ToShot(options.Settings.Ball), Span<Vector3d>.Empty));
+                }
+
+                Console.WriteLine();
+                Console.WriteLine("Made by racket swings (MagnusBall.Contact.Swings.RacketSwing, hand-held racket, ball on the string centre):");
+                Console.Write(ShotTable.FormatSwings(swingReports));
+                Console.WriteLine();
+                Console.WriteLine(ShotTable.SwingLegend);
+            }
+
             if (options.SvgPath != null)
             {
                 string path = Path.GetFullPath(options.SvgPath);
@@ -111,6 +129,8 @@ exit codes: 0 ok, 2 bad options";
 
         public List<TennisShot> Shots { get; } = new List<TennisShot>();
 
+        public List<TennisSwing> Swings { get; } = new List<TennisSwing>();
+
         public string? SvgPath { get; private set; } = Path.Combine("out", "tennis-scene.svg");
 
         public static Options Parse(string[] args)
@@ -118,6 +138,7 @@ exit codes: 0 ok, 2 bad options";
             var options = new Options();
             var values = new Dictionary<string, string>(StringComparer.Ordinal);
             bool thesis = false;
+            bool bySwing = false;
             for (int i = 0; i < args.Length; i++)
             {
                 string arg = args[i];
@@ -132,6 +153,9 @@ exit codes: 0 ok, 2 bad options";
                         continue;
                     case "--thesis-coefficients":
                         thesis = true;
+                        continue;
+                    case "--by-swing":
+                        bySwing = true;
                         continue;
                     case "--shot":
                     case "--speed":
@@ -202,8 +226,26 @@ exit codes: 0 ok, 2 bad options";
 
             if (!custom)
             {
-                options.Shots.AddRange(StandardShots.All());
+                if (bySwing)
+                {
+                    // The six standard shots made by racket swings: the main table and the picture show them.
+                    foreach (TennisSwing swing in StandardSwings.All())
+                    {
+                        options.Shots.Add(swing.ToShot(options.Settings.Ball));
+                    }
+                }
+                else
+                {
+                    options.Shots.AddRange(StandardShots.All());
+                }
+
+                options.Swings.AddRange(StandardSwings.All());
                 return options;
+            }
+
+            if (bySwing)
+            {
+                throw new ArgumentException("--by-swing flies the six standard shots: give no shot options with it.");
             }
 
             double speed = Number(values, "--speed", basis.Speed, min: 0.1, max: 120);

@@ -10,6 +10,9 @@ namespace MagnusBall
     /// </summary>
     internal abstract class FlightKernel
     {
+        /// <summary>The test hook behind <see cref="FlightModel.CountedEvaluations"/>: null in every shipped use.</summary>
+        internal EvaluationCount? Counter;
+
         /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the same as the general formula).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
 
@@ -80,6 +83,7 @@ namespace MagnusBall
             in Vector3d position, in Vector3d velocity, in Vector3d w, double spinRate, double inverseSpinRate,
             out Vector3d acceleration, out Vector3d spinAcceleration)
         {
+            Counter?.Add();
             acceleration = _gravity;
             spinAcceleration = default;
             bool aero = _drag.IsPresent || _lift.IsPresent;

@@ -103,6 +103,19 @@ namespace MagnusBall
         /// </summary>
         public double AerodynamicFactor => _dragFactor;
 
+        /// <summary>
+        /// Test hook: when set, every evaluation of the model (a call of <see cref="Derivative"/> or one inside a kernel step) adds one to it, so tests count real evaluations of
+        /// the model instead of trusting a counter's formula. Null (no cost but one check) in every shipped use.
+        /// </summary>
+        internal EvaluationCount? CountedEvaluations
+        {
+            get => _kernel.Counter;
+            set => _kernel.Counter = value; // the kernel counts: every evaluation, through Derivative or a kernel step
+        }
+
+        /// <summary>True when the air exerts a force (density &gt; 0 and a drag or lift law): the one place this is decided.</summary>
+        internal bool HasAerodynamics => _hasAero;
+
         /// <summary>A vacuum model: gravity only.</summary>
         /// <param name="ball">The ball.</param>
         /// <param name="gravity">The gravity vector, m/s^2.</param>
@@ -272,5 +285,15 @@ namespace MagnusBall
         public override string ToString() =>
             $"FlightModel({Ball}, {Air}, g={Gravity}, drag={Drag?.ToString() ?? "off"}, lift={Lift?.ToString() ?? "off"}, " +
             $"spinDecay={SpinDecay?.ToString() ?? "off"})";
+    }
+
+    /// <summary>A count of <see cref="FlightModel.Derivative"/> calls (a test hook; see FlightModel.CountedEvaluations).</summary>
+    internal sealed class EvaluationCount
+    {
+        /// <summary>Calls so far.</summary>
+        public long Calls;
+
+        /// <summary>Counts one call.</summary>
+        public void Add() => Calls++;
     }
 }

@@ -100,9 +100,9 @@ namespace MagnusBall.Tests.Contact
 
         private static double Y(double angle) => Top + Height - (angle - MinAngle) / (MaxAngle - MinAngle) * Height;
 
-        private static string F(string format, params object[] args) => string.Format(CultureInfo.InvariantCulture, format, args);
+        internal static string F(string format, params object[] args) => string.Format(CultureInfo.InvariantCulture, format, args);
 
-        private static string RepositoryRoot()
+        internal static string RepositoryRoot()
         {
             string? dir = TestContext.CurrentContext.TestDirectory;
             while (dir != null && !File.Exists(Path.Combine(dir, "MagnusBall.sln")))

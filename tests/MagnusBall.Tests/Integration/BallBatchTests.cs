@@ -4,9 +4,8 @@ using System.Numerics;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Batch;
 using MagnusBall.Integration;
-using MagnusBall.Queries;
+using MagnusBall.Flight;
 using NUnit.Framework;
-using Plane = MagnusBall.Queries.Plane;
 
 namespace MagnusBall.Tests.Integration
 {
@@ -80,9 +79,11 @@ namespace MagnusBall.Tests.Integration
                 {
                     for (int s = 0; s < 4 && !landed[i]; s++)
                     {
-                        Assert.That(steppers[i].TryStep(1.0 / 240), Is.True);
+                        StepOutcome outcome = steppers[i].TryStep(1.0 / 240, FlightEventKinds.Landing);
+                        Assert.That(outcome == StepOutcome.Taken || outcome == StepOutcome.Stopped, Is.True, $"ball {i}: {outcome}");
                         if (steppers[i].TryGetEvent(FlightEventKinds.Landing, out FlightEvent landing))
                         {
+                            Assert.That(outcome, Is.EqualTo(StepOutcome.Stopped));
                             landed[i] = true;
                             landings[i] = landing.State;
                         }

@@ -1,3 +1,4 @@
+using MagnusBall.Flight;
 using System;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
@@ -50,8 +51,7 @@ namespace MagnusBall.Tests.Integration
         public void Adaptive_AtTightTolerance_MatchesRk4AtTenMicroseconds()
         {
             var method = new DormandPrince54(1e-12, 1e-12);
-            double step = 0;
-            FlightState end = method.Advance(Model(), Start(), 1.0, ref step, out int evaluations);
+            FlightState end = AdaptiveFlight.Fly(method, Model(), Start(), 1.0, out long evaluations);
             FlightState reference = Reference(1.0);
             TestContext.Out.WriteLine($"dp54 @1e-12: {evaluations} evaluations, distance to RK4@1e-5 s {Distance(end, reference):E3}");
             // 1e-9: RK4 at 1e-5 s is accurate to ~1e-13 here (error ~ C h^4), DP54 at 1e-12 to ~1e-11; 1e-9
@@ -69,8 +69,7 @@ namespace MagnusBall.Tests.Integration
             foreach (double tolerance in new[] { 1e-4, 1e-6, 1e-8, 1e-10 })
             {
                 var method = new DormandPrince54(tolerance, tolerance);
-                double step = 0;
-                FlightState end = method.Advance(Model(), Start(), 1.0, ref step, out int evaluations);
+                FlightState end = AdaptiveFlight.Fly(method, Model(), Start(), 1.0, out long evaluations);
                 double error = Distance(end, reference);
                 TestContext.Out.WriteLine($"tol {tolerance:E0}: error {error:E3} with {evaluations} evaluations");
                 // Each hundredfold tighter tolerance must buy at least a tenfold smaller error (the controller
@@ -129,15 +128,14 @@ namespace MagnusBall.Tests.Integration
         {
             FlightModel model = Model();
             var method = new DormandPrince54(1e-9, 1e-9);
-            double step = 0;
-            method.Advance(model, Start(), 0.5, ref step, out _); // warm up
+            var flight = new FlightStepper(model, RungeKutta4.Instance);
+            AdaptiveFlight.Fly(flight, method, Start(), 0.5); // warm up
 
             long before = GC.GetAllocatedBytesForCurrentThread();
             double sum = 0;
             for (int i = 0; i < 200; i++)
             {
-                step = 0;
-                FlightState end = method.Advance(model, Start(), 1.0, ref step, out _);
+                FlightState end = AdaptiveFlight.Fly(flight, method, Start(), 1.0);
                 FlightState start = Start();
                 StateDerivative k1 = model.Derivative(start);
                 method.TryStep(model, start, k1, 0.01, out DormandPrince54Step attempt);
@@ -150,14 +148,15 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
-        public void Advance_CountsEvaluations()
+        public void AdaptiveSteps_InTheCore_CountEveryRealEvaluation()
         {
-            var method = new DormandPrince54(1e-6, 1e-9);
-            double step = 0.01;
-            method.Advance(Model(), Start(), 0.1, ref step, out int evaluations);
-            // 1 start derivative + 6 per attempted step; never the initial-step heuristic when a step is given.
-            Assert.That((evaluations - 1) % 6, Is.EqualTo(0));
-            Assert.That(evaluations, Is.GreaterThanOrEqualTo(1 + 6));
+            FlightModel model = Model();
+            var calls = new EvaluationCount();
+            model.CountedEvaluations = calls;
+            var flight = new FlightStepper(model, RungeKutta4.Instance);
+            AdaptiveFlight.Fly(flight, new DormandPrince54(1e-6, 1e-9), Start(), 1.0);
+            Assert.That(flight.DerivativeEvaluations, Is.EqualTo(calls.Calls), "the counter counts calls of the model itself");
+            Assert.That(calls.Calls, Is.GreaterThan(7));
         }
 
         [Test]
@@ -175,10 +174,11 @@ namespace MagnusBall.Tests.Integration
             Assert.That(() => DormandPrince54.Instance.Step(model, start, k1, double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
             Assert.That(() => DormandPrince54.Instance.TryStep(model, nanState, k1, 0.01, out _), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("state"));
             Assert.That(() => DormandPrince54.Instance.TryStep(null!, start, k1, 0.01, out _), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("model"));
-            double negative = -1;
-            Assert.That(() => DormandPrince54.Instance.Advance(model, start, 1, ref negative, out _), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
-            double zero = 0;
-            Assert.That(() => DormandPrince54.Instance.Advance(model, start, double.PositiveInfinity, ref zero, out _), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));
+            var flight = new FlightStepper(model, RungeKutta4.Instance);
+            flight.Reset(start);
+            Assert.That(() => flight.TryStepAdaptive(DormandPrince54.Instance, -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("maxStep"));
+            Assert.That(() => flight.TryStepAdaptive(DormandPrince54.Instance, double.PositiveInfinity), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("maxStep"));
+            Assert.That(() => flight.TryStepAdaptive(null!, 1), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("method"));
             Assert.That(() => DormandPrince54.Instance.InitialStep(model, start, k1, -1), Throws.InstanceOf<ArgumentOutOfRangeException>());
             DormandPrince54.Instance.TryStep(model, start, k1, 0.01, out DormandPrince54Step ok);
             Assert.That(() => ok.Interpolate(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("time"));

@@ -2,8 +2,7 @@ using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
-using MagnusBall.Queries;
-using Plane = MagnusBall.Queries.Plane;
+using MagnusBall.Integration;
 
 namespace MagnusBall.Batch
 {
@@ -18,7 +17,7 @@ namespace MagnusBall.Batch
     /// <see cref="Integration.RungeKutta4"/> (lanes of a vector compute exactly what the scalar code computes: IEEE
     /// add, multiply, divide and square root, no fused operations), and the landing located on the step's cubic
     /// Hermite by the same <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>
-    /// as a <see cref="FlightStepper"/> with a ground event. A ball that lands stops there: its state becomes the
+    /// as a <see cref="Flight.FlightStepper"/> with a ground event. A ball that lands stops there: its state becomes the
     /// landing state and later steps leave it alone.</para>
     /// <para>Vectorised laws: drag none, constant or Stepanek; lift none, constant, linear in spin or Stepanek; spin
     /// decay none or exponential; a uniform wind. Any other model (a wind profile, other laws, a law of your own) and

@@ -57,13 +57,14 @@ namespace MagnusBall.Contact
     /// torque about the normal, so it passes through unchanged. Spin about the direction of travel
     /// (a tilted side-spin axis) moves the contact point sideways and deflects the bounce.</description></item>
     /// </list>
+    /// <para>The computation is <see cref="Impact"/>'s general law for a ball hitting a body of finite effective mass,
+    /// with the ground as an immovable body at rest (mass ratio 0): the same numbers, bit for bit, as this class gave
+    /// before that law existed.</para>
     /// <para>Energy: the tangential kinetic energy is m/2 (|Lam|^2 + alpha |u|^2)/(1 + alpha). Neither |Lam| nor
     /// |u| grows (d|u|/dq = a cos - b &lt; 0 while sliding), and e_y, e_x are at most 1, so no bounce gains energy.</para>
     /// </remarks>
     public sealed class CrossBounce : IBounceModel
     {
-        private static readonly double InverseSqrt2 = 1.0 / Math.Sqrt(2.0);
-
         /// <summary>Creates the model for a surface.</summary>
         /// <param name="surface">The surface's contact parameters; not null.</param>
         /// <exception cref="ArgumentNullException">surface is null.</exception>
@@ -95,156 +96,12 @@ namespace MagnusBall.Contact
             Require.Finite(velocity, nameof(velocity));
             Require.Finite(angularVelocity, nameof(angularVelocity));
 
+            // The ground is an immovable body at rest, so its frame is the caller's and kappa = m/M = 0: the general
+            // impact law then performs exactly the operations of Cross's bounce (tests/.../ImpactLawTests check it bit for bit).
             Vector3d n = normal.NormalizedOrZero();
-            double vn = -Vector3d.Dot(velocity, n);
-            if (!(vn > 0))
-            {
-                return new BounceOutcome(velocity, angularVelocity, BounceRegime.None, 0, 0);
-            }
-
-            double radius = ball.Radius;
-            double alpha = ball.InertiaFactor;
-            Surface surface = Surface;
-
-            Vector3d vt = velocity + n * vn;
-            Vector3d spinNormal = n * Vector3d.Dot(angularVelocity, n);
-            Vector3d omega = Vector3d.Cross(n, angularVelocity) * radius;
-            Vector3d u1 = vt + omega;
-            Vector3d lambda1 = vt - omega * alpha;
-
-            double tangentialSpeed = vt.Length;
-            double incomingAngleDegrees = Math.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
-            double ey = surface.NormalRestitutionAt(incomingAngleDegrees);
-            double normalChange = (1 + ey) * vn; // |Delta v_n| = P_n / m
-            double mu = surface.SlidingFriction;
-
-            // Normal-force offset: against the rolling direction, capped so it never outruns friction (energy)
-            // and never reverses the rolling.
-            double offset = Math.Min(surface.ForceOffsetAt(velocity.Length), (1 + alpha) * mu * radius * InverseSqrt2);
-            double lambdaLength = lambda1.Length;
-            double delta = Math.Min(offset * normalChange / radius, lambdaLength);
-            Vector3d offsetImpulse = lambdaLength > 0 ? lambda1 * (delta / lambdaLength) : Vector3d.Zero;
-            Vector3d lambda2 = lambda1 - offsetImpulse;
-
-            Vector3d u2;
-            BounceRegime regime;
-            Vector3d offsetDirection = lambdaLength > 0 ? lambda1 / lambdaLength : Vector3d.Zero;
-            double offsetRate = normalChange > 0 ? delta / normalChange : 0; // a: offset's share of the slip change per unit q
-            if (Slides(u1, offsetDirection, offsetRate, (1 + alpha) * mu, normalChange / alpha, out Vector3d slide))
-            {
-                u2 = slide;
-                regime = BounceRegime.Slide;
-            }
-            else
-            {
-                // Gripped (or was rolling without slip from the start): the slip recoils to -e_x of its incoming value.
-                u2 = u1 * -surface.TangentialRestitution;
-                regime = BounceRegime.Grip;
-            }
-
-            double inverseOnePlusAlpha = 1.0 / (1 + alpha);
-            Vector3d vt2 = (lambda2 + u2 * alpha) * inverseOnePlusAlpha;
-            Vector3d omega2 = (u2 - lambda2) * inverseOnePlusAlpha;
-            Vector3d spin2 = spinNormal - Vector3d.Cross(n, omega2) * (1.0 / radius);
-            Vector3d velocity2 = vt2 + n * (ey * vn);
+            Impact.Resolve(ball.Radius, ball.InertiaFactor, 0, n, velocity, angularVelocity, Surface.Contact,
+                out Vector3d velocity2, out Vector3d spin2, out BounceRegime regime, out double ey, out double vn);
             return new BounceOutcome(velocity2, spin2, regime, ey, vn);
-        }
-
-        /// <summary>
-        /// Follows the slip u of the contact point through the contact while it slides: with q the normal
-        /// impulse per unit (alpha m) (0 to Q = J/alpha), du/dq = a e1 - b u/|u|, where a e1 is the offset
-        /// torque's push (along the rolling direction e1) and b = (1 + alpha) mu the friction's. Returns false
-        /// when the slip reaches zero before the end (the ball grips), else the final slip.
-        /// </summary>
-        /// <remarks>
-        /// <para>When the slip is parallel to e1 (every bounce in a vertical plane) or there is no offset, the
-        /// direction does not change and u2 = u1 + Q (a e1 - b s1): Cross's equations. Otherwise the slip
-        /// turns toward e1 as it shrinks. Writing u = s (cos th, sin th) in the plane of e1 and u1, with
-        /// t = tan(th/2) = r t0 and k = b/a &gt; 1 (the cap on D makes k &gt;= sqrt 2), the ODE integrates in closed
-        /// form (worked out here): s = s0 r^(k-1) (1 + t^2)/(1 + t0^2) and
-        /// q(r) = s0/(a (1 + t0^2)) [(1 - r^(k-1))/(k-1) + t0^2 (1 - r^(k+1))/(k+1)]. The slip vanishes at r = 0,
-        /// q* = s0/(a (1 + t0^2)) [1/(k-1) + t0^2/(k+1)]; if q* &gt; Q the ball slides throughout and r at q = Q is
-        /// found by safeguarded Newton on that monotone function. Since d|u|/dq = a cos th - b &lt; 0 the slip
-        /// only ever shrinks, so a sliding bounce cannot gain energy.</para>
-        /// </remarks>
-        private static bool Slides(in Vector3d u1, in Vector3d e1, double a, double b, double q, out Vector3d u2)
-        {
-            u2 = default;
-            double s0 = u1.Length;
-            if (!(s0 > 0))
-            {
-                return false; // rolling without slip already: it grips
-            }
-
-            Vector3d s1 = u1 / s0;
-            double cosine = Vector3d.Dot(s1, e1);
-            Vector3d across = s1 - e1 * cosine;
-            double sine = across.Length;
-            if (!(a > 0) || !(b > a) || sine <= 1e-12 || 1 + cosine <= 1e-9)
-            {
-                // The direction does not turn (or the turn is below rounding): Cross's straight-line slide.
-                Vector3d straight = u1 + (e1 * a - s1 * b) * q;
-                if (Vector3d.Dot(straight, s1) > 0)
-                {
-                    u2 = straight;
-                    return true;
-                }
-
-                return false;
-            }
-
-            Vector3d e2 = across / sine;
-            double t0 = sine / (1 + cosine);
-            double t0Squared = t0 * t0;
-            double k = b / a;
-            double scale = s0 / (a * (1 + t0Squared));
-            double stopAt = scale * (1 / (k - 1) + t0Squared / (k + 1));
-            if (!(stopAt > q))
-            {
-                return false;
-            }
-
-            // Solve q(r) = Q for r in (0, 1): the impulse needed to shrink the slip to r rises from 0 at r = 1 to
-            // q* at r = 0, so g(r) = q(r) - Q falls from q* - Q > 0 at r = 0 to -Q < 0 at r = 1.
-            double lo = 0, hi = 1, r = 0.5;
-            for (int i = 0; i < 200; i++)
-            {
-                double rk1 = Math.Pow(r, k - 1);
-                double rk = rk1 * r;
-                double g = scale * ((1 - rk1) / (k - 1) + t0Squared * (1 - rk * r) / (k + 1)) - q;
-                if (g > 0)
-                {
-                    lo = r;
-                }
-                else
-                {
-                    hi = r;
-                }
-
-                if (g == 0 || hi - lo <= 1e-16)
-                {
-                    break;
-                }
-
-                double slope = -scale * (rk1 / r + t0Squared * rk);
-                double newton = slope < 0 ? r - g / slope : double.NaN;
-                double next = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
-                if (Math.Abs(next - r) <= 1e-16)
-                {
-                    r = next;
-                    break;
-                }
-
-                r = next;
-            }
-
-            double t = r * t0;
-            double tSquared = t * t;
-            double s = s0 * Math.Pow(r, k - 1) * (1 + tSquared) / (1 + t0Squared);
-            double cos2 = (1 - tSquared) / (1 + tSquared);
-            double sin2 = 2 * t / (1 + tSquared);
-            u2 = (e1 * cos2 + e2 * sin2) * s;
-            return true;
         }
 
         /// <inheritdoc />

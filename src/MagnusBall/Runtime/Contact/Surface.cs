@@ -53,7 +53,12 @@ namespace MagnusBall.Contact
             TangentialRestitution = tangentialRestitution;
             ForceOffset = forceOffset;
             ForceOffsetPerSpeed = forceOffsetPerSpeed;
+            Contact = new ContactProperties(
+                normalRestitution, slidingFriction, tangentialRestitution, forceOffset, normalRestitutionPerDegree, forceOffsetPerSpeed);
         }
+
+        /// <summary>The same parameters as a value, for <see cref="Impact.Resolve(Ball, in Vector3d, in Vector3d, in Vector3d, in ImpactBody, in ContactProperties)"/>.</summary>
+        public ContactProperties Contact { get; }
 
         /// <summary>A short name for reports.</summary>
         public string Name { get; }

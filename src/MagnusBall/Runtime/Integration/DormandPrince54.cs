@@ -20,7 +20,7 @@ namespace MagnusBall.Integration
     /// <item>Adaptively: <see cref="TryStep"/> attempts one step and reports whether its estimated error is
     /// within the tolerances, the step to try next, the end derivative (k7, so a loop pays six evaluations per
     /// accepted step) and a <see cref="DormandPrince54Step"/> with the dense output;
-    /// <see cref="Advance"/> integrates to a given time with error control. Use it for reference solutions
+    /// the flight core steps with it (FlightStepper.TryStepAdaptive), locating events on the method's own interpolant. Use it for reference solutions
     /// and offline work such as aim solving, where accuracy matters more than a fixed frame step.</item>
     /// </list>
     /// <para>The error of a step is the root mean square over the nine state components of
@@ -176,75 +176,6 @@ namespace MagnusBall.Integration
             double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : Math.Pow(0.01 / largest, 0.2);
             double h = Math.Min(100 * h0, h1);
             return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
-        }
-
-        /// <summary>
-        /// Integrates adaptively from <paramref name="state"/> over <paramref name="duration"/> seconds, with
-        /// error control, landing exactly on the end time. Allocates nothing.
-        /// </summary>
-        /// <param name="model">The flight model.</param>
-        /// <param name="state">The start state; every component finite.</param>
-        /// <param name="duration">How long to integrate, s; finite and &gt; 0.</param>
-        /// <param name="step">
-        /// In: the first step to try (s; finite and &gt; 0, or 0 to choose one with <see cref="InitialStep"/>).
-        /// Out: the step to try next, so a caller that continues keeps the controller's memory.
-        /// </param>
-        /// <param name="evaluations">Derivative evaluations spent, counting the start derivative.</param>
-        /// <returns>The state at state.Time + duration.</returns>
-        /// <exception cref="ArgumentException">
-        /// The state is not finite, the duration is out of range, or the step is negative or not finite.
-        /// </exception>
-        /// <remarks>
-        /// A step is never made shorter than 1e-12 of the duration (or of 1 s, if larger): if the error control
-        /// asks for less, which a smooth flight model never does, that step is accepted as it is rather than
-        /// looping forever or throwing.
-        /// </remarks>
-        public FlightState Advance(FlightModel model, in FlightState state, double duration, ref double step, out int evaluations)
-        {
-            StepArguments.Check(model, state, duration);
-            if (!double.IsFinite(step) || step < 0)
-            {
-                throw new ArgumentOutOfRangeException(nameof(step), step, $"step must be 0 (choose one) or a finite step > 0 s; got {Require.Format(step)}.");
-            }
-
-            StateDerivative derivative = model.Derivative(state);
-            evaluations = 1;
-            if (step == 0)
-            {
-                step = InitialStep(model, state, derivative, duration);
-                evaluations++;
-            }
-
-            double minimumStep = 1e-12 * Math.Max(duration, 1.0);
-            double endTime = state.Time + duration;
-            FlightState current = state;
-            while (true)
-            {
-                double remaining = endTime - current.Time;
-                bool last = step >= remaining - minimumStep;
-                double h = last ? remaining : step;
-                bool accepted = TryStep(model, current, derivative, h, out DormandPrince54Step result);
-                evaluations += 6;
-                if (!accepted && h > minimumStep)
-                {
-                    step = Math.Max(result.NextStep, minimumStep);
-                    continue;
-                }
-
-                if (last)
-                {
-                    // A truncated last step says little about the next one: keep the larger of the two.
-                    step = Math.Max(step, Math.Max(result.NextStep, minimumStep));
-
-                    // Land exactly on the end time (the accumulated Time may differ from it by rounding).
-                    FlightState end = result.End;
-                    return new FlightState(end.Position, end.Velocity, end.AngularVelocity, endTime);
-                }
-
-                current = result.End;
-                derivative = result.EndDerivative;
-                step = Math.Max(result.NextStep, minimumStep);
-            }
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -53,7 +53,7 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Advances <paramref name="state"/> by <paramref name="step"/> seconds, evaluating the start derivative
         /// itself and discarding the end derivative. For one step; a loop should call
-        /// <see cref="IIntegrator.Step"/> and pass each end derivative on (or use <see cref="MagnusBall.Queries.FlightStepper"/>).
+        /// <see cref="IIntegrator.Step"/> and pass each end derivative on (as the flight core does).
         /// </summary>
         /// <param name="integrator">The method.</param>
         /// <param name="model">The flight model.</param>

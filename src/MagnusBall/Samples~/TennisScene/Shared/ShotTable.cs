@@ -67,6 +67,70 @@ namespace MagnusBall.Samples.TennisScene
             "descent angle into the first bounce; v_out, a_out, w_out: speed, rebound angle and topspin (rpm, < 0 backspin) out of it; slip: whether\n" +
             "the contact slid throughout or gripped (Cross's bounce model); 2nd bounce: the next contact point.";
 
+        /// <summary>
+        /// The swings table: each swing next to the launch it produced and where it landed. Rows start with two spaces
+        /// (so they never start with a shot's name, which the main table's rows do).
+        /// </summary>
+        /// <param name="reports">Reports of shots made by swings (<see cref="TennisShot.Swing"/> set).</param>
+        public static string FormatSwings(IEnumerable<ShotReport> reports)
+        {
+            var text = new StringBuilder();
+            text.AppendLine(string.Format(
+                CultureInfo.InvariantCulture, SwingLayout, "swing", "racket", "path", "face", "turn", "ACOR", "azim", "->", "v", "elev", "azim", "top", "side", "landing x,z", "in?"));
+            text.AppendLine(string.Format(
+                CultureInfo.InvariantCulture, SwingLayout, string.Empty, "m/s", "deg", "deg", "deg", string.Empty, "deg", string.Empty, "m/s", "deg", "deg", "rpm", "rpm", "m", string.Empty));
+            foreach (ShotReport report in reports)
+            {
+                TennisShot s = report.Shot;
+                TennisSwing? swing = s.Swing;
+                if (swing == null)
+                {
+                    continue;
+                }
+
+                RacketSwingView w = new RacketSwingView(swing);
+                text.AppendLine(string.Format(
+                    CultureInfo.InvariantCulture, SwingLayout, s.Name, F(w.Speed, "0.0"), F(w.Path, "0.0"), F(w.Face, "0.000"), F(w.Turn, "0.0"), F(w.Acor, "0.00"),
+                    F(w.Azimuth, "0.000"), "->", F(s.Speed, "0.0"), F(s.ElevationDegrees, "0.0"), F(s.AzimuthDegrees, "0.0"), F(s.TopspinRpm, "0"), F(s.SidespinRpm, "0"),
+                    report.Landed ? Point(report.Landing) : "none", report.IsIn ? "in" : report.ClearedNet ? "OUT" : "NET"));
+            }
+
+            return text.ToString();
+        }
+
+        /// <summary>What the swing table's columns mean.</summary>
+        public const string SwingLegend =
+            "racket: racket speed at the impact point; path: its elevation (+ low to high); face: the face normal's tilt (+ open); turn: the face's\n" +
+            "azimuth from the path; ACOR: apparent COR at the impact point (0.45 string centre); azim: the swing's azimuth, + toward the hitter's right\n" +
+            "(the court launch frame's side). The launch columns are the impact law's result (MagnusBall.Contact.Impact), in the main table's units.";
+
+        private const string SwingLayout = "  {0,-16} {1,6} {2,6} {3,7} {4,5} {5,4} {6,7} {7,2} {8,5} {9,5} {10,5} {11,5} {12,5} {13,13} {14,-3}";
+
+        private readonly struct RacketSwingView
+        {
+            public RacketSwingView(TennisSwing swing)
+            {
+                Speed = swing.Swing.Speed;
+                Path = swing.Swing.PathElevationDegrees;
+                Face = swing.Swing.FaceTiltDegrees;
+                Turn = swing.Swing.FaceTurnDegrees;
+                Acor = swing.Swing.ApparentRestitution;
+                Azimuth = swing.Swing.AzimuthDegrees;
+            }
+
+            public double Speed { get; }
+
+            public double Path { get; }
+
+            public double Face { get; }
+
+            public double Turn { get; }
+
+            public double Acor { get; }
+
+            public double Azimuth { get; }
+        }
+
         private static string F(double value, string format) => value.ToString(format, CultureInfo.InvariantCulture);
 
         private static string Point(in Vector3d p) => string.Format(CultureInfo.InvariantCulture, "{0,6:F2},{1,6:F2}", p.X, p.Z);

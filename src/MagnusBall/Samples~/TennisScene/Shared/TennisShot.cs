@@ -59,6 +59,40 @@ namespace MagnusBall.Samples.TennisScene
             Target = target;
         }
 
+        private TennisShot(string name, Vector3d start, Vector3d velocity, Vector3d angularVelocity, TargetArea target, TennisSwing? swing)
+            : this(
+                name, start, velocity.Length, ElevationOf(velocity), AzimuthOf(velocity),
+                Spin.ToRpm(Vector3d.Dot(angularVelocity, TopspinAxis(velocity))), Spin.ToRpm(Vector3d.Dot(angularVelocity, SidespinAxis(velocity))), target)
+        {
+            _velocity = velocity;
+            _angularVelocity = angularVelocity;
+            Swing = swing;
+        }
+
+        private readonly Vector3d? _velocity;
+        private readonly Vector3d? _angularVelocity;
+
+        /// <summary>
+        /// A shot launched with exactly this velocity and angular velocity (for example the launch a racket swing produced,
+        /// see <see cref="TennisSwing"/>). Speed, angles and the topspin and sidespin components are derived for the table;
+        /// the angular velocity is kept as given (including any part about the direction of flight).
+        /// </summary>
+        /// <param name="name">The shot's name.</param>
+        /// <param name="start">Where the ball's centre is when hit, m.</param>
+        /// <param name="velocity">Launch velocity, m/s; finite, not zero, not vertical.</param>
+        /// <param name="angularVelocity">Launch angular velocity, rad/s; finite.</param>
+        /// <param name="target">Where the shot must land to be good.</param>
+        /// <param name="swing">The swing that produced the launch, or null.</param>
+        /// <exception cref="ArgumentException">A value is out of range or not finite.</exception>
+        public static TennisShot FromLaunch(string name, Vector3d start, Vector3d velocity, Vector3d angularVelocity, TargetArea target, TennisSwing? swing = null)
+        {
+            RequireFinite(angularVelocity.X, "angularVelocity"); RequireFinite(angularVelocity.Y, "angularVelocity"); RequireFinite(angularVelocity.Z, "angularVelocity");
+            return new TennisShot(name, start, velocity, angularVelocity, target, swing);
+        }
+
+        /// <summary>The racket swing this shot was made by, or null for a shot defined by its launch.</summary>
+        public TennisSwing? Swing { get; }
+
         /// <summary>The shot's name.</summary>
         public string Name { get; }
 
@@ -88,6 +122,11 @@ namespace MagnusBall.Samples.TennisScene
         {
             get
             {
+                if (_velocity.HasValue)
+                {
+                    return _velocity.Value;
+                }
+
                 double e = ElevationDegrees * Math.PI / 180, a = AzimuthDegrees * Math.PI / 180;
                 return TennisCourt.Downrange * (Speed * Math.Cos(e) * Math.Cos(a))
                     + TennisCourt.Left * (Speed * Math.Cos(e) * Math.Sin(a))
@@ -96,7 +135,7 @@ namespace MagnusBall.Samples.TennisScene
         }
 
         /// <summary>The launch angular velocity, rad/s, built by effect (see the class remarks).</summary>
-        public Vector3d AngularVelocity => SpinFor(Velocity, TopspinRpm, SidespinRpm);
+        public Vector3d AngularVelocity => _angularVelocity ?? SpinFor(Velocity, TopspinRpm, SidespinRpm);
 
         /// <summary>The launch state at time 0.</summary>
         public FlightState Launch() => new FlightState(Start, Velocity, AngularVelocity);
@@ -137,6 +176,22 @@ namespace MagnusBall.Samples.TennisScene
             }
 
             return spin;
+        }
+
+        private static double ElevationOf(Vector3d v) =>
+            Math.Atan2(Vector3d.Dot(v, TennisCourt.Up), Math.Sqrt(Math.Pow(Vector3d.Dot(v, TennisCourt.Downrange), 2) + Math.Pow(Vector3d.Dot(v, TennisCourt.Left), 2))) * (180 / Math.PI);
+
+        private static double AzimuthOf(Vector3d v) =>
+            Math.Atan2(Vector3d.Dot(v, TennisCourt.Left), Vector3d.Dot(v, TennisCourt.Downrange)) * (180 / Math.PI);
+
+        // The axes SpinFor uses: topspin normalize(v x -up), sidespin toward Left normalize(v x left-across-v).
+        private static Vector3d TopspinAxis(Vector3d v) => Vector3d.Cross(v, -TennisCourt.Up).NormalizedOrZero();
+
+        private static Vector3d SidespinAxis(Vector3d v)
+        {
+            Vector3d u = v.NormalizedOrZero();
+            Vector3d across = TennisCourt.Left - u * Vector3d.Dot(TennisCourt.Left, u);
+            return Vector3d.Cross(u, across.NormalizedOrZero()).NormalizedOrZero();
         }
 
         private static void RequireFinite(double value, string name)

@@ -1,0 +1,136 @@
+using System;
+using MagnusBall.Queries;
+
+namespace MagnusBall.Contact.Swings
+{
+    /// <summary>
+    /// What a swing did to the ball: the impact (<see cref="ImpactOutcome"/>) described in a launch frame, as a
+    /// player, a launch monitor or an aim solver describes a launch: speed, elevation, azimuth and the spin by effect.
+    /// </summary>
+    public readonly struct SwingLaunch
+    {
+        /// <summary>Creates the description of an impact in a frame.</summary>
+        /// <param name="impact">The impact.</param>
+        /// <param name="frame">The launch frame (up, forward, side).</param>
+        public SwingLaunch(in ImpactOutcome impact, in LaunchFrame frame)
+        {
+            Impact = impact;
+            Frame = frame;
+        }
+
+        /// <summary>The impact: outgoing velocity and spin, impulse, regime.</summary>
+        public ImpactOutcome Impact { get; }
+
+        /// <summary>The frame the angles and spins are measured in.</summary>
+        public LaunchFrame Frame { get; }
+
+        /// <summary>True when the body and the ball met (the ball was approaching the face in the body's frame).</summary>
+        public bool IsHit => Impact.Regime != BounceRegime.None;
+
+        /// <summary>The launch velocity, m/s.</summary>
+        public Vector3d Velocity => Impact.Velocity;
+
+        /// <summary>The launch angular velocity, rad/s.</summary>
+        public Vector3d AngularVelocity => Impact.AngularVelocity;
+
+        /// <summary>Launch speed, m/s.</summary>
+        public double Speed => Impact.Velocity.Length;
+
+        /// <summary>Launch elevation above the frame's horizontal, rad.</summary>
+        public double ElevationRadians
+        {
+            get
+            {
+                Vector3d v = Impact.Velocity;
+                double up = Vector3d.Dot(v, Frame.Up);
+                Vector3d horizontal = v - Frame.Up * up;
+                return Math.Atan2(up, horizontal.Length);
+            }
+        }
+
+        /// <summary>Launch azimuth from the frame's forward toward its side, rad.</summary>
+        public double AzimuthRadians => Math.Atan2(Vector3d.Dot(Impact.Velocity, Frame.Side), Vector3d.Dot(Impact.Velocity, Frame.Forward));
+
+        /// <summary>Launch elevation, degrees.</summary>
+        public double ElevationDegrees => ElevationRadians * (180 / Math.PI);
+
+        /// <summary>Launch azimuth, degrees (toward <see cref="LaunchFrame.Side"/>).</summary>
+        public double AzimuthDegrees => AzimuthRadians * (180 / Math.PI);
+
+        /// <summary>Spin rate, rad/s.</summary>
+        public double SpinRate => Impact.AngularVelocity.Length;
+
+        /// <summary>Spin rate, rev/min.</summary>
+        public double SpinRpm => Spin.ToRpm(SpinRate);
+
+        /// <summary>
+        /// The spin by effect relative to the launch direction, in the aim solvers' convention
+        /// (<see cref="Queries.LaunchSpin"/>: topspin dips, negative is backspin; sidespin curves toward the frame's side;
+        /// gyro about the direction of flight). Resolving it at this launch's direction gives <see cref="AngularVelocity"/> back.
+        /// </summary>
+        public LaunchSpin LaunchSpin
+        {
+            get
+            {
+                Vector3d v = Impact.Velocity;
+                if (v.LengthSquared == 0)
+                {
+                    return LaunchSpin.None;
+                }
+
+                Vector3d w = Impact.AngularVelocity;
+                Vector3d top = new LaunchSpin(1).AngularVelocity(v, Frame);
+                Vector3d side = new LaunchSpin(0, 1).AngularVelocity(v, Frame);
+                Vector3d gyro = new LaunchSpin(0, 0, 1).AngularVelocity(v, Frame);
+                return new LaunchSpin(Vector3d.Dot(w, top), Vector3d.Dot(w, side), Vector3d.Dot(w, gyro));
+            }
+        }
+
+        /// <summary>
+        /// The spin axis's tilt, degrees, as golf launch monitors give it: atan2(sidespin, backspin), 0 for pure backspin,
+        /// positive when the ball curves toward the frame's side.
+        /// </summary>
+        public double SpinAxisDegrees
+        {
+            get
+            {
+                LaunchSpin s = LaunchSpin;
+                return Math.Atan2(s.Sidespin, -s.Topspin) * (180 / Math.PI);
+            }
+        }
+
+        /// <summary>The launch state at <paramref name="position"/>.</summary>
+        /// <param name="position">The ball's centre, m.</param>
+        /// <param name="time">The time, s.</param>
+        public FlightState LaunchState(in Vector3d position, double time = 0) => Impact.LaunchState(position, time);
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            FormattableString.Invariant($"SwingLaunch({Speed:F2} m/s, elevation {ElevationDegrees:F2} deg, azimuth {AzimuthDegrees:F2} deg, {SpinRpm:F0} rpm, {Impact.Regime})");
+    }
+
+    /// <summary>Shared checks and geometry of the swing helpers.</summary>
+    internal static class SwingGeometry
+    {
+        internal const double Degree = Math.PI / 180;
+
+        internal static void RequireFrame(in LaunchFrame frame, string name)
+        {
+            if (frame.Up.LengthSquared == 0)
+            {
+                throw new ArgumentException($"{name} must be a LaunchFrame built from an up and a forward direction; got the default (zero) frame.", name);
+            }
+        }
+
+        /// <summary>The unit vector across <paramref name="direction"/> in the plane of it and up (up's part across it).</summary>
+        internal static Vector3d UpAcross(in LaunchFrame frame, in Vector3d direction)
+        {
+            Vector3d u = frame.Up - direction * Vector3d.Dot(frame.Up, direction);
+            return u.LengthSquared > 1e-24 ? u.NormalizedOrZero() : -frame.Forward;
+        }
+
+        /// <summary>The unit vector across <paramref name="direction"/> and up, toward the frame's side.</summary>
+        internal static Vector3d SideAcross(in LaunchFrame frame, in Vector3d direction) =>
+            Vector3d.Cross(frame.Up, direction).NormalizedOrZero() is Vector3d s && s.LengthSquared > 0 ? s : frame.Side;
+    }
+}
