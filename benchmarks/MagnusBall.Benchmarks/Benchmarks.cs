@@ -64,8 +64,8 @@ namespace MagnusBall.Benchmarks
             StateDerivative derivative = model.Derivative(state);
             for (int i = 0; i < Steps; i++)
             {
-                state = integrator.Step(model, state, derivative, 1.0 / 240);
-                derivative = model.Derivative(state);
+                state = integrator.Step(model, state, derivative, 1.0 / 240, out StateDerivative end, out _);
+                derivative = end;
             }
 
             return state.Position.X;
@@ -107,8 +107,8 @@ namespace MagnusBall.Benchmarks
             StateDerivative derivative = model.Derivative(state);
             for (int i = 0; i < Steps; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, derivative, 1.0 / 240);
-                derivative = model.Derivative(state);
+                state = RungeKutta4.Instance.Step(model, state, derivative, 1.0 / 240, out StateDerivative end, out _);
+                derivative = end;
             }
 
             return state.Position.X;
@@ -278,9 +278,8 @@ namespace MagnusBall.Benchmarks
             {
                 for (int i = from; i < to; i++)
                 {
-                    FlightState next = integrator.Step(model, states[i], derivatives[i], 1.0 / 240);
-                    states[i] = next;
-                    derivatives[i] = model.Derivative(next);
+                    states[i] = integrator.Step(model, states[i], derivatives[i], 1.0 / 240, out StateDerivative end, out _);
+                    derivatives[i] = end;
                 }
             }
         }

@@ -6,7 +6,8 @@ namespace MagnusBall.Benchmarks
 {
     /// <summary>
     /// Entry point. With no mode or a BenchmarkDotNet argument (--filter ...), runs the benchmarks; otherwise one of the
-    /// report modes: "extremes" (full matrix), "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run).
+    /// report modes: "ratios" (issue 11's targets in one short run; optional rounds and seconds per workload), "extremes" (full matrix),
+    /// "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run).
     /// </summary>
     public static class Program
     {
@@ -21,6 +22,11 @@ namespace MagnusBall.Benchmarks
                 case "extremes-quick":
                     Console.WriteLine(ExtremesReport.Matrix(quick: true));
                     return 0;
+                case "ratios":
+                case "--ratios":
+                    return Ratios.Run(
+                        args.Length > 1 ? int.Parse(args[1], System.Globalization.CultureInfo.InvariantCulture) : 5,
+                        args.Length > 2 ? double.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture) : 0.25);
                 case "quick-timing":
                     QuickTiming.Run();
                     return 0;

@@ -39,6 +39,7 @@ namespace MagnusBall
         private readonly bool _hasAero;
         private readonly bool _windVaries; // a wind profile: the wind depends on the height
         private readonly Vector3d _wind;   // the uniform wind (read once here, not per evaluation)
+        private readonly FlightKernel _kernel; // the ODE specialised for these laws (picked once, here)
 
         /// <summary>Creates a flight model.</summary>
         /// <param name="ball">The ball (mass, radius, inertia).</param>
@@ -76,6 +77,7 @@ namespace MagnusBall
             _hasAero = (drag != null || lift != null) && air.Density > 0;
             _windVaries = air.WindProfile != null && Up.LengthSquared > 0;
             _wind = air.Wind;
+            _kernel = FlightKernelFactory.Create(this);
         }
 
         /// <summary>The ball.</summary>
@@ -108,10 +110,14 @@ namespace MagnusBall
         public double AerodynamicFactor => _dragFactor;
 
         /// <summary>
-        /// Test hook: when set, every call of <see cref="Derivative"/> adds one to it, so tests count real evaluations of
+        /// Test hook: when set, every evaluation of the model (a call of <see cref="Derivative"/> or one inside a kernel step) adds one to it, so tests count real evaluations of
         /// the model instead of trusting a counter's formula. Null (no cost but one check) in every shipped use.
         /// </summary>
-        internal EvaluationCount? CountedEvaluations { get; set; }
+        internal EvaluationCount? CountedEvaluations
+        {
+            get => _kernel.Counter;
+            set => _kernel.Counter = value; // the kernel counts: every evaluation, through Derivative or a kernel step
+        }
 
         /// <summary>True when the air exerts a force (density &gt; 0 and a drag or lift law): the one place this is decided.</summary>
         internal bool HasAerodynamics => _hasAero;
@@ -165,9 +171,25 @@ namespace MagnusBall
         /// the plain formulas (bit for bit as before); only a non-finite result falls back to the scaled path.
         /// </remarks>
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
-        public StateDerivative Derivative(in FlightState state)
+        /// <remarks>
+        /// Runs through a kernel specialised for this model's laws when the model is built: each built-in law is a
+        /// struct the JIT inlines, and only the inputs some law reads are computed (no Reynolds number unless a law
+        /// reads it). Laws of your own (any <see cref="IDragModel"/>, <see cref="ILiftModel"/> or
+        /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
+        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit.
+        /// </remarks>
+        public StateDerivative Derivative(in FlightState state) => _kernel.Derivative(state);
+
+        /// <summary>The kernel this model's evaluations and the built-in fixed steps run through.</summary>
+        internal FlightKernel Kernel => _kernel;
+
+        /// <summary>
+        /// The general formula, every law called through its interface: what <see cref="Derivative"/> computes, bit for
+        /// bit (the tests hold the kernel to it).
+        /// </summary>
+        /// <param name="state">The state.</param>
+        internal StateDerivative GeneralDerivative(in FlightState state)
         {
-            CountedEvaluations?.Add();
             Vector3d acceleration = Gravity;
             Vector3d spinAcceleration = default;
             Vector3d w = state.AngularVelocity;

@@ -88,6 +88,25 @@ namespace MagnusBall.Aerodynamics
             return double.IsNaN(ratio) && !double.IsNaN(spin) && !double.IsNaN(speed) ? 1 : ratio;
         }
 
+        /// <summary>
+        /// The flight kernel's constructor: every field given, already computed (by the same expressions as the public
+        /// constructor), or 0 where no law of the model reads it.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal AeroConditions(
+            double speed, double spinRate, double transverseSpinRate, double radius, double density,
+            double spinParameter, double transverseSpinParameter, double reynoldsNumber)
+        {
+            Speed = speed;
+            SpinRate = spinRate;
+            TransverseSpinRate = transverseSpinRate;
+            Radius = radius;
+            Density = density;
+            SpinParameter = spinParameter;
+            TransverseSpinParameter = transverseSpinParameter;
+            ReynoldsNumber = reynoldsNumber;
+        }
+
         /// <summary>Spin rate in revolutions per minute, |w| 60 / (2 pi).</summary>
         public double SpinRpm => SpinRate * (60.0 / (2.0 * System.Math.PI));
     }

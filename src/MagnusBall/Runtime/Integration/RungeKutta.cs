@@ -24,16 +24,8 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            StateDerivative k2 = model.Derivative(state.Advance(derivative, step));
-            double half = 0.5 * step;
-            var end = new FlightState(
-                state.Position + (derivative.Velocity + k2.Velocity) * half,
-                state.Velocity + (derivative.Acceleration + k2.Acceleration) * half,
-                state.AngularVelocity + (derivative.AngularAcceleration + k2.AngularAcceleration) * half,
-                state.Time + step);
-            endDerivative = model.Derivative(end);
             evaluations = 2;
-            return end;
+            return model.Kernel.Heun(state, derivative, step, out endDerivative);
         }
     }
 
@@ -61,20 +53,8 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            double half = 0.5 * step;
-            StateDerivative k2 = model.Derivative(state.Advance(derivative, half));
-            StateDerivative k3 = model.Derivative(state.Advance(k2, half));
-            StateDerivative k4 = model.Derivative(state.Advance(k3, step));
-            double sixth = step / 6.0;
-            var end = new FlightState(
-                state.Position + (derivative.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
-                state.Velocity + (derivative.Acceleration + 2.0 * (k2.Acceleration + k3.Acceleration) + k4.Acceleration) * sixth,
-                state.AngularVelocity +
-                (derivative.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
-                state.Time + step);
-            endDerivative = model.Derivative(end);
             evaluations = 4;
-            return end;
+            return model.Kernel.RungeKutta4(state, derivative, step, out endDerivative);
         }
     }
 }

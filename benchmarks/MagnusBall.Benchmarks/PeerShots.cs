@@ -1,0 +1,45 @@
+using BenchmarkDotNet.Attributes;
+
+namespace MagnusBall.Benchmarks
+{
+    /// <summary>
+    /// Issue 11's targets as BenchmarkDotNet ratios against one thesis-style 2 s shot (480 RK4 steps, the baseline, one
+    /// call = one shot): MagnusBall's RK4 over the same 480 steps, 2 s predicted shots with events, the aim solves, 1,000 and
+    /// 10,000 balls in a <c>BallBatch</c> through one 60 FPS frame, and 1,000 FixedStepDrivers one at a time through one frame.
+    /// </summary>
+    [Config(typeof(ShortConfig))]
+    public class PeerShots
+    {
+        private readonly Workloads _work = new Workloads();
+
+        [GlobalSetup]
+        public void Setup() => _work.Setup();
+
+        [Benchmark(Baseline = true, Description = "thesis-style 480-step shot")]
+        public double ThesisShot() => _work.ThesisShot();
+
+        [Benchmark(Description = "MagnusBall RK4 480 steps, thesis ODE")]
+        public double Rk4Thesis() => _work.Rk4ThesisShot();
+
+        [Benchmark(Description = "MagnusBall RK4 480 steps, full tennis model")]
+        public double Rk4Full() => _work.Rk4FullShot();
+
+        [Benchmark(Description = "predict 2 s with events, thesis model")]
+        public double PredictThesis() => _work.PredictThesis();
+
+        [Benchmark(Description = "predict 2 s with events, full tennis model")]
+        public double PredictFull() => _work.PredictFull();
+
+        [Benchmark(Description = "BallBatch 1,000 balls, one 60 FPS frame")]
+        public double Batch1000() => _work.Batch1000();
+
+        [Benchmark(Description = "BallBatch 10,000 balls, one 60 FPS frame")]
+        public double Batch10000() => _work.Batch10000();
+
+        [Benchmark(Description = "1,000 FixedStepDrivers one at a time, one frame")]
+        public double Drivers1000() => _work.Drivers1000();
+
+        [Benchmark(Description = "AimSolver.AnglesToReach (corner)")]
+        public double AimCorner() => _work.AimCorner();
+    }
+}

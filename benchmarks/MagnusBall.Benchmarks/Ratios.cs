@@ -1,0 +1,161 @@
+using System;
+using System.Diagnostics;
+using System.Globalization;
+using System.Numerics;
+using System.Runtime.InteropServices;
+
+namespace MagnusBall.Benchmarks
+{
+    /// <summary>
+    /// Mode "ratios": issue 11's headline ratios in one short run (about 10-20 s), every workload timed in the same process,
+    /// interleaved round by round, in CPU time of the process, the best round of each kept (on a shared machine the
+    /// fastest round is the least disturbed one). A quick check, not BenchmarkDotNet: the tables in docs/performance.md say which is which. Also
+    /// built for Mono (benchmarks/MagnusBall.Ratios.Mono, docs/performance.md).
+    /// </summary>
+    public static class Ratios
+    {
+        private delegate double Work();
+
+        /// <summary>Runs the comparison and prints it; returns 0.</summary>
+        /// <param name="rounds">Rounds (each times every workload for about <paramref name="secondsPerWorkload"/> s).</param>
+        /// <param name="secondsPerWorkload">Time per workload and round, s.</param>
+        public static int Run(int rounds = 5, double secondsPerWorkload = 0.25)
+        {
+            var work = new Workloads();
+            work.Setup();
+            bool mono = Type.GetType("Mono.Runtime") != null;
+            string runtime = mono ? "Mono " + MonoVersion() : RuntimeInformation.FrameworkDescription;
+
+            var items = new (string Name, Work Body)[]
+            {
+                ("thesis-style 480-step shot", work.ThesisShot),
+                ("RK4 480 steps, thesis ODE", work.Rk4ThesisShot),
+                ("RK4 480 steps, full tennis", work.Rk4FullShot),
+                ("predict 2 s + events, thesis", work.PredictThesis),
+                ("predict 2 s + events, full", work.PredictFull),
+                ("aim MinimumElevationToClear", work.AimClearNet),
+                ("aim ElevationToReach", work.AimBaseline),
+                ("aim AnglesToReach", work.AimCorner),
+                ("aim SpeedToReach", work.AimSpeed),
+                ("BallBatch 1,000, one frame", work.Batch1000),
+                ("BallBatch 10,000, one frame", work.Batch10000),
+                ("1,000 drivers (stable-rk4), frame", work.Drivers1000),
+                ("1,000 drivers (rk4), frame", work.Drivers1000Rk4),
+                ("RK4 480 steps, thesis, internal run", work.Rk4ThesisRun),
+            };
+
+            var best = new double[items.Length];
+            var bytes = new long[items.Length];
+            var missing = new string?[items.Length];
+            for (int i = 0; i < items.Length; i++)
+            {
+                best[i] = double.MaxValue;
+                try
+                {
+                    items[i].Body(); // warm-up (JIT, statics)
+                    items[i].Body();
+                    long before = GC.GetAllocatedBytesForCurrentThread();
+                    items[i].Body();
+                    bytes[i] = GC.GetAllocatedBytesForCurrentThread() - before;
+                }
+                catch (MissingMethodException e)
+                {
+                    // Mono 6.8's netstandard 2.1 facade lacks some Span members the library's event code calls.
+                    missing[i] = e.Message;
+                    best[i] = double.NaN;
+                }
+            }
+
+            for (int round = 0; round < rounds; round++)
+            {
+                for (int i = 0; i < items.Length; i++)
+                {
+                    if (missing[i] == null)
+                    {
+                        best[i] = Math.Min(best[i], Time(items[i].Body, secondsPerWorkload));
+                    }
+                }
+            }
+
+            double shot = best[0];
+            Console.WriteLine($"MagnusBall ratios: {runtime}, {RuntimeInformation.ProcessArchitecture}, {Environment.ProcessorCount} cores; " +
+                $"Vector<double>: {Vector<double>.Count} lanes, accelerated {Vector.IsHardwareAccelerated}; best of {rounds} rounds of {secondsPerWorkload:0.##} s.");
+            Console.WriteLine("unit U = one thesis-style 480-step shot. The machine may be shared: compare ratios, not times.");
+            Console.WriteLine();
+            Console.WriteLine($"{"workload",-36} {"time",12} {"x U",9} {"bytes/call",11}");
+            for (int i = 0; i < items.Length; i++)
+            {
+                Console.WriteLine(missing[i] != null
+                    ? $"{items[i].Name,-36} does not run here: {missing[i]}"
+                    : $"{items[i].Name,-36} {Format(best[i]),12} {best[i] / shot,9:0.000} {bytes[i],11}");
+            }
+
+            double rk4Limit = mono ? 0.8 : 0.6;
+            Console.WriteLine();
+            Console.WriteLine("targets (issue 11):");
+            Report($"RK4 on the thesis ODE <= {rk4Limit:0.0} x thesis-style", best[1] / shot, rk4Limit);
+            Report($"  (the same through the kernel's internal multi-step call)", best[13] / shot, rk4Limit);
+            Report("predicted 2 s shot + events, thesis model <= 1 U", best[3] / shot, 1.0);
+            Report("predicted 2 s shot + events, full model <= 1.6 U", best[4] / shot, 1.6);
+            double worstAim = Math.Max(Math.Max(best[5], best[6]), Math.Max(best[7], best[8]));
+            Report("every aim solve <= 1 U (worst)", worstAim / shot, 1.0);
+            Report("every aim solve < 0.1 ms (worst, ms)", worstAim * 1e3, 0.1);
+            Report("10,000 balls per 60 FPS frame < 3 ms (ms)", best[10] * 1e3, 3.0);
+            Report("1,000 drivers one at a time <= 8 U (default stable-rk4)", best[11] / shot, 8.0);
+            Report("1,000 drivers one at a time <= 8 U (rk4)", best[12] / shot, 8.0);
+            long library = 0;
+            for (int i = 1; i < items.Length; i++)
+            {
+                library = Math.Max(library, bytes[i]);
+            }
+
+            Report("0 bytes per step, shot, aim solve, batch frame (most bytes in one call)", library, 0);
+            return 0;
+        }
+
+        private static void Report(string target, double value, double limit) =>
+            Console.WriteLine(double.IsNaN(value) ? $"  n/a    {target}: a workload does not run on this runtime" :
+$"  {(value <= limit ? "met   " : "MISSED")} {target}: {value.ToString("0.000", CultureInfo.InvariantCulture)}" +
+                (value <= limit ? string.Empty : $" ({value / Math.Max(limit, 1e-300):0.0}x the limit)"));
+
+        // CPU seconds per call (this process's processor time, not the wall clock: on a shared machine the wall clock
+        // counts the other processes' turns too), calling until the time is spent.
+        private static double Time(Work body, double seconds)
+        {
+            double sink = 0;
+            long calls = 0;
+            Process process = Process.GetCurrentProcess();
+            TimeSpan start = process.TotalProcessorTime;
+            double spent;
+            do
+            {
+                for (int i = 0; i < 8; i++)
+                {
+                    sink += body();
+                }
+
+                calls += 8;
+                process.Refresh();
+                spent = (process.TotalProcessorTime - start).TotalSeconds;
+            }
+            while (spent < seconds);
+            double perCall = spent / calls;
+            if (double.IsNaN(sink))
+            {
+                Console.WriteLine("(NaN result)");
+            }
+
+            return perCall;
+        }
+
+        private static string Format(double seconds) =>
+            seconds >= 1e-3 ? $"{seconds * 1e3:0.000} ms" : $"{seconds * 1e6:0.0} us";
+
+        private static string MonoVersion()
+        {
+            Type? type = Type.GetType("Mono.Runtime");
+            object? name = type?.GetMethod("GetDisplayName", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Static)?.Invoke(null, null);
+            return name?.ToString() ?? "?";
+        }
+    }
+}

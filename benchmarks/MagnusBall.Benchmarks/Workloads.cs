@@ -1,0 +1,173 @@
+using System;
+using MagnusBall.Batch;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
+using MagnusBall.Stepping;
+
+namespace MagnusBall.Benchmarks
+{
+    /// <summary>
+    /// The workloads issue 11's targets compare, shared by the BenchmarkDotNet class <see cref="PeerShots"/> and the short
+    /// "ratios" mode (which also runs under Mono, see docs/performance.md). Each method is one call's work.
+    /// </summary>
+    internal sealed class Workloads
+    {
+        public const int ShotSteps = 480;
+        public const double Step = 1.0 / 240;
+
+        private ThesisStyleBall _thesis = null!;
+        private double[] _thesisStart = null!;
+        private FlightModel _thesisModel = null!;
+        private FlightModel _fullModel = null!;
+        private FlightState _start;
+        private TrajectoryPredictor _predictThesis = null!;
+        private TrajectoryPredictor _predictFull = null!;
+        private FlightState[] _samples = null!;
+        private FlightEvent[] _events = null!;
+        private BallBatch _batch1000 = null!;
+        private BallBatch _batch10000 = null!;
+        private FixedStepDriver[] _drivers = null!;
+        private FixedStepDriver[] _driversRk4 = null!;
+        private AimSolver _solver = null!;
+        private LaunchSpin _spin;
+        private Plane _net;
+
+        public void Setup()
+        {
+            _thesisModel = Scenarios.ThesisTennis();
+            _fullModel = Scenarios.FullTennis();
+            _start = Scenarios.TennisDrive();
+            Vector3d w = _start.AngularVelocity, v = _start.Velocity, p = _start.Position;
+            _thesisStart = new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z };
+            _thesis = new ThesisStyleBall(Ball.Tennis.Mass, Ball.Tennis.Radius, 1.21, 0.55, 0.175, Gravity.Standard, _thesisStart, w.X, w.Y, w.Z);
+            _predictThesis = new TrajectoryPredictor(_thesisModel, RungeKutta4.Instance, Step);
+            _predictFull = new TrajectoryPredictor(_fullModel, RungeKutta4.Instance, Step);
+            _samples = new FlightState[600];
+            _events = new FlightEvent[16];
+
+            // The crowds fly over a ground 1 km down, so each call costs the same (no ball lands during a run): random
+            // drives as the Frame benchmark's (15-45 m/s, -5 to 15 degrees, -1000 to 2000 rpm topspin, sidespin).
+            var deepGround = new Plane(new Vector3d(0, 0, -1000), Vector3d.UnitZ);
+            _batch1000 = Crowd(1000, deepGround);
+            _batch10000 = Crowd(10_000, deepGround);
+            var random = new Random(1);
+            var events = new FlightEventSet(Scenarios.Up, deepGround);
+            _drivers = new FixedStepDriver[1000];
+            _driversRk4 = new FixedStepDriver[1000];
+            for (int i = 0; i < _drivers.Length; i++)
+            {
+                FlightState start = RandomDrive(random);
+                _drivers[i] = new FixedStepDriver(_fullModel, Step, start, events);
+                _driversRk4[i] = new FixedStepDriver(_fullModel, RungeKutta4.Instance, Step, start, events);
+            }
+
+            FlightModel model = _fullModel;
+            _solver = new AimSolver(model, RungeKutta4.Instance, Step, Plane.Ground(model));
+            _spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
+            _net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+        }
+
+        private BallBatch Crowd(int count, Plane ground)
+        {
+            var random = new Random(1);
+            var batch = new BallBatch(_fullModel, count, ground);
+            for (int i = 0; i < count; i++)
+            {
+                batch.Add(RandomDrive(random));
+            }
+
+            return batch;
+        }
+
+        private static FlightState RandomDrive(Random random) =>
+            Scenarios.Launch(1 + random.NextDouble(), 15 + 30 * random.NextDouble(), 20 * random.NextDouble() - 5,
+                Spin.FromRpm(3000 * random.NextDouble() - 1000), Spin.FromRpm(1000 * random.NextDouble() - 500));
+
+        /// <summary>The thesis-style code: one 2 s shot, 480 RK4 steps of 1/240 s, no events (the unit of the targets).</summary>
+        public double ThesisShot()
+        {
+            _thesis.Reset(_thesisStart);
+            for (int i = 0; i < ShotSteps; i++)
+            {
+                _thesis.Update(Step);
+            }
+
+            return _thesis.State[0];
+        }
+
+        /// <summary>MagnusBall's RK4 through IIntegrator.Step, 480 steps on the thesis's ODE, as a loop calls it.</summary>
+        public double Rk4ThesisShot() => Rk4Shot(_thesisModel);
+
+        /// <summary>The same on the full tennis model.</summary>
+        public double Rk4FullShot() => Rk4Shot(_fullModel);
+
+        /// <summary>The 480 steps on the thesis's ODE through the kernel's internal multi-step call (no per-step dispatch or checks).</summary>
+        public double Rk4ThesisRun()
+        {
+            StateDerivative derivative = _thesisModel.Derivative(_start);
+            return _thesisModel.Kernel.RungeKutta4Steps(_start, ref derivative, Step, ShotSteps).Position.X;
+        }
+
+        private double Rk4Shot(FlightModel model)
+        {
+            FlightState state = _start;
+            StateDerivative derivative = model.Derivative(state);
+            for (int i = 0; i < ShotSteps; i++)
+            {
+                state = RungeKutta4.Instance.Step(model, state, derivative, Step, out StateDerivative end, out _);
+                derivative = end;
+            }
+
+            return state.Position.X;
+        }
+
+        /// <summary>A 2 s predicted shot (480 RK4 steps) with the landing and apex events, thesis model.</summary>
+        public double PredictThesis() => _predictThesis.Predict(_start, 2.0, _samples, _events, FlightEventKinds.None).EndState.Position.X;
+
+        /// <summary>The same on the full tennis model.</summary>
+        public double PredictFull() => _predictFull.Predict(_start, 2.0, _samples, _events, FlightEventKinds.None).EndState.Position.X;
+
+        /// <summary>1,000 balls (full tennis model) through one 60 FPS frame: 4 RK4 steps of 1/240 s.</summary>
+        public double Batch1000()
+        {
+            _batch1000.Advance(Step, 4);
+            return _batch1000.GetState(0).Position.X;
+        }
+
+        /// <summary>10,000 balls through one 60 FPS frame.</summary>
+        public double Batch10000()
+        {
+            _batch10000.Advance(Step, 4);
+            return _batch10000.GetState(0).Position.X;
+        }
+
+        /// <summary>1,000 balls through one 60 FPS frame, one FixedStepDriver each (its default stable RK4), one at a time.</summary>
+        public double Drivers1000() => Drive(_drivers);
+
+        /// <summary>The same with plain RK4 in each driver.</summary>
+        public double Drivers1000Rk4() => Drive(_driversRk4);
+
+        private static double Drive(FixedStepDriver[] drivers)
+        {
+            for (int i = 0; i < drivers.Length; i++)
+            {
+                drivers[i].Advance(1.0 / 60);
+            }
+
+            return drivers[0].State.Position.X;
+        }
+
+        /// <summary>AimSolver.MinimumElevationToClear (the net; Cross 2011's court, 30 m/s, 20 rev/s topspin).</summary>
+        public double AimClearNet() => _solver.MinimumElevationToClear(new Vector3d(0, 0, 1), 30, 0, _spin, _net, 0.914).ElevationRadians;
+
+        /// <summary>AimSolver.ElevationToReach (the baseline).</summary>
+        public double AimBaseline() => _solver.ElevationToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 0, 0)).ElevationRadians;
+
+        /// <summary>AimSolver.AnglesToReach (a corner 4.1 m aside).</summary>
+        public double AimCorner() => _solver.AnglesToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 4.1, 0)).ElevationRadians;
+
+        /// <summary>AimSolver.SpeedToReach (the baseline at 8 degrees).</summary>
+        public double AimSpeed() => _solver.SpeedToReach(new Vector3d(0, 0, 1), 8 * Math.PI / 180, 0, _spin, new Vector3d(23.77, 0, 0)).Speed;
+    }
+}

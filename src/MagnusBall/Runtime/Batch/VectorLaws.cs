@@ -1,0 +1,296 @@
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using MagnusBall.Aerodynamics;
+
+namespace MagnusBall.Batch
+{
+    /// <summary>
+    /// A model's coefficient laws in vector form, for <see cref="BallBatch"/>: each lane computes exactly what
+    /// <see cref="FlightKernel{TDrag, TLift, TDecay}"/> computes for one ball (same operations, same order), so the batch
+    /// equals the single-ball path bit for bit. The law kinds are read once per call (a predictable branch).
+    /// </summary>
+    internal readonly struct VectorLaws
+    {
+        internal enum DragKind
+        {
+            None,
+            Constant,
+            Stepanek,
+        }
+
+        internal enum LiftKind
+        {
+            None,
+            Constant,
+            LinearSpin,
+            Stepanek,
+        }
+
+        internal enum DecayKind
+        {
+            None,
+            Exponential,
+        }
+
+        internal readonly bool Supported;
+        internal readonly DragKind Drag;
+        internal readonly LiftKind Lift;
+        internal readonly DecayKind Decay;
+        private readonly double _dragConstant;  // -k C_D (constant drag)
+        private readonly double _negativeFactor; // -k
+        private readonly double _factor;         // k
+        private readonly double _liftConstant;  // k C_L (constant lift) or the slope (linear lift)
+        private readonly double _decayFactor;   // -1 / tau
+        private readonly double _radius;
+        private readonly Vector3d _gravity;
+        private readonly Vector3d _wind;
+
+        private VectorLaws(
+            bool supported, DragKind drag, LiftKind lift, DecayKind decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
+        {
+            Supported = supported;
+            Drag = drag;
+            Lift = lift;
+            Decay = decay;
+            _factor = model.AerodynamicFactor;
+            _negativeFactor = -_factor;
+            _dragConstant = -_factor * dragValue;
+            _liftConstant = lift == LiftKind.Constant ? _factor * liftValue : liftValue;
+            _decayFactor = decayFactor;
+            _radius = model.Ball.Radius;
+            _gravity = model.Gravity;
+            _wind = model.Air.Wind;
+        }
+
+        internal static VectorLaws For(FlightModel model)
+        {
+            bool aero = model.Air.Density > 0;
+            bool supported = !(model.Air.WindProfile != null && model.Up.LengthSquared > 0);
+            DragKind drag = DragKind.None;
+            double dragValue = 0;
+            switch (aero ? model.Drag : null)
+            {
+                case null:
+                    break;
+                case ConstantDrag c:
+                    drag = DragKind.Constant;
+                    dragValue = c.Value;
+                    break;
+                case StepanekDrag _:
+                    drag = DragKind.Stepanek;
+                    break;
+                default:
+                    supported = false;
+                    break;
+            }
+
+            LiftKind lift = LiftKind.None;
+            double liftValue = 0;
+            switch (aero ? model.Lift : null)
+            {
+                case null:
+                    break;
+                case ConstantLift c:
+                    lift = LiftKind.Constant;
+                    liftValue = c.Value;
+                    break;
+                case LinearSpinLift l:
+                    lift = LiftKind.LinearSpin;
+                    liftValue = l.Slope;
+                    break;
+                case StepanekLift _:
+                    lift = LiftKind.Stepanek;
+                    break;
+                default:
+                    supported = false;
+                    break;
+            }
+
+            DecayKind decay = DecayKind.None;
+            double decayFactor = 0;
+            switch (model.SpinDecay)
+            {
+                case null:
+                    break;
+                case ExponentialSpinDecay e:
+                    decay = DecayKind.Exponential;
+                    decayFactor = -1.0 / e.TimeConstant;
+                    break;
+                default:
+                    supported = false;
+                    break;
+            }
+
+            return new VectorLaws(supported, drag, lift, decay, dragValue, liftValue, decayFactor, model);
+        }
+
+        /// <summary>The acceleration and spin acceleration at velocity v and spin w, lane by lane (the kernel's Rates).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal void Rates(
+            Vector<double> vx, Vector<double> vy, Vector<double> vz, Vector<double> wx, Vector<double> wy, Vector<double> wz,
+            out Vector<double> ax, out Vector<double> ay, out Vector<double> az,
+            out Vector<double> sx, out Vector<double> sy, out Vector<double> sz)
+        {
+            var gx = new Vector<double>(_gravity.X);
+            var gy = new Vector<double>(_gravity.Y);
+            var gz = new Vector<double>(_gravity.Z);
+            ax = gx;
+            ay = gy;
+            az = gz;
+            if (Decay == DecayKind.Exponential)
+            {
+                var c = new Vector<double>(_decayFactor);
+                sx = wx * c;
+                sy = wy * c;
+                sz = wz * c;
+            }
+            else
+            {
+                sx = Vector<double>.Zero;
+                sy = Vector<double>.Zero;
+                sz = Vector<double>.Zero;
+            }
+
+            if (Drag == DragKind.None && Lift == LiftKind.None)
+            {
+                return;
+            }
+
+            Vector<double> rx = vx - new Vector<double>(_wind.X), ry = vy - new Vector<double>(_wind.Y), rz = vz - new Vector<double>(_wind.Z);
+            Vector<double> speed = Vector.SquareRoot(rx * rx + ry * ry + rz * rz);
+            Vector<long> aero = Vector.GreaterThan(speed, new Vector<double>(FlightModel.MinimumAerodynamicSpeed));
+            bool needsSpinRate = Lift != LiftKind.None || Drag == DragKind.Stepanek;
+            Vector<double> spinRate = needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
+            bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || Lift == LiftKind.Stepanek;
+            Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
+
+            if (Drag != DragKind.None)
+            {
+                Vector<double> dragScale;
+                if (Drag == DragKind.Constant)
+                {
+                    dragScale = new Vector<double>(_dragConstant) * speed;
+                }
+                else
+                {
+                    Vector<double> cd = StepanekDrag(spinRate * inverse);
+                    dragScale = new Vector<double>(_negativeFactor) * cd * speed;
+                }
+
+                ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
+                ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
+                az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
+            }
+
+            if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
+            {
+                // No law reads a spin parameter: the kernel's folded form, ((rho A / 2m) C_L s / |w|) (w x v_rel).
+                Vector<double> cx = wy * rz - wz * ry, cy = wz * rx - wx * rz, cz = wx * ry - wy * rx;
+                Vector<double> liftScale = new Vector<double>(_liftConstant) * speed * (Vector<double>.One / spinRate);
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, Vector<double>.Zero);
+                ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
+                ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
+                az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
+            }
+            else if (Lift != LiftKind.None)
+            {
+                Vector<double> unit = Vector<double>.One / speed;
+                Vector<double> dx = rx * unit, dy = ry * unit, dz = rz * unit;
+                Vector<double> cx = wy * dz - wz * dy, cy = wz * dx - wx * dz, cz = wx * dy - wy * dx;
+                Vector<double> liftTimesFactor;
+                if (Lift == LiftKind.Constant)
+                {
+                    liftTimesFactor = new Vector<double>(_liftConstant);
+                }
+                else
+                {
+                    Vector<double> transverse = Vector.SquareRoot(cx * cx + cy * cy + cz * cz);
+                    Vector<double> sPerp = transverse * inverse;
+                    Vector<double> cl = Lift == LiftKind.LinearSpin ? new Vector<double>(_liftConstant) * sPerp : StepanekLift(sPerp);
+                    liftTimesFactor = new Vector<double>(_factor) * cl;
+                }
+
+                Vector<double> liftScale = liftTimesFactor * speed * speed / spinRate;
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, Vector<double>.Zero);
+                ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
+                ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
+                az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
+            }
+        }
+
+        // Aerodynamics.StepanekDrag.Evaluate, lane by lane.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> StepanekDrag(Vector<double> s)
+        {
+            Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
+            Vector<double> u = Vector<double>.One / s;
+            Vector<double> x = new Vector<double>(22.053) + new Vector<double>(4.196) * (u * u * Vector.SquareRoot(u));
+            return Vector.ConditionalSelect(positive, new Vector<double>(0.508) + PowMinusTwoFifths(x), new Vector<double>(0.508));
+        }
+
+        // Aerodynamics.StepanekLift.Evaluate, lane by lane.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> StepanekLift(Vector<double> s)
+        {
+            Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
+            return Vector.ConditionalSelect(positive, s / (new Vector<double>(2.022) * s + new Vector<double>(0.981)), Vector<double>.Zero);
+        }
+
+        /// <summary>
+        /// <see cref="Aerodynamics.StepanekDrag.PowMinusTwoFifths"/> lane by lane, the same operations (lanes below 1 or
+        /// NaN give garbage the caller discards).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static Vector<double> PowMinusTwoFifths(Vector<double> x)
+        {
+            Vector<long> bits = Vector.AsVectorInt64(x);
+            // The exponent field as a double: (E 2^52) converts exactly (at most 11 significant bits), then times 2^-52.
+            Vector<double> biased = Vector.ConvertToDouble(bits & new Vector<long>(0x7FF0_0000_0000_0000L)) * new Vector<double>(1.0 / 4503599627370496.0);
+            Vector<double> e = biased - new Vector<double>(1023);
+            Vector<double> m = Vector.AsVectorDouble((bits & new Vector<long>(0x000F_FFFF_FFFF_FFFFL)) | new Vector<long>(0x3FF0_0000_0000_0000L));
+            // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 has a fractional part in [0.1, 0.9], far from an integer.
+            // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 - 0.5 lies within 0.4 of q, and adding and subtracting 2^52 rounds it
+            // to the nearest integer (exact: every value here is a small integer or within 2^52).
+            Vector<double> q = (((e + new Vector<double>(0.5)) * new Vector<double>(0.2) - new Vector<double>(0.5)) + new Vector<double>(Magic)) -
+                new Vector<double>(Magic);
+            Vector<double> r = e - new Vector<double>(5) * q;
+            Vector<double> s = new Vector<double>(2) * m - new Vector<double>(3);
+            Vector<double> s2 = s * s;
+            Vector<double> p = (new Vector<double>(Aerodynamics.StepanekDrag.C0) + s * new Vector<double>(Aerodynamics.StepanekDrag.C1)) +
+                s2 * (new Vector<double>(Aerodynamics.StepanekDrag.C2) + s * new Vector<double>(Aerodynamics.StepanekDrag.C3)) +
+                (s2 * s2) * ((new Vector<double>(Aerodynamics.StepanekDrag.C4) + s * new Vector<double>(Aerodynamics.StepanekDrag.C5)) +
+                    s2 * (new Vector<double>(Aerodynamics.StepanekDrag.C6) + s * new Vector<double>(Aerodynamics.StepanekDrag.C7)));
+            // 2^(-2r/5) and 2^r for r = 0..4 by selection (the scalar code reads a table and builds 2^r from bits).
+            Vector<double> table = Vector<double>.One, power = Vector<double>.One;
+            Select(r, 1, 0.757858283255199, 2, ref table, ref power);
+            Select(r, 2, 0.5743491774985175, 4, ref table, ref power);
+            Select(r, 3, 0.43527528164806206, 8, ref table, ref power);
+            Select(r, 4, 0.32987697769322355, 16, ref table, ref power);
+            Vector<double> y = p * table;
+            Vector<double> big = m * power;
+            Vector<double> a = big * big;
+            Vector<double> y2 = y * y;
+            Vector<double> d = Vector<double>.One - (a * y) * (y2 * y2);
+            y += (y * d) * (new Vector<double>(0.2) + d * new Vector<double>(0.12));
+            // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
+            // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
+            // which Vector<T> lacks on some runtimes).
+            Vector<long> biasedScale = Vector.AsVectorInt64(new Vector<double>(1023) - new Vector<double>(2) * q + new Vector<double>(Magic)) -
+                new Vector<long>(MagicBits);
+            Vector<double> scale = Vector.AsVectorDouble(biasedScale * new Vector<long>(1L << 52));
+            Vector<long> finite = Vector.LessThanOrEqual(x, new Vector<double>(double.MaxValue));
+            return Vector.ConditionalSelect(finite, y * scale, Vector<double>.Zero);
+        }
+
+        private const double Magic = 4503599627370496.0; // 2^52
+        private const long MagicBits = 0x4330_0000_0000_0000L; // its bit pattern
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Select(Vector<double> r, double value, double tableValue, double powerValue, ref Vector<double> table, ref Vector<double> power)
+        {
+            Vector<long> hit = Vector.Equals(r, new Vector<double>(value));
+            table = Vector.ConditionalSelect(hit, new Vector<double>(tableValue), table);
+            power = Vector.ConditionalSelect(hit, new Vector<double>(powerValue), power);
+        }
+    }
+}

@@ -1,0 +1,280 @@
+using System;
+using System.Collections.Generic;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Integration;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Integration
+{
+    /// <summary>
+    /// The flight kernel (FlightModel's struct-specialised derivative and RK4/Heun steps) against the general formula with
+    /// every law called through its interface: equal bit for bit, for every built-in law, a user's own laws, wind
+    /// (uniform and a profile), a vacuum and air without aerodynamic laws.
+    /// </summary>
+    [TestFixture]
+    public class FlightKernelTests
+    {
+        /// <summary>A user's own drag law (not a built-in type): counts its calls.</summary>
+        private sealed class CountingDrag : IDragModel
+        {
+            public int Calls;
+
+            public double DragCoefficient(in AeroConditions conditions)
+            {
+                Calls++;
+                return 0.4 + 1e-7 * conditions.ReynoldsNumber + 0.1 * conditions.SpinParameter;
+            }
+        }
+
+        private sealed class UserLift : ILiftModel
+        {
+            public double LiftCoefficient(in AeroConditions conditions) => 0.3 * Math.Tanh(conditions.TransverseSpinParameter * 3);
+        }
+
+        private sealed class UserDecay : ISpinDecayModel
+        {
+            public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
+                angularVelocity * (-0.01 * conditions.Speed - 1e-3 * conditions.SpinRate);
+        }
+
+        public static IEnumerable<TestCaseData> Models()
+        {
+            var air = new Air(1.21);
+            var windy = new Air(1.1, new Vector3d(3, -2, 0.5));
+            var profile = new Air(1.2).WithLogarithmicWind(new Vector3d(6, 1, 0));
+            Vector3d g = Gravity.ZUp;
+            yield return new TestCaseData(FlightModel.Thesis(Ball.Tennis, air, g), "ConstantDragLaw, ConstantLiftLaw, NoSpinDecay").SetName("Thesis");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, windy, g, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+                "StepanekDragLaw, StepanekLiftLaw, ExponentialSpinDecayLaw").SetName("FullTennisWindy");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, air, g, StepanekDrag.Instance), "StepanekDragLaw, NoLift, NoSpinDecay").SetName("DragOnly");
+            yield return new TestCaseData(FlightModel.Vacuum(Ball.Tennis, g), "NoDrag, NoLift, NoSpinDecay").SetName("Vacuum");
+            yield return new TestCaseData(
+                new FlightModel(new Ball(0.04593, 0.021335, 0.4), profile, g, LinearSpinDrag.GolfSmitsSmith, PiecewiseLinearLift.GolfSmitsSmith, new ExponentialSpinDecay(25)),
+                "LinearSpinDragLaw, PiecewiseLinearLiftLaw, ExponentialSpinDecayLaw").SetName("GolfWindProfile");
+            yield return new TestCaseData(
+                new FlightModel(new Ball(0.145, 0.0366, 0.4), windy, g, NathanBaseballDrag.Instance, NathanBaseballLift.Instance, SpeedProportionalSpinDecay.BaseballNathan),
+                "NathanBaseballDragLaw, NathanBaseballLiftLaw, SpeedProportionalSpinDecayLaw").SetName("Baseball");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Soccer, air, g, GoffCarreSoccerDrag.Instance, PiecewiseLinearLift.SoccerGoffCarre),
+                "GoffCarreSoccerDragLaw, PiecewiseLinearLiftLaw, NoSpinDecay").SetName("Soccer");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, windy, g, ConstantDrag.CrossLindseyTennis, LinearSpinLift.Cross2020Tennis),
+                "ConstantDragLaw, LinearSpinLiftLaw, NoSpinDecay").SetName("CrossLinearLift");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, profile, g, new CountingDrag(), new UserLift(), new UserDecay()),
+                "InterfaceDrag, InterfaceLift, InterfaceSpinDecay").SetName("UserLaws");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, Air.Vacuum, g, StepanekDrag.Instance, StepanekLift.Instance, SpeedProportionalSpinDecay.TennisCrossLindsey),
+                "NoDrag, NoLift, SpeedProportionalSpinDecayLaw").SetName("VacuumWithSpinDecay");
+        }
+
+        // States across the reachable range: fast and slow, spin along and across the flight, no spin, still (below the
+        // aerodynamic cut-off speed), negative heights (under a profile's ground), huge spin parameters.
+        private static IEnumerable<FlightState> States()
+        {
+            var random = new Random(7);
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 0, 0), new Vector3d(300, 0, 0)); // gyro spin
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), default);                   // no spin
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e-160, 0, 0), new Vector3d(0, 50, 0)); // below the cut-off
+            yield return new FlightState(new Vector3d(0, 0, -2), new Vector3d(0.01, 0, 0), new Vector3d(0, 5000, 0)); // S ~ 1e4
+            for (int i = 0; i < 200; i++)
+            {
+                double speed = Math.Pow(10, -3 + 5 * random.NextDouble());
+                var velocity = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * speed;
+                var spin = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * (600 * random.NextDouble());
+                var position = new Vector3d(50 * random.NextDouble(), 10 * random.NextDouble(), 30 * random.NextDouble() - 1);
+                yield return new FlightState(position, velocity, spin, random.NextDouble());
+            }
+        }
+
+        [TestCaseSource(nameof(Models))]
+        public void Kernel_IsPickedForTheLaws(FlightModel model, string laws)
+        {
+            Assert.That(model.Kernel.ToString(), Is.EqualTo($"FlightKernel<{laws}>"));
+        }
+
+        [TestCaseSource(nameof(Models))]
+        public void Derivative_EqualsTheGeneralFormula_BitForBit(FlightModel model, string laws)
+        {
+            if (Folded(laws))
+            {
+                Assert.Pass("the folded form: see FoldedDerivative_EqualsTheGeneralFormula_ToRounding");
+            }
+
+            foreach (FlightState state in States())
+            {
+                StateDerivative fast = model.Derivative(state);
+                StateDerivative general = model.GeneralDerivative(state);
+                AssertSame(fast.Velocity, general.Velocity, state);
+                AssertSame(fast.Acceleration, general.Acceleration, state);
+                AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
+            }
+        }
+
+        // A lift law that reads no spin parameter (constant C_L) runs through the folded form (C_L s / |w|) (w x v_rel).
+        private static bool Folded(string laws) => laws.Contains("ConstantLiftLaw");
+
+        [Test]
+        public void FoldedDerivative_EqualsTheGeneralFormula_ToRounding()
+        {
+            // The folded lift differs from the general formula only in rounding: a handful of roundings of terms no larger
+            // than gravity + drag + lift, so within 1e-15 (about 4.5 ulp) of that sum, component by component.
+            foreach (FlightModel model in new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(3, -2, 0.5)), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.2).WithLogarithmicWind(new Vector3d(6, 1, 0)), Gravity.ZUp,
+                    ConstantDrag.CrossLindseyTennis, new ConstantLift(-0.3), new ExponentialSpinDecay(3)),
+            })
+            {
+                foreach (FlightState state in States())
+                {
+                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative general = model.GeneralDerivative(state);
+                    double speed = (state.Velocity - model.Air.WindAt(state.Position, model.Up)).Length;
+                    double drag = ((ConstantDrag)model.Drag!).Value, lift = Math.Abs(((ConstantLift)model.Lift!).Value);
+                    double scale = model.Gravity.Length + model.AerodynamicFactor * speed * speed * (drag + lift);
+                    Assert.That((fast.Acceleration - general.Acceleration).Length, Is.LessThanOrEqualTo(1e-15 * scale), $"{state}");
+                    AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
+                }
+            }
+        }
+
+        [TestCaseSource(nameof(Models))]
+        public void Rk4AndHeunSteps_EqualTheGeneralFormula_BitForBit(FlightModel model, string laws)
+        {
+            if (Folded(laws))
+            {
+                Assert.Pass("the folded form differs in rounding only (tested above)");
+            }
+
+            foreach (FlightState state in States())
+            {
+                foreach (double step in new[] { 1.0 / 240, 0.03 })
+                {
+                    StateDerivative k1 = model.GeneralDerivative(state);
+                    FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative rk4End, out int rk4Evaluations);
+                    FlightState heun = Heun.Instance.Step(model, state, k1, step, out StateDerivative heunEnd, out int heunEvaluations);
+                    FlightState rk4Reference = ReferenceRk4(model, state, k1, step);
+                    FlightState heunReference = ReferenceHeun(model, state, k1, step);
+                    AssertSame(rk4, rk4Reference, state);
+                    AssertSame(heun, heunReference, state);
+                    if (rk4Reference.IsFinite)
+                    {
+                        AssertSame(rk4End.Acceleration, model.GeneralDerivative(rk4Reference).Acceleration, state);
+                        AssertSame(rk4End.AngularAcceleration, model.GeneralDerivative(rk4Reference).AngularAcceleration, state);
+                    }
+
+                    if (heunReference.IsFinite)
+                    {
+                        AssertSame(heunEnd.Acceleration, model.GeneralDerivative(heunReference).Acceleration, state);
+                    }
+
+                    Assert.That(rk4Evaluations, Is.EqualTo(4));
+                    Assert.That(heunEvaluations, Is.EqualTo(2));
+                }
+            }
+        }
+
+        [Test]
+        public void Rk4Steps_EqualsOneStepAtATime_BitForBit()
+        {
+            var model = new FlightModel(Ball.Tennis, new Air(1.21).WithLogarithmicWind(new Vector3d(5, 0, 0)), Gravity.ZUp,
+                StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative run = model.Derivative(start);
+            FlightState many = model.Kernel.RungeKutta4Steps(start, ref run, 1.0 / 240, 480);
+            FlightState one = start;
+            StateDerivative k = model.Derivative(start);
+            for (int i = 0; i < 480; i++)
+            {
+                one = RungeKutta4.Instance.Step(model, one, k, 1.0 / 240, out k, out _);
+            }
+
+            AssertSame(many, one, start);
+            AssertSame(run.Acceleration, k.Acceleration, start);
+        }
+
+        [Test]
+        public void UserLaw_IsCalledOncePerEvaluation()
+        {
+            var drag = new CountingDrag();
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative k = model.Derivative(start);
+            FlightState state = start;
+            int evaluations = 1;
+            for (int i = 0; i < 100; i++)
+            {
+                state = RungeKutta4.Instance.Step(model, state, k, 1.0 / 240, out k, out int used);
+                evaluations += used;
+            }
+
+            Assert.That(drag.Calls, Is.EqualTo(evaluations));
+            Assert.That(drag.Calls, Is.EqualTo(401));
+        }
+
+        [Test]
+        public void KernelSteps_AllocateZeroBytes()
+        {
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative k = model.Derivative(start);
+            model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 10); // warm-up: JIT and statics
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            k = model.Derivative(start);
+            FlightState end = model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 480);
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(allocated, Is.EqualTo(0));
+            Assert.That(end.IsFinite, Is.True);
+        }
+
+        // RungeKutta4.Step as it was written before the kernel: the general derivative at each stage.
+        private static FlightState ReferenceRk4(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            double half = 0.5 * step;
+            StateDerivative k2 = model.GeneralDerivative(state.Advance(derivative, half));
+            StateDerivative k3 = model.GeneralDerivative(state.Advance(k2, half));
+            StateDerivative k4 = model.GeneralDerivative(state.Advance(k3, step));
+            double sixth = step / 6.0;
+            return new FlightState(
+                state.Position + (derivative.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
+                state.Velocity + (derivative.Acceleration + 2.0 * (k2.Acceleration + k3.Acceleration) + k4.Acceleration) * sixth,
+                state.AngularVelocity +
+                (derivative.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
+                state.Time + step);
+        }
+
+        private static FlightState ReferenceHeun(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            StateDerivative k2 = model.GeneralDerivative(state.Advance(derivative, step));
+            double half = 0.5 * step;
+            return new FlightState(
+                state.Position + (derivative.Velocity + k2.Velocity) * half,
+                state.Velocity + (derivative.Acceleration + k2.Acceleration) * half,
+                state.AngularVelocity + (derivative.AngularAcceleration + k2.AngularAcceleration) * half,
+                state.Time + step);
+        }
+
+        private static void AssertSame(in FlightState actual, in FlightState expected, in FlightState from)
+        {
+            AssertSame(actual.Position, expected.Position, from);
+            AssertSame(actual.Velocity, expected.Velocity, from);
+            AssertSame(actual.AngularVelocity, expected.AngularVelocity, from);
+            Assert.That(actual.Time, Is.EqualTo(expected.Time));
+        }
+
+        // Exact equality (NaN equal to NaN: a diverging step must diverge the same way).
+        private static void AssertSame(in Vector3d actual, in Vector3d expected, in FlightState from)
+        {
+            if (!(Same(actual.X, expected.X) && Same(actual.Y, expected.Y) && Same(actual.Z, expected.Z)))
+            {
+                Assert.Fail($"kernel {actual} != general {expected} from {from}");
+            }
+        }
+
+        private static bool Same(double a, double b) => a == b || (double.IsNaN(a) && double.IsNaN(b));
+    }
+}
