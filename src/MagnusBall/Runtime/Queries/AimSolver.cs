@@ -596,7 +596,7 @@ namespace MagnusBall.Queries
 
                 // The first step counts a launch from on the ground into it as a landing at once.
                 int n = FlightEventSet.ScanPlanes(stepper.LastSegment, Vector3d.Zero, Ground, planes, found, stepper.StepCount == 1);
-                ReadOnlySpan<FlightEvent> events = found.Slice(0, n);
+                Span<FlightEvent> events = found.Slice(0, n);
                 int count = FlightEventSet.CountUntil(events, FlightEventKinds.Landing, out int landing);
                 for (int i = 0; i < count; i++)
                 {

@@ -152,13 +152,14 @@ namespace MagnusBall.Queries
         public static int CountUntil(ReadOnlySpan<FlightEvent> events, FlightEventKinds stopAt, out int stopIndex)
         {
             stopIndex = -1;
-            for (int i = 0; i < events.Length; i++)
+            Span<FlightEvent> read = SpanView.Of(events); // not the read-only indexer: Mono 6.8 lacks it (see SpanView)
+            for (int i = 0; i < read.Length; i++)
             {
-                if ((events[i].Kind & stopAt) != 0)
+                if ((read[i].Kind & stopAt) != 0)
                 {
                     stopIndex = i;
                     int count = i + 1;
-                    while (count < events.Length && events[count].Time <= events[i].Time)
+                    while (count < read.Length && read[count].Time <= read[i].Time)
                     {
                         count++;
                     }
@@ -176,7 +177,7 @@ namespace MagnusBall.Queries
         /// hold 2 + planes.Length events.
         /// </summary>
         internal static int ScanPlanes(
-            in HermiteSegment segment, in Vector3d up, Plane? ground, ReadOnlySpan<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+            in HermiteSegment segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
         {
             int count = 0;
             double time;

@@ -197,7 +197,7 @@ namespace MagnusBall.Queries
             ReadOnlySpan<FlightEvent> events = Events;
             int count = FlightEventSet.CountUntil(events, stopAt, out int stopIndex);
             stopped = stopIndex >= 0;
-            stopEvent = stopped ? events[stopIndex] : default;
+            stopEvent = stopped ? SpanView.Of(events)[stopIndex] : default;
             return events.Slice(0, count);
         }
 

@@ -163,7 +163,7 @@ namespace MagnusBall.Queries
                         stepper.StepCount, stepper.DerivativeEvaluations, diverged: true);
                 }
 
-                ReadOnlySpan<FlightEvent> found = stepper.EventsUntil(stopAt, out bool stopped, out FlightEvent stop);
+                Span<FlightEvent> found = SpanView.Of(stepper.EventsUntil(stopAt, out bool stopped, out FlightEvent stop));
                 for (int i = 0; i < found.Length; i++)
                 {
                     if (eventCount < events.Length)

@@ -363,7 +363,7 @@ namespace MagnusBall.Stepping
                 _accumulator -= FixedStep;
 
                 // Events up to the touchdown (those after it lie on the part of the step that never happens).
-                ReadOnlySpan<FlightEvent> found = _stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent landing);
+                Span<FlightEvent> found = SpanView.Of(_stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent landing));
                 foreach (FlightEvent e in found)
                 {
                     if (e.Kind != FlightEventKinds.Landing)
