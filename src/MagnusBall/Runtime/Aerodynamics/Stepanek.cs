@@ -30,7 +30,7 @@ namespace MagnusBall.Aerodynamics
             // (1/S)^2.5 = u^2 sqrt(u) with u = 1/S: a square root instead of a second Math.Pow (Pow dominated the
             // model's cost, docs/performance.md). It overflows to +inf for tiny S; inf^-0.4 is 0, the correct limit.
             double u = 1.0 / spinParameter;
-            return 0.508 + Math.Pow(22.053 + 4.196 * (u * u * Math.Sqrt(u)), -0.4);
+            return 0.508 + PortableMath.Pow(22.053 + 4.196 * (u * u * Math.Sqrt(u)), -0.4);
         }
 
         /// <inheritdoc />
