@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the MagnusBall.Tests suite under Debian's Mono (6.8), against the same netstandard2.1 MagnusBall.dll the
-# normal build makes, then the cross-runtime determinism check (tools/determinism-check.sh) if it exists.
+# normal build makes, then the cross-runtime determinism check (tools/determinism-check.sh, 100,000 shots).
 # Installs mono-devel with apt-get when `mono` is missing. Arguments are passed to the test program
 # (regular expressions on full test names). .ci/run calls it after `dotnet test`.
 #   bash tools/test-mono.sh                     # the whole suite
@@ -18,3 +18,6 @@ mono --version | head -n 1
 
 dotnet build tests/MagnusBall.Tests.Mono -c Release -nologo -v quiet
 mono artifacts/bin/MagnusBall.Tests.Mono/release/MagnusBall.Tests.exe "$@"
+
+# The same shots, bit for bit, on CoreCLR, Mono and Mono without intrinsics.
+bash tools/determinism-check.sh
