@@ -3,6 +3,7 @@ using BenchmarkDotNet.Attributes;
 using BenchmarkDotNet.Configs;
 using BenchmarkDotNet.Diagnosers;
 using BenchmarkDotNet.Jobs;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
 using MathNet.Numerics.LinearAlgebra;

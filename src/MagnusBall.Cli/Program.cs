@@ -155,7 +155,7 @@ namespace MagnusBall.Cli
             var results = new List<FlightResult>();
             foreach (Scenario scenario in scenarios)
             {
-                results.Add(Flight.Simulate(scenario, record));
+                results.Add(ScenarioFlight.Simulate(scenario, record));
             }
 
             if (svg != null)

@@ -1,5 +1,6 @@
 using System;
 using System.Reflection;
+using MagnusBall.Flight;
 using MagnusBall.Samples.TennisScene;
 using MagnusBall.Samples.TennisScene.Unity;
 using MagnusBall.Stepping;
@@ -23,10 +24,10 @@ namespace MagnusBall.UnityScripts.Tests
         private static void Call(object script, string unityMessage) =>
             script.GetType().GetMethod(unityMessage, BindingFlags.Instance | BindingFlags.NonPublic)!.Invoke(script, null);
 
-        private static (System.Collections.Generic.List<FrameEvent> Touches, Vector3 Drawn, Vector3d Stop) FlyAt(float frameDelta, bool fixedUpdate = false)
+        private static (System.Collections.Generic.List<FlightEvent> Touches, Vector3 Drawn, Vector3d Stop) FlyAt(float frameDelta, bool fixedUpdate = false)
         {
             var ball = new TennisBall { stepInFixedUpdate = fixedUpdate };
-            var touches = new System.Collections.Generic.List<FrameEvent>();
+            var touches = new System.Collections.Generic.List<FlightEvent>();
             Call(ball, "Start"); // builds the model from the inspector defaults and launches
             ball.Touched += touches.Add;
             Time.deltaTime = frameDelta;
@@ -78,7 +79,7 @@ namespace MagnusBall.UnityScripts.Tests
         {
             // The inspector's front/top/left defaults are the flat serve's velocity rounded to 0.01 m/s, so the
             // Unity ball and the headless table's first row must land within a few centimetres of each other.
-            FrameEvent landing = FlyAt(1f / 60f).Touches[0];
+            FlightEvent landing = FlyAt(1f / 60f).Touches[0];
             var headless = new ShotSimulation(new SceneSettings()).Run(StandardShots.FlatServe, Span<Vector3d>.Empty);
             TestContext.Out.WriteLine($"Unity defaults land at {landing.Position}; headless flat serve at {headless.Landing}");
             // 5 cm: the 0.005 m/s rounding of the inspector's velocity moves a 0.44 s flight by well under that.
@@ -104,7 +105,7 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(first.x, Is.EqualTo(ball.servePosition.x));
             Assert.That(first.y, Is.EqualTo(ball.servePosition.y));
 
-            FrameEvent landing = FlyAt(1f / 60f).Touches[0];
+            FlightEvent landing = FlyAt(1f / 60f).Touches[0];
             // The line ends at the landing the ball then flies to (float rounding only: 1e-5 m).
             Assert.That(last.x, Is.EqualTo(landing.Position.X).Within(1e-5));
             Assert.That(last.z, Is.EqualTo(landing.Position.Z).Within(1e-5));

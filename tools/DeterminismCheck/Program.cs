@@ -4,6 +4,7 @@ using System.Globalization;
 using System.IO;
 using MagnusBall;
 using MagnusBall.Contact;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Presets;
 using MagnusBall.Queries;
@@ -12,8 +13,8 @@ namespace MagnusBall.DeterminismCheck
 {
     /// <summary>
     /// Flies seeded random shots (every preset, every integrator, both a z-up and a y-up frame, random launch
-    /// speed, angles, spin, altitude and wind) to their landing; every 16th shot also bounces on (BouncingFlight, the
-    /// preset's bounce law) and every 200th is aimed (AimSolver.ElevationToReach). Prints one line of hex bits per
+    /// speed, angles, spin, altitude and wind) to their landing; every 16th shot also bounces on (FlightStepper with a
+    /// GroundContact and the preset's bounce law) and every 200th is aimed (AimSolver.ElevationToReach). Prints one line of hex bits per
     /// shot to the dump file and a hash of everything; tools/determinism-check.sh compares the dumps of CoreCLR,
     /// Mono and Mono without intrinsics. The random numbers come from SplitMix64, not System.Random, so that the
     /// inputs do not depend on the runtime either.
@@ -32,7 +33,6 @@ namespace MagnusBall.DeterminismCheck
             IIntegrator[] integrators = Integrators.All;
             var models = new Dictionary<(int, int, int), FlightModel>();
             Span<Vector3d> noSamples = Span<Vector3d>.Empty;
-            Span<BounceEvent> bounces = stackalloc BounceEvent[BouncingFlight.MaxSegmentsPerStep];
             int landed = 0, diverged = 0, bounced = 0, aimed = 0, solved = 0;
             var line = new System.Text.StringBuilder();
 
@@ -77,16 +77,19 @@ namespace MagnusBall.DeterminismCheck
 
                 if (i % 16 == 0 && !prediction.Diverged)
                 {
-                    var flight = new BouncingFlight(model, integrator, preset.Bounce ?? CrossBounce.Hard, Plane.Ground(model), start);
-                    int touches = 0;
-                    for (int k = 0; k < 480 && flight.Phase != FlightPhase.Stopped; k++)
+                    var flight = new FlightStepper(model, integrator, null, new GroundContact(preset.Bounce ?? CrossBounce.Hard, Plane.Ground(model)));
+                    flight.Reset(start);
+                    for (int k = 0; k < 480 && !flight.IsStopped; k++)
                     {
-                        touches += flight.Step(1.0 / 120, bounces);
+                        if (flight.TryStep(1.0 / 120) == StepOutcome.Diverged)
+                        {
+                            break;
+                        }
                     }
 
                     Add(line, flight.State);
                     Add(line, flight.BounceCount);
-                    bounced += touches > 0 ? 1 : 0;
+                    bounced += flight.BounceCount > 0 ? 1 : 0;
                 }
 
                 if (i % 200 == 0)

@@ -104,6 +104,9 @@ namespace MagnusBall
             AngularAcceleration = angularAcceleration;
         }
 
+        /// <summary>True when every component is finite.</summary>
+        public bool IsFinite => Velocity.IsFinite && Acceleration.IsFinite && AngularAcceleration.IsFinite;
+
         /// <inheritdoc />
         public override string ToString() => $"dp={Velocity} dv={Acceleration} dw={AngularAcceleration}";
     }

@@ -81,6 +81,15 @@ namespace MagnusBall
             return value;
         }
 
+        /// <summary>The one finite-state check: position, velocity, angular velocity and time all finite.</summary>
+        internal static void FiniteState(in FlightState state, string name)
+        {
+            if (!state.IsFinite)
+            {
+                throw new ArgumentException($"{name} must have finite position, velocity, angular velocity and time; got {state}.", name);
+            }
+        }
+
         internal static T NotNull<T>(T? value, string name)
             where T : class
         {

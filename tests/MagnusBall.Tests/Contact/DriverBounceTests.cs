@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using MagnusBall.Flight;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
@@ -45,20 +46,20 @@ namespace MagnusBall.Tests.Contact
         /// <summary>The ground for the driver and for BouncingFlight: the ball touches when its centre is one radius up.</summary>
         private static Plane ContactHeight(Court court) => new Plane(court.Frame.Up * Ball.Tennis.Radius, court.Frame.Up);
 
-        private static List<FrameEvent> Touches(Surface surface, Court court, double[] deltas)
+        private static List<FlightEvent> Touches(Surface surface, Court court, double[] deltas)
         {
             FlightModel model = Model(court);
             var driver = new FixedStepDriver(model, RungeKutta4.Instance, Step, Drive(court),
                 new FlightEventSet(court.Frame.Up, ContactHeight(court)), new CrossBounce(surface));
-            var touches = new List<FrameEvent>();
-            var events = new FrameEvent[16];
+            var touches = new List<FlightEvent>();
+            var events = new FlightEvent[16];
             for (int frame = 0; frame < 100_000 && !driver.IsFinished; frame++)
             {
                 AdvanceResult result = driver.Advance(deltas[frame % deltas.Length], events);
                 Assert.That(result.EventsNotReported, Is.EqualTo(0));
                 for (int i = 0; i < result.EventCount; i++)
                 {
-                    if (events[i].Kind == FrameEventKind.Bounce || events[i].Kind == FrameEventKind.Landing)
+                    if (events[i].Kind == FlightEventKinds.Bounce || events[i].Kind == FlightEventKinds.Landing)
                     {
                         touches.Add(events[i]);
                     }
@@ -72,7 +73,7 @@ namespace MagnusBall.Tests.Contact
         [TestCaseSource(nameof(Cases))]
         public void MultiBounceFlight_UnderTheDriver_IsTheSameBits_AtEveryFrameRate(Surface surface, Court court)
         {
-            List<FrameEvent> reference = Touches(surface, court, Stepping.DriverShots.FixedRate(60, 1));
+            List<FlightEvent> reference = Touches(surface, court, Stepping.DriverShots.FixedRate(60, 1));
             Assert.That(reference.Count, Is.GreaterThanOrEqualTo(3));
             foreach ((string name, double[] deltas) in new[]
             {
@@ -82,15 +83,15 @@ namespace MagnusBall.Tests.Contact
                 ("60 FPS, 0.5 s hitch", Stepping.DriverShots.WithHitch(30, 400)),
             })
             {
-                List<FrameEvent> touches = Touches(surface, court, deltas);
+                List<FlightEvent> touches = Touches(surface, court, deltas);
                 Assert.That(touches.Count, Is.EqualTo(reference.Count), name);
                 for (int i = 0; i < touches.Count; i++)
                 {
                     // Bitwise: exact equality, no tolerance.
                     Assert.That(touches[i].Time, Is.EqualTo(reference[i].Time), $"{name}, touch {i + 1}");
                     Assert.That(touches[i].Position, Is.EqualTo(reference[i].Position), $"{name}, touch {i + 1}");
-                    Assert.That(touches[i].AfterBounce.Velocity, Is.EqualTo(reference[i].AfterBounce.Velocity), $"{name}, touch {i + 1}");
-                    Assert.That(touches[i].AfterBounce.AngularVelocity, Is.EqualTo(reference[i].AfterBounce.AngularVelocity), $"{name}, touch {i + 1}");
+                    Assert.That(touches[i].After.Velocity, Is.EqualTo(reference[i].After.Velocity), $"{name}, touch {i + 1}");
+                    Assert.That(touches[i].After.AngularVelocity, Is.EqualTo(reference[i].After.AngularVelocity), $"{name}, touch {i + 1}");
                 }
             }
 
@@ -103,14 +104,14 @@ namespace MagnusBall.Tests.Contact
         {
             // The driver steps a BouncingFlight of its own with the ball-centre ground one radius up; this one
             // bounces on the court plane directly. They agree to the integration error, not bit for bit.
-            List<FrameEvent> driver = Touches(surface, court, Stepping.DriverShots.FixedRate(60, 1));
+            List<FlightEvent> driver = Touches(surface, court, Stepping.DriverShots.FixedRate(60, 1));
             FlightModel model = Model(court);
-            var flight = new BouncingFlight(model, RungeKutta4.Instance, new CrossBounce(surface), new Plane(Vector3d.Zero, court.Frame.Up), Drive(court));
-            var bounces = new List<BounceEvent>();
-            Span<BounceEvent> buffer = stackalloc BounceEvent[4];
+            var flight = Bouncing.Start(model, RungeKutta4.Instance, new CrossBounce(surface), new Plane(Vector3d.Zero, court.Frame.Up), Drive(court));
+            var bounces = new List<FlightEvent>();
+            Span<FlightEvent> buffer = stackalloc FlightEvent[4];
             for (int i = 0; i < 240 * 10 && bounces.Count < 3; i++)
             {
-                int n = flight.Step(Step, buffer);
+                int n = Bouncing.Step(flight, Step, buffer);
                 for (int k = 0; k < n; k++)
                 {
                     bounces.Add(buffer[k]);

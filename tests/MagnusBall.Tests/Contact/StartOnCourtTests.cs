@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -18,11 +19,11 @@ namespace MagnusBall.Tests.Contact
             double r = model.Ball.Radius;
             var court = new Plane(new Vector3d(0, 0, -r), Vector3d.UnitZ); // the centre touches it at z = 0
             var start = new FlightState(Vector3d.Zero, new Vector3d(vx, 0, vz), Vector3d.Zero);
-            var flight = new BouncingFlight(model, RungeKutta4.Instance, CrossBounce.Hard, court, start);
-            Span<BounceEvent> bounces = stackalloc BounceEvent[4];
+            var flight = Bouncing.Start(model, RungeKutta4.Instance, CrossBounce.Hard, court, start);
+            Span<FlightEvent> bounces = stackalloc FlightEvent[4];
             for (int i = 0; i < 1200 && flight.Phase != FlightPhase.Stopped; i++)
             {
-                flight.Step(1.0 / 240, bounces);
+                Bouncing.Step(flight, 1.0 / 240, bounces);
                 Assert.That(flight.State.Position.Z, Is.GreaterThanOrEqualTo(-1e-12), $"step {i}: {flight.State}");
             }
 

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using MagnusBall.Queries;

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -26,7 +27,7 @@ namespace MagnusBall.Tests.Queries
             stepper.Reset(start);
             while (stepper.State.Time < 10)
             {
-                stepper.Step(step);
+                stepper.TryStep(step);
                 if (stepper.TryGetEvent(FlightEventKinds.Landing, out FlightEvent landing))
                 {
                     return landing;
@@ -66,7 +67,7 @@ namespace MagnusBall.Tests.Queries
             bool sawApex = false, sawLanding = false;
             while (!sawLanding)
             {
-                stepper.Step(1.0 / 30);
+                stepper.TryStep(1.0 / 30);
                 sawApex |= stepper.TryGetEvent(FlightEventKinds.Apex, out FlightEvent a) && (apex = a).Time > 0;
                 sawLanding = stepper.TryGetEvent(FlightEventKinds.Landing, out landing);
             }
@@ -140,7 +141,7 @@ namespace MagnusBall.Tests.Queries
             stepper.Reset(start);
             while (stepper.State.Position.Z > 0)
             {
-                stepper.Step(1.0 / 60);
+                stepper.TryStep(1.0 / 60);
             }
 
             double naive = Vector3d.Distance(stepper.State.Position, reference.Position);
@@ -195,7 +196,7 @@ namespace MagnusBall.Tests.Queries
             var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
             var stepper = new FlightStepper(model, RungeKutta4.Instance, FlightEventSet.ForModel(model));
             stepper.Reset(new FlightState(default, new Vector3d(10, 0, 3), default));
-            stepper.Step(0.01);
+            stepper.TryStep(0.01);
             Assert.That(stepper.TryGetEvent(FlightEventKinds.Landing, out _), Is.False);
         }
 
@@ -207,7 +208,8 @@ namespace MagnusBall.Tests.Queries
                 new[] { new Plane(new Vector3d(15, 0, 0), Vector3d.UnitX), new Plane(new Vector3d(5, 0, 0), Vector3d.UnitX) });
             var stepper = new FlightStepper(model, RungeKutta4.Instance, events);
             stepper.Reset(new FlightState(new Vector3d(0, 0, 0.5), new Vector3d(10, 0, 10), default));
-            int count = stepper.Step(3.0); // one step holds everything: x=5 at 0.5 s, apex 1 s, x=15 at 1.5 s, landing ~2.05 s
+            stepper.TryStep(3.0);
+            int count = stepper.Events.Length; // one step holds everything: x=5 at 0.5 s, apex 1 s, x=15 at 1.5 s, landing ~2.05 s
             Assert.That(count, Is.EqualTo(4));
             FlightEvent[] e = stepper.Events.ToArray(); // a copy: Mono 6.8 has no ReadOnlySpan indexer a compiler accepts (SpanView)
             Assert.That(e[0].Kind, Is.EqualTo(FlightEventKinds.PlaneCrossing));

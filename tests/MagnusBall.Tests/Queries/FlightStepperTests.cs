@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -18,7 +19,7 @@ namespace MagnusBall.Tests.Queries
             stepper.Reset(EventLocationTests.TennisDrive(Vector3d.UnitZ));
             for (int i = 0; i < 10; i++)
             {
-                stepper.Step(0.01);
+                stepper.TryStep(0.01);
             }
 
             Assert.That(stepper.StepCount, Is.EqualTo(10));
@@ -40,7 +41,8 @@ namespace MagnusBall.Tests.Queries
                 stepper.Reset(start);
                 for (int i = 0; i < 200; i++)
                 {
-                    events += stepper.Step(1.0 / 120);
+                    stepper.TryStep(1.0 / 120);
+                    events += stepper.Events.Length;
                 }
 
                 return events;
@@ -59,12 +61,12 @@ namespace MagnusBall.Tests.Queries
         {
             var model = Shots.StepanekTennis(Gravity.ZUp);
             var stepper = new FlightStepper(model, RungeKutta4.Instance);
-            Assert.Throws<InvalidOperationException>(() => stepper.Step(0.01));
+            Assert.Throws<InvalidOperationException>(() => stepper.TryStep(0.01));
             FlightState start = EventLocationTests.TennisDrive(Vector3d.UnitZ);
             stepper.Reset(start);
-            var ex = Assert.Throws<ArgumentOutOfRangeException>(() => stepper.Step(double.NaN));
+            var ex = Assert.Throws<ArgumentOutOfRangeException>(() => stepper.TryStep(double.NaN));
             Assert.That(ex!.ParamName, Is.EqualTo("step"));
-            Assert.Throws<ArgumentOutOfRangeException>(() => stepper.Step(0));
+            Assert.Throws<ArgumentOutOfRangeException>(() => stepper.TryStep(0));
             Assert.Throws<ArgumentException>(() => stepper.Reset(new FlightState(new Vector3d(double.NaN, 0, 0), default, default)));
             Assert.That(stepper.State.Position, Is.EqualTo(start.Position));
             Assert.That(stepper.StepCount, Is.EqualTo(0));

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
 using NUnit.Framework;
@@ -76,16 +77,16 @@ namespace MagnusBall.Tests.Queries
         {
             var stepper = new FlightStepper(Model, RungeKutta4.Instance, FlightEventSet.ForModel(Model));
             stepper.Reset(OnGround(10, -2));
-            stepper.Step(Step);
+            stepper.TryStep(Step);
             Assert.That(stepper.TryGetEvent(FlightEventKinds.Landing, out FlightEvent landing), Is.True);
             Assert.That(landing.Time, Is.EqualTo(0));
 
             // Keep flying (under the ground now), then put the ball back on the ground heading down mid-flight.
-            stepper.Step(Step);
+            stepper.TryStep(Step);
             Assert.That(stepper.TryGetEvent(FlightEventKinds.Landing, out _), Is.False, "under the ground: no new landing");
             var placed = new FlightState(new Vector3d(1, 0, 0), new Vector3d(10, 0, -2), Vector3d.Zero, stepper.State.Time);
             stepper.SetState(placed);
-            stepper.Step(Step);
+            stepper.TryStep(Step);
             Assert.That(stepper.TryGetEvent(FlightEventKinds.Landing, out landing), Is.True);
             Assert.That(landing.Time, Is.EqualTo(placed.Time));
         }
@@ -100,7 +101,7 @@ namespace MagnusBall.Tests.Queries
             double landedAt = double.NaN;
             for (int i = 0; i < 240; i++)
             {
-                stepper.Step(Step);
+                stepper.TryStep(Step);
                 if (stepper.TryGetEvent(FlightEventKinds.Landing, out FlightEvent e))
                 {
                     landings++;
@@ -123,7 +124,7 @@ namespace MagnusBall.Tests.Queries
             probe.Reset(drive);
             for (int i = 0; i < 150; i++)
             {
-                probe.Step(Step);
+                probe.TryStep(Step);
             }
 
             FlightState mark = probe.State;
@@ -135,7 +136,7 @@ namespace MagnusBall.Tests.Queries
             int landings = 0, crossings = 0;
             for (int i = 0; i < 200; i++)
             {
-                stepper.Step(Step);
+                stepper.TryStep(Step);
                 foreach (FlightEvent e in stepper.Events)
                 {
                     Assert.That(e.Time, Is.EqualTo(mark.Time), e.ToString());

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -18,17 +19,17 @@ namespace MagnusBall.Tests.Stepping
             // The driver's ground is where the ball's centre touches (here y = 0), so the court is one radius below.
             new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard);
 
-        private static List<FrameEvent> Fly(FixedStepDriver driver, double[] deltas, Action<FixedStepDriver>? perFrame = null)
+        private static List<FlightEvent> Fly(FixedStepDriver driver, double[] deltas, Action<FixedStepDriver>? perFrame = null)
         {
-            var all = new List<FrameEvent>();
-            var events = new FrameEvent[16];
+            var all = new List<FlightEvent>();
+            var events = new FlightEvent[16];
             for (int frame = 0; frame < 100_000 && !driver.IsFinished; frame++)
             {
                 AdvanceResult result = driver.Advance(deltas[frame % deltas.Length], events);
                 Assert.That(result.EventsNotReported, Is.EqualTo(0));
                 for (int i = 0; i < result.EventCount; i++)
                 {
-                    if (events[i].Kind == FrameEventKind.Bounce || events[i].Kind == FrameEventKind.Stop)
+                    if (events[i].Kind == FlightEventKinds.Bounce || events[i].Kind == FlightEventKinds.Rest)
                     {
                         all.Add(events[i]);
                     }
@@ -38,30 +39,30 @@ namespace MagnusBall.Tests.Stepping
             }
 
             Assert.That(driver.IsFinished, Is.True, "the ball comes to rest");
-            Assert.That(driver.BouncingFlight!.Phase, Is.EqualTo(FlightPhase.Stopped));
+            Assert.That(driver.Phase, Is.EqualTo(FlightPhase.Stopped));
             return all;
         }
 
         [Test]
         public void ABounce_IsTheBounceModelAppliedAtTheContactTime()
         {
-            List<FrameEvent> touches = Fly(NewDriver(), DriverShots.FixedRate(60, 1));
+            List<FlightEvent> touches = Fly(NewDriver(), DriverShots.FixedRate(60, 1));
             TestContext.Out.WriteLine($"{touches.Count - 1} bounces, then stops at {touches[touches.Count - 1].Position} at t = {touches[touches.Count - 1].Time:F2} s");
             Assert.That(touches.Count, Is.GreaterThanOrEqualTo(3), "at least two bounces before it stops");
-            Assert.That(touches[0].Kind, Is.EqualTo(FrameEventKind.Bounce));
+            Assert.That(touches[0].Kind, Is.EqualTo(FlightEventKinds.Bounce));
             Assert.That(touches[0].StartsRolling, Is.False);
             Assert.That(touches[touches.Count - 2].StartsRolling, Is.True, "the last bounce starts the roll");
-            Assert.That(touches[touches.Count - 1].Kind, Is.EqualTo(FrameEventKind.Stop));
+            Assert.That(touches[touches.Count - 1].Kind, Is.EqualTo(FlightEventKinds.Rest));
 
-            FrameEvent first = touches[0];
+            FlightEvent first = touches[0];
             BounceOutcome expected = CrossBounce.Hard.Bounce(Ball.Tennis, DriverShots.Up, first.State.Velocity, first.State.AngularVelocity);
-            Assert.That(first.AfterBounce.Velocity, Is.EqualTo(expected.Velocity));
-            Assert.That(first.AfterBounce.AngularVelocity, Is.EqualTo(expected.AngularVelocity));
+            Assert.That(first.After.Velocity, Is.EqualTo(expected.Velocity));
+            Assert.That(first.After.AngularVelocity, Is.EqualTo(expected.AngularVelocity));
             Assert.That(first.Regime, Is.EqualTo(expected.Regime));
-            Assert.That(first.AfterBounce.Time, Is.EqualTo(first.Time));
+            Assert.That(first.After.Time, Is.EqualTo(first.Time));
             // 1e-12 m: the contact is located to 1e-12 s (queries' HermiteSegment tolerance) at a few m/s down.
             Assert.That(first.Position.Y, Is.EqualTo(0).Within(1e-10));
-            Assert.That(first.AfterBounce.Velocity.Y, Is.GreaterThan(BouncingFlight.DefaultRestNormalSpeed));
+            Assert.That(first.After.Velocity.Y, Is.GreaterThan(GroundContact.DefaultRestNormalSpeed));
 
             // The bounces, and then the stop, move on down the court.
             for (int i = 1; i < touches.Count; i++)
@@ -74,19 +75,19 @@ namespace MagnusBall.Tests.Stepping
         [Test]
         public void MultiBounceFlights_AreTheSameBits_AtEveryFrameRate()
         {
-            List<FrameEvent> reference = Fly(NewDriver(), DriverShots.FixedRate(60, 1));
+            List<FlightEvent> reference = Fly(NewDriver(), DriverShots.FixedRate(60, 1));
             foreach (double[] deltas in new[]
             {
                 DriverShots.FixedRate(30, 1), DriverShots.FixedRate(144, 1), DriverShots.Jittery(99, 300), DriverShots.WithHitch(30, 300),
             })
             {
-                List<FrameEvent> touches = Fly(NewDriver(), deltas);
+                List<FlightEvent> touches = Fly(NewDriver(), deltas);
                 Assert.That(touches.Count, Is.EqualTo(reference.Count));
                 for (int i = 0; i < touches.Count; i++)
                 {
                     Assert.That(touches[i].Position, Is.EqualTo(reference[i].Position), $"touch {i}");
                     Assert.That(touches[i].Time, Is.EqualTo(reference[i].Time), $"touch {i}");
-                    Assert.That(touches[i].AfterBounce.Velocity, Is.EqualTo(reference[i].AfterBounce.Velocity), $"touch {i}");
+                    Assert.That(touches[i].After.Velocity, Is.EqualTo(reference[i].After.Velocity), $"touch {i}");
                     Assert.That(touches[i].Kind, Is.EqualTo(reference[i].Kind), $"touch {i}");
                 }
             }

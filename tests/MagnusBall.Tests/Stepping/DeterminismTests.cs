@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using System.Threading;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Stepping;
 using NUnit.Framework;
@@ -34,10 +35,10 @@ namespace MagnusBall.Tests.Stepping
         [TestCaseSource(nameof(DriverIntegrators))]
         public void FixedStepDriver_LandsOnTheSameBits_AtEveryFrameRate(IIntegrator integrator)
         {
-            FrameEvent reference = DriverShots.LandWithDriver(DriverShots.YUpTennis, integrator, Step, DriverShots.Drive, DriverShots.FixedRate(60, 1));
+            FlightEvent reference = DriverShots.LandWithDriver(DriverShots.YUpTennis, integrator, Step, DriverShots.Drive, DriverShots.FixedRate(60, 1));
             foreach ((string name, double[] deltas) in Sequences)
             {
-                FrameEvent landing = DriverShots.LandWithDriver(DriverShots.YUpTennis, integrator, Step, DriverShots.Drive, deltas);
+                FlightEvent landing = DriverShots.LandWithDriver(DriverShots.YUpTennis, integrator, Step, DriverShots.Drive, deltas);
                 TestContext.Out.WriteLine($"{integrator.Name}, {name}: lands at {landing.Position} at t = {landing.Time:R} s");
 
                 // Bitwise: Vector3d equality and double equality are exact, no tolerance.

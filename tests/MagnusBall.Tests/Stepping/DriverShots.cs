@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Stepping;
 
@@ -74,16 +75,16 @@ namespace MagnusBall.Tests.Stepping
         /// Drives a flight through <paramref name="deltas"/> (repeating them if needed) until it lands and
         /// returns the landing event.
         /// </summary>
-        public static FrameEvent LandWithDriver(FlightModel model, IIntegrator integrator, double step, FlightState start, double[] deltas)
+        public static FlightEvent LandWithDriver(FlightModel model, IIntegrator integrator, double step, FlightState start, double[] deltas)
         {
             var driver = new FixedStepDriver(model, integrator, step, start);
-            Span<FrameEvent> events = stackalloc FrameEvent[8];
+            Span<FlightEvent> events = stackalloc FlightEvent[8];
             for (int frame = 0; frame < 100_000; frame++)
             {
                 AdvanceResult result = driver.Advance(deltas[frame % deltas.Length], events);
                 for (int i = 0; i < result.EventCount; i++)
                 {
-                    if (events[i].Kind == FrameEventKind.Landing)
+                    if (events[i].Kind == FlightEventKinds.Landing)
                     {
                         return events[i];
                     }
@@ -110,11 +111,11 @@ namespace MagnusBall.Tests.Stepping
                 {
                     // One fixed "step" of exactly this frame's length, landing located by the driver's own rule.
                     var driver = new FixedStepDriver(model, integrator, h, state, maxFrameDeltaSeconds: h);
-                    var events = new FrameEvent[4];
+                    var events = new FlightEvent[4];
                     AdvanceResult result = driver.Advance(h, events);
                     for (int i = 0; i < result.EventCount; i++)
                     {
-                        if (events[i].Kind == FrameEventKind.Landing)
+                        if (events[i].Kind == FlightEventKinds.Landing)
                         {
                             return events[i].Position;
                         }

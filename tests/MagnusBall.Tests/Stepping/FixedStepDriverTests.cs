@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -122,14 +123,14 @@ namespace MagnusBall.Tests.Stepping
         public void Landing_IsReportedOnce_OnTheGround_AndEndsTheFlight()
         {
             FixedStepDriver driver = NewDriver();
-            var events = new FrameEvent[4];
-            var landings = new List<FrameEvent>();
+            var events = new FlightEvent[4];
+            var landings = new List<FlightEvent>();
             for (int i = 0; i < 200; i++)
             {
                 AdvanceResult result = driver.Advance(1.0 / 60, events);
                 for (int e = 0; e < result.EventCount; e++)
                 {
-                    if (events[e].Kind != FrameEventKind.Apex)
+                    if (events[e].Kind != FlightEventKinds.Apex)
                     {
                         landings.Add(events[e]);
                     }
@@ -137,8 +138,8 @@ namespace MagnusBall.Tests.Stepping
             }
 
             Assert.That(landings, Has.Count.EqualTo(1));
-            FrameEvent landing = landings[0];
-            Assert.That(landing.Kind, Is.EqualTo(FrameEventKind.Landing));
+            FlightEvent landing = landings[0];
+            Assert.That(landing.Kind, Is.EqualTo(FlightEventKinds.Landing));
             Assert.That(landing.PlaneIndex, Is.EqualTo(-1));
             // 1e-12 m: the crossing is bisected to 1e-15 of a step, where the ball moves about 0.1 m.
             Assert.That(landing.Position.Y, Is.EqualTo(0).Within(1e-12));
@@ -153,8 +154,8 @@ namespace MagnusBall.Tests.Stepping
         {
             // RK4 at 1/64 s against RK4 at 1/8192 s: the located landing (not the step below ground) agrees
             // to 1e-5 m, the accuracy issue 3 asks of event location at 1/60 s.
-            FrameEvent coarse = DriverShots.LandWithDriver(DriverShots.YUpTennis, RungeKutta4.Instance, 1.0 / 64, DriverShots.Drive, DriverShots.FixedRate(60, 1));
-            FrameEvent fine = DriverShots.LandWithDriver(DriverShots.YUpTennis, RungeKutta4.Instance, 1.0 / 8192, DriverShots.Drive, DriverShots.FixedRate(60, 1));
+            FlightEvent coarse = DriverShots.LandWithDriver(DriverShots.YUpTennis, RungeKutta4.Instance, 1.0 / 64, DriverShots.Drive, DriverShots.FixedRate(60, 1));
+            FlightEvent fine = DriverShots.LandWithDriver(DriverShots.YUpTennis, RungeKutta4.Instance, 1.0 / 8192, DriverShots.Drive, DriverShots.FixedRate(60, 1));
             TestContext.Out.WriteLine($"landing 1/64 s: {coarse.Position}, 1/8192 s: {fine.Position}, difference {Vector3d.Distance(coarse.Position, fine.Position):G3} m");
             Assert.That(Vector3d.Distance(coarse.Position, fine.Position), Is.LessThan(1e-5));
         }
@@ -170,9 +171,9 @@ namespace MagnusBall.Tests.Stepping
                 new Plane(new Vector3d(5, 0, 0), -Vector3d.UnitX),      // crossed against its normal: not reported
             };
             FixedStepDriver driver = NewDriver(planes: planes);
-            Span<FrameEvent> events = stackalloc FrameEvent[8];
+            Span<FlightEvent> events = stackalloc FlightEvent[8];
             // One long frame holding the whole flight, so the ordering is within one buffer.
-            var reported = new List<FrameEvent>();
+            var reported = new List<FlightEvent>();
             for (int i = 0; i < 8 && !driver.IsFinished; i++)
             {
                 AdvanceResult result = driver.Advance(0.25, events);
@@ -182,12 +183,12 @@ namespace MagnusBall.Tests.Stepping
                 }
             }
 
-            FrameEvent apex = reported.Find(e => e.Kind == FrameEventKind.Apex);
+            FlightEvent apex = reported.Find(e => e.Kind == FlightEventKinds.Apex);
             // 1e-9 m/s: the apex is located to 1e-12 s, where the vertical speed changes by 1e-11 m/s.
             Assert.That(apex.State.Velocity.Y, Is.EqualTo(0).Within(1e-9));
-            reported.RemoveAll(e => e.Kind == FrameEventKind.Apex);
+            reported.RemoveAll(e => e.Kind == FlightEventKinds.Apex);
             Assert.That(reported.ConvertAll(e => e.PlaneIndex), Is.EqualTo(new[] { 1, 0, -1 }));
-            Assert.That(reported[2].Kind, Is.EqualTo(FrameEventKind.Landing));
+            Assert.That(reported[2].Kind, Is.EqualTo(FlightEventKinds.Landing));
             // 1e-12 m: bisection to 1e-15 of a step.
             Assert.That(reported[0].Position.X, Is.EqualTo(11.885).Within(1e-12));
             Assert.That(reported[1].Position.X, Is.EqualTo(18).Within(1e-12));
@@ -215,7 +216,7 @@ namespace MagnusBall.Tests.Stepping
         public void AWholeFlight_AllocatesNothing(bool bouncing)
         {
             var planes = new[] { new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX) };
-            var events = new FrameEvent[4];
+            var events = new FlightEvent[4];
             double[] deltas = DriverShots.Jittery(7, 64);
             FixedStepDriver driver = NewDriver(planes: planes, bounce: bouncing ? CrossBounce.Clay : null);
             Fly(driver, events, deltas); // warm up: JIT and static initialisation
@@ -229,7 +230,7 @@ namespace MagnusBall.Tests.Stepping
             Assert.That(render.IsFinite, Is.True);
         }
 
-        private static int Fly(FixedStepDriver driver, FrameEvent[] events, double[] deltas)
+        private static int Fly(FixedStepDriver driver, FlightEvent[] events, double[] deltas)
         {
             int frame = 0;
             while (!driver.IsFinished && frame < 10_000)

@@ -1,3 +1,4 @@
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
@@ -21,12 +22,12 @@ namespace MagnusBall.Tests.Stepping
         {
             // Before: the ball fell through the floor (z = -77 m after 5 s) and the flight never ended.
             var driver = new FixedStepDriver(Model, RungeKutta4.Instance, Step, Level);
-            var events = new FrameEvent[8];
+            var events = new FlightEvent[8];
             AdvanceResult result = driver.Advance(1.0 / 60, events);
             Assert.That(driver.IsFinished, Is.True);
             Assert.That(result.StepsTaken, Is.EqualTo(1));
             Assert.That(result.EventCount, Is.EqualTo(1));
-            Assert.That(events[0].Kind, Is.EqualTo(FrameEventKind.Landing));
+            Assert.That(events[0].Kind, Is.EqualTo(FlightEventKinds.Landing));
             Assert.That(events[0].Time, Is.EqualTo(0));
             Assert.That(driver.State.Position, Is.EqualTo(Level.Position));
         }
@@ -42,7 +43,7 @@ namespace MagnusBall.Tests.Stepping
                 Assert.That(driver.State.Position.Z, Is.GreaterThanOrEqualTo(0), $"frame {frame}");
             }
 
-            Assert.That(driver.BouncingFlight!.Phase, Is.Not.EqualTo(FlightPhase.Flying));
+            Assert.That(driver.Phase, Is.Not.EqualTo(FlightPhase.Flying));
         }
     }
 }

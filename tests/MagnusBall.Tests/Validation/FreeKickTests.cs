@@ -1,5 +1,6 @@
 using System;
 using System.Text.Json;
+using MagnusBall.Flight;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using MagnusBall.Queries;

@@ -15,8 +15,8 @@ namespace MagnusBall.Integration
     /// <para>Two ways to use it:</para>
     /// <list type="bullet">
     /// <item>As a fixed-step <see cref="IIntegrator"/>: <see cref="Step"/> takes the fifth-order solution
-    /// of one step and ignores the error estimate. Six evaluations per step (k1, passed in, and k2..k6);
-    /// the FSAL stage k7 = f(y1) is the caller's next k1, as for every integrator here.</item>
+    /// of one step and ignores the error estimate. Six evaluations per step (k2..k6 and the FSAL stage
+    /// k7 = f(y1), returned as the end derivative: the caller's next k1, as for every integrator here).</item>
     /// <item>Adaptively: <see cref="TryStep"/> attempts one step and reports whether its estimated error is
     /// within the tolerances, the step to try next, the end derivative (k7, so a loop pays six evaluations per
     /// accepted step) and a <see cref="DormandPrince54Step"/> with the dense output;
@@ -83,15 +83,21 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => 6;
 
         /// <summary>
-        /// Takes one fixed step with the fifth-order solution (no error control). Six evaluations in all,
-        /// counting k1, which the caller passes in.
+        /// Takes one fixed step with the fifth-order solution (no error control). Six evaluations: k2..k6 and
+        /// the end derivative k7 (k1 is passed in).
         /// </summary>
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
             Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
-            return Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+            // First same as last: the seventh stage is the derivative at the fifth-order end.
+            endDerivative = model.Derivative(end);
+            evaluations = 6;
+            return end;
         }
 
         /// <summary>

@@ -14,7 +14,7 @@ namespace MagnusBall.Integration
     /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.5 kB): pass it by
     /// reference (<c>in</c>) where it matters.
     /// </remarks>
-    public readonly struct DormandPrince54Step
+    public readonly struct DormandPrince54Step : IDenseOutput
     {
         private readonly StateDerivative _slopeDefect; // h k1 - dy
         private readonly StateDerivative _r4;
@@ -111,6 +111,136 @@ namespace MagnusBall.Integration
                 Blend(y0.Velocity, y1.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration, theta, rest),
                 Blend(y0.AngularVelocity, y1.AngularVelocity, _slopeDefect.AngularAcceleration, _r4.AngularAcceleration, _r5.AngularAcceleration, theta, rest),
                 theta == 1 ? y1.Time : y0.Time + theta * Step);
+        }
+
+        /// <inheritdoc />
+        public double StartTime => Start.Time;
+
+        /// <inheritdoc />
+        public double EndTime => End.Time;
+
+        /// <inheritdoc />
+        public FlightState StateAt(double time) => Interpolate(time);
+
+        /// <inheritdoc />
+        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
+        {
+            double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
+            var condition = new PlaneDistance(plane, sign);
+            double slope0 = sign * plane.NormalSpeed(StartDerivative.Velocity);
+            return FirstFall(condition, startsFlight, slope0, out time);
+        }
+
+        /// <inheritdoc />
+        public bool TryFindApex(in Vector3d up, out double time) => FirstFall(new UpSpeed(up), false, 0, out time);
+
+        /// <summary>Samples per step when looking for a sign change of a condition on the quartic interpolant.</summary>
+        private const int Samples = 8;
+
+        // The first fall of g from > 0 to <= 0 on the interpolant: sampled at 9 points (the quartic in theta has at most 3
+        // turning points, so 8 intervals catch every sign change a flight produces within one accepted step), then
+        // refined by the Illinois method to HermiteSegment.TimeTolerance. Bounded: at most 200 refinement passes.
+        private bool FirstFall<TCondition>(in TCondition condition, bool fromZero, double slope0, out double time)
+            where TCondition : struct, IStepCondition
+        {
+            time = 0;
+            double g0 = condition.Value(Start);
+            if (!double.IsFinite(g0))
+            {
+                return false;
+            }
+
+            if (fromZero && g0 == 0 && slope0 < 0)
+            {
+                time = Start.Time;
+                return true;
+            }
+
+            double lo = 0, glo = g0;
+            for (int i = 1; i <= Samples; i++)
+            {
+                double theta = (double)i / Samples;
+                double g = condition.Value(i == Samples ? End : InterpolateFraction(theta));
+                if (glo > 0 && g <= 0)
+                {
+                    time = Refine(condition, lo, glo, theta, g);
+                    return true;
+                }
+
+                lo = theta;
+                glo = g;
+            }
+
+            return false;
+        }
+
+        private double Refine<TCondition>(in TCondition condition, double lo, double glo, double hi, double ghi)
+            where TCondition : struct, IStepCondition
+        {
+            double tolerance = Step > 0 ? HermiteSegment.TimeTolerance / Step : 1;
+            int side = 0;
+            for (int i = 0; i < 200 && hi - lo > tolerance && ghi != 0; i++)
+            {
+                double theta = (glo * hi - ghi * lo) / (glo - ghi);
+                if (!(theta > lo && theta < hi))
+                {
+                    theta = 0.5 * (lo + hi);
+                }
+
+                double g = condition.Value(InterpolateFraction(theta));
+                if (g > 0)
+                {
+                    lo = theta;
+                    glo = g;
+                    if (side == -1)
+                    {
+                        ghi *= 0.5;
+                    }
+
+                    side = -1;
+                }
+                else
+                {
+                    hi = theta;
+                    ghi = g;
+                    if (side == 1)
+                    {
+                        glo *= 0.5;
+                    }
+
+                    side = 1;
+                }
+            }
+
+            return hi >= 1 ? End.Time : Start.Time + hi * Step;
+        }
+
+        private interface IStepCondition
+        {
+            double Value(in FlightState state);
+        }
+
+        private readonly struct PlaneDistance : IStepCondition
+        {
+            private readonly Plane _plane;
+            private readonly double _sign;
+
+            public PlaneDistance(in Plane plane, double sign)
+            {
+                _plane = plane;
+                _sign = sign;
+            }
+
+            public double Value(in FlightState state) => _sign * _plane.SignedDistance(state.Position);
+        }
+
+        private readonly struct UpSpeed : IStepCondition
+        {
+            private readonly Vector3d _up;
+
+            public UpSpeed(in Vector3d up) => _up = up;
+
+            public double Value(in FlightState state) => Vector3d.Dot(state.Velocity, _up);
         }
 
         private static Vector3d Blend(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5, double theta, double rest) =>

@@ -20,10 +20,15 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => 1;
 
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            return state.Advance(derivative, step);
+            FlightState end = state.Advance(derivative, step);
+            endDerivative = model.Derivative(end);
+            evaluations = 1;
+            return end;
         }
     }
 
@@ -47,15 +52,20 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => 1;
 
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
             Vector3d velocity = state.Velocity + derivative.Acceleration * step;
-            return new FlightState(
+            var end = new FlightState(
                 state.Position + velocity * step,
                 velocity,
                 state.AngularVelocity + derivative.AngularAcceleration * step,
                 state.Time + step);
+            endDerivative = model.Derivative(end);
+            evaluations = 1;
+            return end;
         }
     }
 }

@@ -7,13 +7,12 @@ namespace MagnusBall.Integration
     /// thread-safe and allocate nothing per step.
     /// </summary>
     /// <remarks>
-    /// <para>Every method here starts from the derivative at the start of the step (k1 = f(y_n)). The caller
-    /// passes it in, because a stepping loop already has it: the derivative at the end of one step is the
-    /// one the next step starts from, and it is also what the cubic Hermite dense output needs at the step's
-    /// end. So a loop pays <see cref="DerivativeEvaluationsPerStep"/> evaluations per step in all, and the
-    /// events between steps cost no extra evaluation. Use
-    /// <see cref="IntegratorExtensions.Step(IIntegrator, FlightModel, in FlightState, double)"/> when
-    /// you do not have it.</para>
+    /// <para>Every method here starts from the derivative at the start of the step (k1 = f(y_n)) and returns the
+    /// derivative at the end of the step together with the end state. A stepping loop passes the one back in as
+    /// the other: the end derivative of one step is the start derivative of the next, and it is also what the
+    /// cubic Hermite dense output needs at the step's end. So no point is evaluated twice, and a loop pays
+    /// exactly the <c>evaluations</c> each step reports (<see cref="DerivativeEvaluationsPerStep"/> for the
+    /// fixed methods; more for <see cref="StableIntegrator"/> when it substeps).</para>
     /// </remarks>
     public interface IIntegrator
     {
@@ -24,8 +23,9 @@ namespace MagnusBall.Integration
         int Order { get; }
 
         /// <summary>
-        /// Derivative evaluations one step costs, counting the start derivative k1 that the caller passes
-        /// in (and that the previous step's end provides): 1 for the Euler methods, 2 for Heun, 4 for RK4.
+        /// Derivative evaluations one step costs when it does not substep, counting the end derivative it
+        /// returns (the next step's k1) and not the start derivative passed in: 1 for the Euler methods, 2 for
+        /// Heun, 4 for RK4, 6 for Dormand-Prince 5(4).
         /// </summary>
         int DerivativeEvaluationsPerStep { get; }
 
@@ -34,19 +34,25 @@ namespace MagnusBall.Integration
         /// <param name="state">The state at the start of the step; every component finite.</param>
         /// <param name="derivative">model.Derivative(state), the derivative at the start of the step.</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
-        /// <returns>The state at time state.Time + step.</returns>
+        /// <param name="endDerivative">model.Derivative of the returned state (evaluated once, here).</param>
+        /// <param name="evaluations">The model evaluations this call made, the end derivative included.</param>
+        /// <returns>The state at time state.Time + step. A step far beyond the method's stability limit can
+        /// return a non-finite state or derivative; the caller decides (the flight core refuses such a step).</returns>
         /// <exception cref="ArgumentException">
         /// The state is not finite or the step is not finite and positive (checked before any work).
         /// </exception>
-        FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step);
+        FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations);
     }
 
-    /// <summary>Conveniences over <see cref="IIntegrator"/>, and lookup by name.</summary>
+    /// <summary>Conveniences over <see cref="IIntegrator"/> for a single step outside a stepping loop.</summary>
     public static class IntegratorExtensions
     {
         /// <summary>
-        /// Advances <paramref name="state"/> by <paramref name="step"/> seconds, evaluating the start
-        /// derivative itself.
+        /// Advances <paramref name="state"/> by <paramref name="step"/> seconds, evaluating the start derivative
+        /// itself and discarding the end derivative. For one step; a loop should call
+        /// <see cref="IIntegrator.Step"/> and pass each end derivative on (as the flight core does).
         /// </summary>
         /// <param name="integrator">The method.</param>
         /// <param name="model">The flight model.</param>
@@ -57,7 +63,23 @@ namespace MagnusBall.Integration
         {
             Require.NotNull(integrator, nameof(integrator));
             StepArguments.Check(model, state, step);
-            return integrator.Step(model, state, model.Derivative(state), step);
+            return integrator.Step(model, state, model.Derivative(state), step, out _, out _);
+        }
+
+        /// <summary>
+        /// Advances <paramref name="state"/> by <paramref name="step"/> seconds from its known start derivative,
+        /// discarding the end derivative (one evaluation a loop would reuse). For one step.
+        /// </summary>
+        /// <param name="integrator">The method.</param>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
+        public static FlightState Step(this IIntegrator integrator, FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        {
+            Require.NotNull(integrator, nameof(integrator));
+            return integrator.Step(model, state, derivative, step, out _, out _);
         }
     }
 

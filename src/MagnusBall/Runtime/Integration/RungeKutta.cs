@@ -19,16 +19,21 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => 2;
 
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
             StateDerivative k2 = model.Derivative(state.Advance(derivative, step));
             double half = 0.5 * step;
-            return new FlightState(
+            var end = new FlightState(
                 state.Position + (derivative.Velocity + k2.Velocity) * half,
                 state.Velocity + (derivative.Acceleration + k2.Acceleration) * half,
                 state.AngularVelocity + (derivative.AngularAcceleration + k2.AngularAcceleration) * half,
                 state.Time + step);
+            endDerivative = model.Derivative(end);
+            evaluations = 2;
+            return end;
         }
     }
 
@@ -51,7 +56,9 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => 4;
 
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
             double half = 0.5 * step;
@@ -59,12 +66,15 @@ namespace MagnusBall.Integration
             StateDerivative k3 = model.Derivative(state.Advance(k2, half));
             StateDerivative k4 = model.Derivative(state.Advance(k3, step));
             double sixth = step / 6.0;
-            return new FlightState(
+            var end = new FlightState(
                 state.Position + (derivative.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
                 state.Velocity + (derivative.Acceleration + 2.0 * (k2.Acceleration + k3.Acceleration) + k4.Acceleration) * sixth,
                 state.AngularVelocity +
                 (derivative.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
                 state.Time + step);
+            endDerivative = model.Derivative(end);
+            evaluations = 4;
+            return end;
         }
     }
 }

@@ -39,7 +39,7 @@ namespace MagnusBall.Integration
         public const double DefaultStiffnessLimit = 1.0;
 
         /// <summary>The most substeps one call takes before it gives up subdividing (a guard, never reached by physical input).</summary>
-        public const int MaximumSubsteps = 1_000_000;
+        public const int MaximumSubsteps = 10_000;
 
         /// <summary>
         /// The stiffness rate sigma, 1/s (see the class remarks): an upper estimate of the largest decay or rotation
@@ -53,13 +53,13 @@ namespace MagnusBall.Integration
         public static double StiffnessRate(FlightModel model, in FlightState state, double step)
         {
             StepArguments.Check(model, state, step);
-            return Rate(model, state, step);
+            return model.StiffnessRate(state, step);
         }
 
         /// <summary>
         /// The number of equal substeps that keeps h_sub sigma within <paramref name="stiffnessLimit"/> over a step of
         /// <paramref name="step"/> seconds, judged at the start of the step: ceil(step sigma / limit), at least 1.
-        /// <see cref="Step"/> re-judges at every substep and may take fewer.
+        /// <see cref="Step(IIntegrator, FlightModel, in FlightState, in StateDerivative, double, out StateDerivative, out int, double)"/> re-judges at every substep and may take fewer.
         /// </summary>
         /// <param name="model">The flight model.</param>
         /// <param name="state">The state; every component finite.</param>
@@ -71,12 +71,12 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             CheckLimit(stiffnessLimit);
-            return Count(step * Rate(model, state, step) / stiffnessLimit);
+            return Count(step * model.StiffnessRate(state, step) / stiffnessLimit);
         }
 
         /// <summary>
         /// Advances <paramref name="state"/> by <paramref name="step"/> seconds with <paramref name="integrator"/>, in as
-        /// many substeps as stability needs (one in the common case). Allocates nothing.
+        /// many substeps as stability needs (one in the common case), at most <see cref="MaximumSubsteps"/>. Allocates nothing.
         /// </summary>
         /// <param name="integrator">The fixed-step method.</param>
         /// <param name="model">The flight model.</param>
@@ -85,10 +85,12 @@ namespace MagnusBall.Integration
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="endDerivative">model.Derivative of the returned state: the next step's start derivative and
         /// the end slope a cubic Hermite over the whole step needs.</param>
-        /// <param name="substeps">How many substeps were taken (evaluations = substeps x the integrator's per-step count).</param>
+        /// <param name="substeps">How many substeps were taken (evaluations: substeps x the integrator's per-step count).</param>
         /// <param name="stiffnessLimit">The bound on h_sub sigma; finite, in (0, 2.5]. The default, 1, is stable and
         /// accurate for every shipped integrator.</param>
-        /// <returns>The state at state.Time + step.</returns>
+        /// <returns>The state at state.Time + step. When even <see cref="MaximumSubsteps"/> substeps are too long (a
+        /// finite but absurd state, such as a speed of 1e150 m/s), the step is taken in that many and may come out
+        /// non-finite: the flight core then refuses it as diverged.</returns>
         /// <exception cref="ArgumentException">An argument is out of range (the message names it).</exception>
         public static FlightState Step(
             IIntegrator integrator,
@@ -98,7 +100,20 @@ namespace MagnusBall.Integration
             double step,
             out StateDerivative endDerivative,
             out int substeps,
-            double stiffnessLimit = DefaultStiffnessLimit)
+            double stiffnessLimit = DefaultStiffnessLimit) =>
+            Step(integrator, model, state, derivative, step, out endDerivative, out substeps, out _, stiffnessLimit);
+
+        /// <summary>The step of the public overload, also reporting the model evaluations made (the end derivative included).</summary>
+        internal static FlightState Step(
+            IIntegrator integrator,
+            FlightModel model,
+            in FlightState state,
+            in StateDerivative derivative,
+            double step,
+            out StateDerivative endDerivative,
+            out int substeps,
+            out int evaluations,
+            double stiffnessLimit)
         {
             Require.NotNull(integrator, nameof(integrator));
             StepArguments.Check(model, state, step);
@@ -108,74 +123,35 @@ namespace MagnusBall.Integration
             FlightState current = state;
             StateDerivative slope = derivative;
             substeps = 0;
+            evaluations = 0;
             double remaining = step;
+            // Bounded: every pass takes one substep, and the total is capped at MaximumSubsteps.
             while (true)
             {
-                int count = Count(remaining * Rate(model, current, remaining) / stiffnessLimit);
+                int count = Count(remaining * model.StiffnessRate(current, remaining) / stiffnessLimit);
                 if (substeps + count > MaximumSubsteps)
                 {
                     count = Math.Max(1, MaximumSubsteps - substeps);
                 }
 
-                double h = remaining / count;
+                double h = count == 1 ? remaining : remaining / count;
                 substeps++;
+                FlightState next = integrator.Step(model, current, slope, h, out slope, out int used);
+                evaluations += used;
                 if (count == 1)
                 {
-                    FlightState end = integrator.Step(model, current, slope, remaining);
-                    end = new FlightState(end.Position, end.Velocity, end.AngularVelocity, endTime);
-                    endDerivative = model.Derivative(end);
-                    return end;
+                    endDerivative = slope;
+                    return new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
                 }
 
-                current = integrator.Step(model, current, slope, h);
-                slope = model.Derivative(current);
+                current = next;
                 remaining = endTime - current.Time;
-                if (!(remaining > 0))
+                if (!(remaining > 0) || !current.IsFinite)
                 {
                     endDerivative = slope;
                     return new FlightState(current.Position, current.Velocity, current.AngularVelocity, endTime);
                 }
             }
-        }
-
-        private static double Rate(FlightModel model, in FlightState state, double step)
-        {
-            bool aerodynamic = model.Air.Density > 0 && (model.Drag != null || model.Lift != null);
-            if (!aerodynamic && model.SpinDecay == null)
-            {
-                return 0;
-            }
-
-            double speed = (state.Velocity - model.Air.Wind).Length;
-            double fastest = speed + model.Gravity.Length * step;
-            // Within 10 % of the speed (the common case: g h is 0.04 m/s at 1/240 s) one evaluation at s_max with a 10 %
-            // margin stands for both ends; otherwise both ends are evaluated.
-            double rate = fastest <= 1.1 * speed
-                ? 1.1 * RateAt(model, state.AngularVelocity, fastest, aerodynamic)
-                : Math.Max(RateAt(model, state.AngularVelocity, speed, aerodynamic), RateAt(model, state.AngularVelocity, fastest, aerodynamic));
-            return double.IsFinite(rate) ? rate : double.MaxValue;
-        }
-
-        // 2 k s (C_D + |C_L|) at air speed s with the whole spin taken as transverse (the most lift it can give), plus the
-        // spin-decay rate |dw/dt| / |w| there.
-        private static double RateAt(FlightModel model, in Vector3d spin, double speed, bool aerodynamic)
-        {
-            double spinRate = spin.Length;
-            var conditions = new AeroConditions(speed, spinRate, spinRate, model.Ball.Radius, model.Air.Density, model.Air.DynamicViscosity);
-            double rate = 0;
-            if (aerodynamic && speed > 0)
-            {
-                double drag = model.Drag?.DragCoefficient(conditions) ?? 0;
-                double lift = model.Lift != null && spinRate > 0 ? Math.Abs(model.Lift.LiftCoefficient(conditions)) : 0;
-                rate = 2 * model.AerodynamicFactor * speed * (Math.Abs(drag) + lift);
-            }
-
-            if (model.SpinDecay != null && spinRate > 0)
-            {
-                rate += model.SpinDecay.SpinAcceleration(spin, conditions).Length / spinRate;
-            }
-
-            return rate;
         }
 
         private static int Count(double ratio)
@@ -241,7 +217,9 @@ namespace MagnusBall.Integration
         public int DerivativeEvaluationsPerStep => Inner.DerivativeEvaluationsPerStep;
 
         /// <inheritdoc />
-        public FlightState Step(FlightModel model, in FlightState state, in StateDerivative derivative, double step) =>
-            StableStepping.Step(Inner, model, state, derivative, step, out _, out _, StiffnessLimit);
+        public FlightState Step(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step,
+            out StateDerivative endDerivative, out int evaluations) =>
+            StableStepping.Step(Inner, model, state, derivative, step, out endDerivative, out _, out evaluations, StiffnessLimit);
     }
 }

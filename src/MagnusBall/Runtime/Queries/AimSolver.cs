@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
@@ -124,6 +125,7 @@ namespace MagnusBall.Queries
         public const double SpeedTolerance = 1e-8;
 
         private readonly FlightStepper _stepper;
+        private readonly Plane[] _trialPlane = new Plane[1]; // the plane of the current trial, watched by _stepper's event set
         private int _simulations;
 
         /// <summary>Creates a solver.</summary>
@@ -177,7 +179,9 @@ namespace MagnusBall.Queries
             MaximumElevationRadians = maximumElevationDegrees * (Math.PI / 180);
             ElevationScanRadians = elevationScanDegrees * (Math.PI / 180);
             MaximumSpeed = Require.Positive(maximumSpeed, nameof(maximumSpeed));
-            _stepper = new FlightStepper(model, integrator);
+            // The trials fly through the one flight core; their event set watches the ground and one plane, which each
+            // trial sets (the set shares _trialPlane instead of copying it: no allocation per trial).
+            _stepper = new FlightStepper(model, integrator, FlightEventSet.Sharing(ground, _trialPlane));
         }
 
         /// <summary>The flight model.</summary>
@@ -582,37 +586,41 @@ namespace MagnusBall.Queries
         {
             _simulations++;
             FlightStepper stepper = _stepper;
+            _trialPlane[0] = plane;
             stepper.Reset(launch);
-            Span<Plane> planes = stackalloc Plane[1];
-            planes[0] = plane;
-            Span<FlightEvent> found = stackalloc FlightEvent[3];
             double endTime = launch.Time + MaximumFlightTime;
-            while (stepper.State.Time < endTime)
+            // Bounded: each pass advances the clock by a step, at most MaximumFlightTime / Step + 1 passes; the last
+            // step is trimmed to the time limit (the one end-time rule).
+            while (true)
             {
-                if (!stepper.TryStep(Step))
+                double h = FlightStepper.StepToward(stepper.State.Time, endTime, Step, out bool last);
+                StepOutcome outcome = stepper.TryStep(h, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing);
+                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    break; // diverged: this trial fails (margin -infinity), the solve goes on
+                    break; // this trial fails (margin -infinity), the solve goes on
                 }
 
-                // The first step counts a launch from on the ground into it as a landing at once.
-                int n = FlightEventSet.ScanPlanes(stepper.LastSegment, Vector3d.Zero, Ground, planes, found, stepper.StepCount == 1);
-                Span<FlightEvent> events = found.Slice(0, n);
-                int count = FlightEventSet.CountUntil(events, FlightEventKinds.Landing, out int landing);
-                for (int i = 0; i < count; i++)
+                if (stepper.IsStopped)
                 {
-                    if (events[i].Kind == FlightEventKinds.PlaneCrossing)
+                    // A crossing at the same instant as the landing still arrives.
+                    foreach (FlightEvent e in SpanView.Of(stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                     {
-                        arrival = events[i].State;
-                        landed = false;
-                        return true;
+                        if (e.Kind == FlightEventKinds.PlaneCrossing)
+                        {
+                            arrival = e.State;
+                            landed = false;
+                            return true;
+                        }
                     }
-                }
 
-                if (landing >= 0)
-                {
-                    arrival = events[landing].State;
+                    arrival = stepper.StopEvent.State;
                     landed = true;
                     return false;
+                }
+
+                if (last)
+                {
+                    break;
                 }
             }
 

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
@@ -20,11 +21,13 @@ namespace MagnusBall.Queries
         /// <param name="steps">Integrator steps taken.</param>
         /// <param name="derivativeEvaluations">Derivative evaluations made (including the start state's).</param>
         /// <param name="diverged">True when the run ended because a step diverged (see <see cref="FlightStepper.TryStep"/>).</param>
-        public Prediction(
+        /// <param name="timeCannotAdvance">True when the run ended because the clock could not advance (see <see cref="StepOutcome.TimeCannotAdvance"/>).</param>
+        internal Prediction(
             in FlightState endState, bool stopped, in FlightEvent stopEvent, int sampleCount, bool samplesTruncated,
-            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations, bool diverged = false)
+            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations, bool diverged = false, bool timeCannotAdvance = false)
         {
             Diverged = diverged;
+            TimeCannotAdvance = timeCannotAdvance;
             EndState = endState;
             Stopped = stopped;
             StopEvent = stopEvent;
@@ -68,6 +71,12 @@ namespace MagnusBall.Queries
         /// stability limit for this ball and speed); <see cref="EndState"/> is then the last finite state.
         /// </summary>
         public readonly bool Diverged;
+
+        /// <summary>
+        /// True when the run ended early because the start time is so large that a step no longer advances the clock
+        /// (the state is finite; start the flight at a smaller time). <see cref="EndState"/> is the last state.
+        /// </summary>
+        public readonly bool TimeCannotAdvance;
     }
 
     /// <summary>
@@ -152,18 +161,21 @@ namespace MagnusBall.Queries
             Write(start, positions, states, ref sampleCount, ref samplesTruncated);
 
             double endTime = start.Time + maxDuration;
+            // Bounded: each pass advances the clock by a step (or refuses and returns), so at most
+            // maxDuration / Step + 1 passes.
             while (true)
             {
-                double remaining = endTime - stepper.State.Time;
-                bool last = remaining <= Step * (1 + 1e-9);
-                if (!stepper.TryStep(last ? remaining : Step))
+                double h = FlightStepper.StepToward(stepper.State.Time, endTime, Step, out bool last);
+                StepOutcome outcome = stepper.TryStep(h, stopAt);
+                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
                     return new Prediction(
                         stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,
-                        stepper.StepCount, stepper.DerivativeEvaluations, diverged: true);
+                        stepper.StepCount, stepper.DerivativeEvaluations, diverged: outcome == StepOutcome.Diverged,
+                        timeCannotAdvance: outcome == StepOutcome.TimeCannotAdvance);
                 }
 
-                Span<FlightEvent> found = SpanView.Of(stepper.EventsUntil(stopAt, out bool stopped, out FlightEvent stop));
+                Span<FlightEvent> found = SpanView.Of(stepper.Events); // not the read-only indexer: Mono 6.8 lacks it
                 for (int i = 0; i < found.Length; i++)
                 {
                     if (eventCount < events.Length)
@@ -176,19 +188,11 @@ namespace MagnusBall.Queries
                     }
                 }
 
-                if (stopped)
-                {
-                    Write(stop.State, positions, states, ref sampleCount, ref samplesTruncated);
-                    return new Prediction(
-                        stop.State, true, stop, sampleCount, samplesTruncated, eventCount, eventsTruncated,
-                        stepper.StepCount, stepper.DerivativeEvaluations);
-                }
-
                 Write(stepper.State, positions, states, ref sampleCount, ref samplesTruncated);
-                if (last)
+                if (stepper.IsStopped || last)
                 {
                     return new Prediction(
-                        stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,
+                        stepper.State, stepper.IsStopped, stepper.StopEvent, sampleCount, samplesTruncated, eventCount, eventsTruncated,
                         stepper.StepCount, stepper.DerivativeEvaluations);
                 }
             }

@@ -1,14 +1,14 @@
 using System;
 using MagnusBall.Contact;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
-using MagnusBall.Queries;
 
 namespace MagnusBall.Stepping
 {
     /// <summary>
     /// Turns a game engine's variable frame time into fixed integration steps, so that a shot flies the same
     /// path at 30, 60 or 144 frames per second and through hitches: the MonoBehaviour-style adapter. Call
-    /// <see cref="Advance(double, Span{FrameEvent})"/> once per frame with the frame's delta time, then draw
+    /// <see cref="Advance(double, Span{FlightEvent})"/> once per frame with the frame's delta time, then draw
     /// the ball at <see cref="RenderState"/>.
     /// </summary>
     /// <remarks>
@@ -23,13 +23,14 @@ namespace MagnusBall.Stepping
     /// <para>The seed thesis (Agrawal 2023, section 3.1.3) stepped its ODE once per frame with Unity's
     /// <c>Time.deltaTime</c>, so its landing point depended on the frame rate; docs/unity.md puts numbers
     /// on that difference.</para>
-    /// <para>Events (landing, bounces, apex, plane crossings) are located inside the step where they happen
-    /// by <see cref="FlightEventSet.Scan"/> on the step's cubic Hermite (<see cref="HermiteSegment"/>; no extra
-    /// derivative evaluation) and written to a caller-provided buffer. Without a bounce model the flight ends
-    /// at the first landing (the last step is cut there). With one, each fixed step is a
-    /// <see cref="BouncingFlight.Step"/>: contacts are located on the step's Hermite, the bounce is applied at
-    /// the contact time and the step finished from there, so the fixed time grid is kept; the ball rolls once
-    /// a bounce is too weak and the flight ends when it stops. Nothing here allocates after construction.</para>
+    /// <para>The driver only slices time: each fixed step is one <see cref="FlightStepper.TryStep"/> of the library's
+    /// one flight core, which locates the events (landing, bounces, apex, plane crossings) on the step's dense
+    /// output and applies them; the driver copies them to a caller-provided buffer. Without a bounce model the
+    /// flight ends at the first landing (the last step is cut there). With one, the ball bounces at the located
+    /// contact time and the step is finished from there, so the fixed time grid is kept; the ball rolls once a
+    /// bounce is too weak and the flight ends when it comes to rest. A step that would diverge is refused (the
+    /// state stays the last finite one), reported in <see cref="AdvanceResult.Diverged"/> and ends the flight.
+    /// Nothing here allocates after construction.</para>
     /// <para>A driver owns its state and is not thread-safe; the model, integrator, event set and bounce
     /// model it uses are immutable and may be shared by any number of drivers on any threads.</para>
     /// </remarks>
@@ -38,21 +39,11 @@ namespace MagnusBall.Stepping
         /// <summary>The default frame-time clamp, 0.25 s (Fiedler 2004).</summary>
         public const double DefaultMaxFrameDeltaSeconds = 0.25;
 
-        private readonly FlightEventSet? _eventSet;
-        private readonly FlightEvent[] _scratch;
-        private readonly FlightStepper? _stepper;
-        private readonly IBounceModel? _bounce;
-        private readonly BouncingFlight? _flight;
-        private readonly BounceEvent[] _bounceScratch;
-
-        private FlightState _state;
-        private StateDerivative _derivative;
-        private HermiteSegment _latest;
-        private HermiteSegment _older;
-        private int _segmentCount;
+        private readonly FlightStepper _stepper;
+        private readonly FlightEventKinds _stopAt;
+        private HermiteSegment _older; // the step before the last one, for a render time inside it
         private double _accumulator;
-        private bool _finished;
-        private long _totalSteps;
+        private bool _diverged;
 
         /// <summary>
         /// Creates a driver for one ball with the safe default integrator, <see cref="StableIntegrator.RungeKutta4"/>:
@@ -89,16 +80,16 @@ namespace MagnusBall.Stepping
         /// <param name="bounce">
         /// The bounce model, or null (the default): the flight ends at the first landing. With one, the ball
         /// bounces off the court whose ball-centre plane is the event set's ground (the court itself lies one
-        /// radius below it) through a <see cref="BouncingFlight"/>, rolls when a bounce leaves slower than
-        /// <paramref name="restNormalSpeed"/>, and the flight ends when it stops.
+        /// radius below it), rolls when a bounce leaves slower than <paramref name="restNormalSpeed"/>, and the
+        /// flight ends when it comes to rest.
         /// </param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0. Default 0.25 s.</param>
         /// <param name="maxStepsPerAdvance">
-        /// The most fixed steps one <see cref="Advance(double, Span{FrameEvent})"/> call takes; &gt;= 1, or 0
+        /// The most fixed steps one <see cref="Advance(double, Span{FlightEvent})"/> call takes; &gt;= 1, or 0
         /// (the default) for ceil(maxFrameDeltaSeconds / fixedStep) + 1, so that the clamp binds first.
         /// </param>
         /// <param name="restNormalSpeed">With a bounce model: bounces leaving slower than this along the normal start rolling, m/s; finite, &gt;= 0.</param>
-        /// <param name="rollingResistance">With a bounce model: the rolling-resistance coefficient (see <see cref="BouncingFlight"/>); finite, &gt;= 0.</param>
+        /// <param name="rollingResistance">With a bounce model: the rolling-resistance coefficient (see <see cref="GroundContact"/>); finite, &gt;= 0.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
         /// <exception cref="ArgumentException">
         /// A number is out of its range (the message names it), or there is a bounce model but no ground.
@@ -112,13 +103,13 @@ namespace MagnusBall.Stepping
             IBounceModel? bounce = null,
             double maxFrameDeltaSeconds = DefaultMaxFrameDeltaSeconds,
             int maxStepsPerAdvance = 0,
-            double restNormalSpeed = BouncingFlight.DefaultRestNormalSpeed,
-            double rollingResistance = BouncingFlight.DefaultRollingResistance)
+            double restNormalSpeed = GroundContact.DefaultRestNormalSpeed,
+            double rollingResistance = GroundContact.DefaultRollingResistance)
         {
-            Model = Require.NotNull(model, nameof(model));
-            Integrator = Require.NotNull(integrator, nameof(integrator));
+            Require.NotNull(model, nameof(model));
+            Require.NotNull(integrator, nameof(integrator));
             FixedStep = Require.Step(fixedStep, nameof(fixedStep));
-            RequireFiniteState(start, nameof(start));
+            Require.FiniteState(start, nameof(start));
             MaxFrameDeltaSeconds = Require.Positive(maxFrameDeltaSeconds, nameof(maxFrameDeltaSeconds));
             Require.NonNegative(restNormalSpeed, nameof(restNormalSpeed));
             Require.NonNegative(rollingResistance, nameof(rollingResistance));
@@ -131,37 +122,31 @@ namespace MagnusBall.Stepping
             double defaultSteps = Math.Ceiling(maxFrameDeltaSeconds / fixedStep) + 1;
             MaxStepsPerAdvance = maxStepsPerAdvance > 0 ? maxStepsPerAdvance : (int)Math.Min(defaultSteps, int.MaxValue);
 
-            _eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
-            // Only the bouncing path scans steps itself; without a bounce model the FlightStepper holds the events.
-            _scratch = new FlightEvent[bounce == null ? 0 : _eventSet?.MaximumEventsPerStep ?? 0];
-            _bounce = bounce;
-            _bounceScratch = new BounceEvent[bounce == null ? 0 : BouncingFlight.MaxSegmentsPerStep];
+            FlightEventSet? eventSet = events ?? (model.Up.LengthSquared > 0 ? FlightEventSet.ForModel(model) : null);
+            GroundContact? contact = null;
             if (bounce != null)
             {
-                if (_eventSet?.Ground == null)
+                if (eventSet?.Ground == null)
                 {
                     throw new ArgumentException("bounce needs a ground plane to bounce on: give events with a ground (or a model with gravity).", nameof(bounce));
                 }
 
                 // The event set's ground is where the ball's centre touches down; the court lies one radius below.
-                Plane ground = _eventSet.Ground.Value;
+                Plane ground = eventSet.Ground.Value;
                 var court = new Plane(ground.Point - ground.Normal * model.Ball.Radius, ground.Normal);
-                _flight = new BouncingFlight(model, integrator, bounce, court, start, restNormalSpeed, rollingResistance);
+                contact = new GroundContact(bounce, court, restNormalSpeed, rollingResistance);
             }
 
-            else
-            {
-                _stepper = new FlightStepper(model, integrator, _eventSet);
-            }
-
+            _stepper = new FlightStepper(model, integrator, eventSet, contact);
+            _stopAt = contact == null ? FlightEventKinds.Landing : FlightEventKinds.None;
             Reset(start);
         }
 
         /// <summary>The flight model being stepped.</summary>
-        public FlightModel Model { get; }
+        public FlightModel Model => _stepper.Model;
 
         /// <summary>The integrator.</summary>
-        public IIntegrator Integrator { get; }
+        public IIntegrator Integrator => _stepper.Integrator;
 
         /// <summary>The fixed step, s.</summary>
         public double FixedStep { get; }
@@ -173,19 +158,19 @@ namespace MagnusBall.Stepping
         public int MaxStepsPerAdvance { get; }
 
         /// <summary>What the driver looks for in each step (null: nothing).</summary>
-        public FlightEventSet? Events => _eventSet;
+        public FlightEventSet? Events => _stepper.EventSet;
 
         /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
-        public IBounceModel? BounceModel => _bounce;
+        public IBounceModel? BounceModel => _stepper.Contact?.Bounce;
 
-        /// <summary>With a bounce model, the bouncing flight stepped underneath (flying, rolling or stopped); otherwise null.</summary>
-        public BouncingFlight? BouncingFlight => _flight;
+        /// <summary>Flying, rolling or stopped.</summary>
+        public FlightPhase Phase => _stepper.Phase;
 
-        /// <summary>The latest fixed state (the simulation's "now"); without a bounce model, the landing state at the end.</summary>
-        public FlightState State => _flight != null ? _flight.State : _state;
+        /// <summary>The latest fixed state (the simulation's "now"); at the end, the landing or the rest.</summary>
+        public FlightState State => _stepper.State;
 
         /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
-        public FlightState PreviousState => _flight != null ? _flight.PreviousState : _segmentCount > 0 ? _latest.Start : _state;
+        public FlightState PreviousState => _stepper.PreviousState;
 
         /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
@@ -193,14 +178,23 @@ namespace MagnusBall.Stepping
         /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
-        /// <summary>True once the flight has ended (landed without a bounce model, or stopped after bounces and rolling): Advance takes no more steps.</summary>
-        public bool IsFinished => _finished;
+        /// <summary>
+        /// True once the flight has ended: landed without a bounce model, at rest after bounces and rolling, or refused
+        /// a diverging step (<see cref="Diverged"/>). Advance takes no more steps.
+        /// </summary>
+        public bool IsFinished => _stepper.IsStopped || _diverged;
+
+        /// <summary>True when a fixed step diverged (beyond the integrator's stability limit): the flight ended at the last finite state.</summary>
+        public bool Diverged => _diverged;
 
         /// <summary>Fixed steps taken since the last reset.</summary>
-        public long TotalSteps => _totalSteps;
+        public long TotalSteps => _stepper.StepCount;
 
         /// <summary>Bounces since the last reset.</summary>
-        public int Bounces => _flight?.BounceCount ?? 0;
+        public int Bounces => _stepper.BounceCount;
+
+        /// <summary>Model evaluations since the last reset (counted by the flight core: each is one call of the model).</summary>
+        public long DerivativeEvaluations => _stepper.DerivativeEvaluations;
 
         /// <summary>
         /// The simulation time the renderer should show, s: one fixed step behind the simulation,
@@ -211,92 +205,58 @@ namespace MagnusBall.Stepping
         /// <summary>
         /// The state to draw this frame, at <see cref="RenderTime"/>: on the cubic Hermite of the step it falls
         /// in (both ends' states and derivatives, so the drawn path is C1 and keeps the curvature a linear blend
-        /// of the two fixed states would cut). Allocates nothing.
+        /// of the two fixed states would cut), split at bounces. Allocates nothing.
         /// </summary>
         public FlightState RenderState
         {
             get
             {
-                if (_flight != null)
+                FlightState now = _stepper.State;
+                if (_stepper.StepCount == 0)
                 {
-                    // BouncingFlight keeps the Hermite pieces of its last step, split at its bounces.
-                    FlightState now = _flight.State;
-                    return _totalSteps == 0 ? now : _flight.StateAt(Math.Min(now.Time, now.Time - FixedStep + _accumulator));
+                    return now;
                 }
 
-                if (_segmentCount == 0)
+                double time = Math.Min(now.Time, now.Time - FixedStep + _accumulator);
+                if (time < _stepper.PreviousState.Time && _older.Duration > 0)
                 {
-                    return _state;
+                    // A last step cut short (at a landing) and a render time inside the step before it.
+                    return time <= _older.StartTime ? _older.Start : _older.StateAt(time);
                 }
 
-                double time = Math.Min(_state.Time, _state.Time - FixedStep + _accumulator);
-                HermiteSegment segment = _latest;
-                if (time < segment.StartTime && _segmentCount > 1)
-                {
-                    segment = _older;
-                }
-
-                if (time <= segment.StartTime)
-                {
-                    return segment.Start;
-                }
-
-                // At or past the latest segment's end: the current state (after a bounce, the state leaving the ground).
-                return time >= segment.EndTime ? (segment.EndTime == _latest.EndTime ? _state : segment.End) : segment.StateAt(time);
+                return _stepper.StateAt(time);
             }
         }
 
-        /// <summary>
-        /// Restarts the flight from <paramref name="start"/>: clears the accumulator, the finished flag and the counts.
-        /// </summary>
+        /// <summary>Starts a new flight from <paramref name="start"/>: state, accumulator and counters reset.</summary>
         /// <param name="start">The launch state; every component finite.</param>
-        /// <exception cref="ArgumentException">The state is not finite (nothing is changed).</exception>
+        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
         public void Reset(in FlightState start)
         {
-            RequireFiniteState(start, nameof(start));
-            _state = start;
-            _latest = default;
+            Require.FiniteState(start, nameof(start));
+            _stepper.Reset(start);
             _older = default;
-            _segmentCount = 0;
             _accumulator = 0;
-            _finished = false;
-            _totalSteps = 0;
-            _flight?.Reset(start);
-            if (_stepper != null)
-            {
-                // The stepper evaluates the start derivative once; the driver keeps the same one.
-                _stepper.Reset(start);
-                _derivative = _stepper.Derivative;
-            }
-            else
-            {
-                _derivative = Model.Derivative(start);
-            }
+            _diverged = false;
         }
 
-        /// <summary>
-        /// Consumes one frame's time without reporting events (they still happen: read <see cref="IsFinished"/>).
-        /// </summary>
+        /// <summary>Advances by one frame without reporting events (see <see cref="Advance(double, Span{FlightEvent})"/>).</summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0.</param>
-        /// <exception cref="ArgumentOutOfRangeException">The delta is negative, NaN or infinite (nothing is changed).</exception>
-        public AdvanceResult Advance(double frameDeltaSeconds) => Advance(frameDeltaSeconds, Span<FrameEvent>.Empty);
+        /// <returns>What the call did.</returns>
+        /// <exception cref="ArgumentOutOfRangeException">frameDeltaSeconds is negative or not finite (nothing changes).</exception>
+        public AdvanceResult Advance(double frameDeltaSeconds) => Advance(frameDeltaSeconds, Span<FlightEvent>.Empty);
 
         /// <summary>
-        /// Consumes one frame's time in fixed steps and writes what happened in them into
-        /// <paramref name="events"/>, in time order. Allocates nothing.
+        /// Advances by one frame: adds the (clamped) frame time to the accumulator, takes the whole fixed steps it
+        /// holds (at most <see cref="MaxStepsPerAdvance"/>), and writes the events of those steps, in time order,
+        /// into <paramref name="events"/>. Allocates nothing.
         /// </summary>
-        /// <param name="frameDeltaSeconds">
-        /// The frame's delta time, s (Unity: <c>Time.deltaTime</c>); finite and &gt;= 0. Values above
-        /// <see cref="MaxFrameDeltaSeconds"/> are clamped to it.
-        /// </param>
-        /// <param name="events">Where to write the events; those that do not fit are counted in the result.</param>
-        /// <returns>Steps taken, events written and lost, and frame time dropped.</returns>
-        /// <exception cref="ArgumentOutOfRangeException">The delta is negative, NaN or infinite (nothing is changed).</exception>
-        /// <exception cref="InvalidOperationException">
-        /// A fixed step diverged (a plain explicit integrator far beyond its stability limit); the driver is left at
-        /// the last good fixed state, with the failed step's time still in the accumulator.
-        /// </exception>
-        public AdvanceResult Advance(double frameDeltaSeconds, Span<FrameEvent> events)
+        /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0 (Unity: Time.deltaTime).</param>
+        /// <param name="events">Where to write the events (may be empty); those that do not fit are counted in
+        /// <see cref="AdvanceResult.EventsNotReported"/>.</param>
+        /// <returns>What the call did.</returns>
+        /// <exception cref="ArgumentOutOfRangeException">frameDeltaSeconds is negative or not finite (nothing changes).</exception>
+        public AdvanceResult Advance(double frameDeltaSeconds, Span<FlightEvent> events)
         {
             if (!double.IsFinite(frameDeltaSeconds) || frameDeltaSeconds < 0)
             {
@@ -312,17 +272,16 @@ namespace MagnusBall.Stepping
                 frameDeltaSeconds = MaxFrameDeltaSeconds;
             }
 
-            if (_finished)
+            if (IsFinished)
             {
                 // The flight is over: let the render state run to the end and stay there.
                 _accumulator = Math.Min(_accumulator + frameDeltaSeconds, FixedStep);
-                return new AdvanceResult(0, 0, 0, dropped + frameDeltaSeconds);
+                return new AdvanceResult(0, 0, 0, dropped + frameDeltaSeconds, _diverged);
             }
 
             _accumulator += frameDeltaSeconds;
-            int steps = 0;
-            int written = 0;
-            int lost = 0;
+            int steps = 0, written = 0, lost = 0;
+            // Bounded by MaxStepsPerAdvance.
             while (_accumulator >= FixedStep)
             {
                 if (steps == MaxStepsPerAdvance)
@@ -334,146 +293,39 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
-                if (_flight != null)
+                HermiteSegment last = _stepper.LastSegment;
+                StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
+                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    // StepBouncing throws before changing anything when the step diverges.
-                    bool stopped = StepBouncing(events, ref written, ref lost);
-                    steps++;
-                    _totalSteps++;
-                    _accumulator -= FixedStep;
-                    if (stopped)
-                    {
-                        break;
-                    }
-
-                    continue;
-                }
-
-                if (!_stepper!.TryStep(FixedStep))
-                {
-                    // A refused step changes nothing: the stepper keeps its state, the step's time stays in the accumulator.
-                    throw new InvalidOperationException(
-                        $"The fixed step of {Require.Format(FixedStep)} s diverged at t = {Require.Format(_state.Time)} s (the state would not be finite): " +
-                        $"it is beyond {Integrator.Name}'s stability limit for this ball and speed. Use StableIntegrator.RungeKutta4 " +
-                        "(the default of the constructor without an integrator) or a smaller fixed step.");
-                }
-
-                steps++;
-                _totalSteps++;
-                _accumulator -= FixedStep;
-
-                // Events up to the touchdown (those after it lie on the part of the step that never happens).
-                Span<FlightEvent> found = SpanView.Of(_stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent landing));
-                foreach (FlightEvent e in found)
-                {
-                    if (e.Kind != FlightEventKinds.Landing)
-                    {
-                        FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
-                        Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
-                    }
-                }
-
-                if (!landed)
-                {
-                    Push(_stepper.LastSegment);
-                    _state = _stepper.State;
-                    _derivative = _stepper.Derivative;
-                    continue;
-                }
-
-                // Touchdown inside this step: cut the step there.
-                FlightState touch = landing.State;
-                StateDerivative touchDerivative = Model.Derivative(touch);
-                if (touch.Time > _state.Time)
-                {
-                    Push(new HermiteSegment(_state, _derivative, touch, touchDerivative));
-                }
-
-                Write(new FrameEvent(FrameEventKind.Landing, -1, touch), events, ref written, ref lost);
-                _state = touch;
-                _derivative = touchDerivative;
-                _finished = true;
-                break;
-            }
-
-            return new AdvanceResult(steps, written, lost, dropped);
-        }
-
-        /// <summary>
-        /// One fixed step of the bouncing flight; reports its bounces, and its apex and plane crossings when the
-        /// step had no bounce (in a step with a bounce only the bounces are reported). True when the ball stopped.
-        /// </summary>
-        private bool StepBouncing(Span<FrameEvent> events, ref int written, ref int lost)
-        {
-            BouncingFlight flight = _flight!;
-            FlightState before = flight.State;
-            StateDerivative beforeDerivative = flight.Derivative;
-            bool wasFlying = flight.Phase == FlightPhase.Flying;
-            int bounces = flight.Step(FixedStep, _bounceScratch);
-
-            if (bounces == 0 && wasFlying && flight.Phase == FlightPhase.Flying && _eventSet != null)
-            {
-                int found = _eventSet.Scan(new HermiteSegment(before, beforeDerivative, flight.State, flight.Derivative), _scratch, startsFlight: _totalSteps == 0);
-                for (int i = 0; i < found; i++)
-                {
-                    FlightEvent e = _scratch[i];
-                    if (e.Kind != FlightEventKinds.Landing)
-                    {
-                        FrameEventKind kind = e.Kind == FlightEventKinds.Apex ? FrameEventKind.Apex : FrameEventKind.PlaneCrossing;
-                        Write(new FrameEvent(kind, e.PlaneIndex, e.State), events, ref written, ref lost);
-                    }
-                }
-            }
-
-            for (int i = 0; i < bounces; i++)
-            {
-                if (i >= _bounceScratch.Length)
-                {
-                    lost += bounces - i;
+                    // Refused: the stepper kept its last finite state. The flight ends there.
+                    _diverged = true;
+                    dropped += _accumulator;
+                    _accumulator = 0;
                     break;
                 }
 
-                BounceEvent b = _bounceScratch[i];
-                var incoming = new FlightState(b.Position, b.IncomingVelocity, b.IncomingAngularVelocity, b.Time);
-                var outgoing = new FlightState(b.Position, b.Outcome.Velocity, b.Outcome.AngularVelocity, b.Time);
-                Write(new FrameEvent(FrameEventKind.Bounce, -1, incoming, outgoing, b.Outcome.Regime, b.StartedRolling), events, ref written, ref lost);
+                _older = last;
+                steps++;
+                _accumulator -= FixedStep;
+                foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
+                {
+                    if (written < events.Length)
+                    {
+                        events[written++] = e;
+                    }
+                    else
+                    {
+                        lost++;
+                    }
+                }
+
+                if (_stepper.IsStopped)
+                {
+                    break;
+                }
             }
 
-            if (flight.Phase == FlightPhase.Stopped)
-            {
-                Write(new FrameEvent(FrameEventKind.Stop, -1, flight.State), events, ref written, ref lost);
-                _finished = true;
-                return true;
-            }
-
-            return false;
-        }
-
-        private void Push(in HermiteSegment segment)
-        {
-            _older = _latest;
-            _latest = segment;
-            _segmentCount = Math.Min(_segmentCount + 1, 2);
-        }
-
-        private static void Write(in FrameEvent item, Span<FrameEvent> events, ref int written, ref int lost)
-        {
-            if (written < events.Length)
-            {
-                events[written++] = item;
-            }
-            else
-            {
-                lost++;
-            }
-        }
-
-        private static void RequireFiniteState(in FlightState state, string name)
-        {
-            if (!state.IsFinite)
-            {
-                throw new ArgumentException($"{name} must have finite position, velocity, angular velocity and time; got {state}.", name);
-            }
+            return new AdvanceResult(steps, written, lost, dropped, _diverged);
         }
     }
 }

@@ -1,3 +1,4 @@
+using MagnusBall.Flight;
 using MagnusBall;
 using MagnusBall.Presets;
 using MagnusBall.Queries;

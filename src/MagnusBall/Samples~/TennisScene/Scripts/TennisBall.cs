@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall;
 using MagnusBall.Integration;
 using MagnusBall.Stepping;
@@ -113,7 +114,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
         public KeyCode launchKey = KeyCode.Space;
         public KeyCode resetKey = KeyCode.R;
 
-        private readonly FrameEvent[] _events = new FrameEvent[8];
+        private readonly FlightEvent[] _events = new FlightEvent[8];
         private SceneSettings _settings;
         private ShotSimulation _simulation;
         private FixedStepDriver _driver;
@@ -129,7 +130,7 @@ namespace MagnusBall.Samples.TennisScene.Unity
         public bool IsFlying => _flying;
 
         /// <summary>Raised at every touch of the court: each bounce (or, with no surface, the landing that ends the flight).</summary>
-        public event Action<FrameEvent> Touched;
+        public event Action<FlightEvent> Touched;
 
         private void Start()
         {
@@ -215,23 +216,23 @@ namespace MagnusBall.Samples.TennisScene.Unity
             AdvanceResult result = _driver.Advance(frameDelta, _events);
             for (int i = 0; i < result.EventCount; i++)
             {
-                FrameEvent e = _events[i];
+                FlightEvent e = _events[i];
                 switch (e.Kind)
                 {
-                    case FrameEventKind.PlaneCrossing:
+                    case FlightEventKinds.PlaneCrossing:
                         Debug.Log($"net: the ball passes {_simulation.NetClearance(e.Position):F2} m above the cord at t = {e.Time:F3} s");
                         break;
-                    case FrameEventKind.Bounce:
+                    case FlightEventKinds.Bounce:
                         Debug.Log($"bounce at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s: " +
-                                  $"{e.State.Velocity.Length:F1} m/s in, {e.AfterBounce.Velocity.Length:F1} m/s out ({e.Regime})" +
+                                  $"{e.State.Velocity.Length:F1} m/s in, {e.After.Velocity.Length:F1} m/s out ({e.Regime})" +
                                   (e.StartsRolling ? ", now rolling" : string.Empty));
                         Touched?.Invoke(e);
                         break;
-                    case FrameEventKind.Landing:
+                    case FlightEventKinds.Landing:
                         Debug.Log($"lands at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s (no bounce model)");
                         Touched?.Invoke(e);
                         break;
-                    case FrameEventKind.Stop:
+                    case FlightEventKinds.Rest:
                         Debug.Log($"stops at x = {e.Position.X:F2} m, z = {e.Position.Z:F2} m, t = {e.Time:F3} s");
                         break;
                 }

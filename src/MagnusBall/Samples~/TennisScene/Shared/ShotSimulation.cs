@@ -1,5 +1,6 @@
 #nullable enable
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;
@@ -10,7 +11,7 @@ namespace MagnusBall.Samples.TennisScene
     public sealed class ShotReport
     {
         internal ShotReport(
-            TennisShot shot, double? netClearance, FrameEvent? firstBounce, Vector3d? secondBounce, double apexHeight, int pathCount)
+            TennisShot shot, double? netClearance, FlightEvent? firstBounce, Vector3d? secondBounce, double apexHeight, int pathCount)
         {
             Shot = shot;
             NetClearance = netClearance;
@@ -35,7 +36,7 @@ namespace MagnusBall.Samples.TennisScene
         public bool ClearedNet { get; }
 
         /// <summary>The first bounce (state before and after), or null when the ball never came down.</summary>
-        public FrameEvent? FirstBounce { get; }
+        public FlightEvent? FirstBounce { get; }
 
         /// <summary>The contact point of the second bounce on the court (y = 0), or null.</summary>
         public Vector3d? SecondBounce { get; }
@@ -56,13 +57,13 @@ namespace MagnusBall.Samples.TennisScene
         public double DescentAngleDegrees => FirstBounce.HasValue ? -ElevationDegrees(FirstBounce.Value.State.Velocity) : 0;
 
         /// <summary>Speed leaving the first bounce, m/s.</summary>
-        public double SpeedAfterBounce => FirstBounce.HasValue ? FirstBounce.Value.AfterBounce.Velocity.Length : 0;
+        public double SpeedAfterBounce => FirstBounce.HasValue ? FirstBounce.Value.After.Velocity.Length : 0;
 
         /// <summary>Angle leaving the first bounce, deg above the horizontal.</summary>
-        public double ReboundAngleDegrees => FirstBounce.HasValue ? ElevationDegrees(FirstBounce.Value.AfterBounce.Velocity) : 0;
+        public double ReboundAngleDegrees => FirstBounce.HasValue ? ElevationDegrees(FirstBounce.Value.After.Velocity) : 0;
 
         /// <summary>Topspin leaving the first bounce, rpm (negative: backspin): the spin about the axis that topspin has for that direction of travel.</summary>
-        public double TopspinAfterBounceRpm => FirstBounce.HasValue ? TopspinRpm(FirstBounce.Value.AfterBounce) : 0;
+        public double TopspinAfterBounceRpm => FirstBounce.HasValue ? TopspinRpm(FirstBounce.Value.After) : 0;
 
         /// <summary>Whether the first bounce slid throughout or gripped.</summary>
         public BounceRegime BounceRegime => FirstBounce.HasValue ? FirstBounce.Value.Regime : BounceRegime.None;
@@ -154,12 +155,12 @@ namespace MagnusBall.Samples.TennisScene
             }
 
             FixedStepDriver driver = CreateDriver(shot.Launch());
-            Span<FrameEvent> events = stackalloc FrameEvent[8];
+            Span<FlightEvent> events = stackalloc FlightEvent[8];
             int count = 0;
             Append(path, ref count, driver.State.Position);
             double apex = driver.State.Position.Y;
             double? clearance = null;
-            FrameEvent? first = null;
+            FlightEvent? first = null;
             Vector3d? second = null;
             while (second == null && !driver.IsFinished && driver.State.Time < MaxFlightSeconds)
             {
@@ -167,21 +168,21 @@ namespace MagnusBall.Samples.TennisScene
                 AdvanceResult result = driver.Advance(Settings.FixedStep, events);
                 for (int i = 0; i < result.EventCount; i++)
                 {
-                    FrameEvent e = events[i];
+                    FlightEvent e = events[i];
                     switch (e.Kind)
                     {
-                        case FrameEventKind.PlaneCrossing:
+                        case FlightEventKinds.PlaneCrossing:
                             clearance ??= NetClearance(e.Position);
                             break;
-                        case FrameEventKind.Apex:
+                        case FlightEventKinds.Apex:
                             if (first == null)
                             {
                                 apex = Math.Max(apex, e.Position.Y);
                             }
 
                             break;
-                        case FrameEventKind.Bounce:
-                        case FrameEventKind.Landing: // the flight's end when the scene has no bounce model
+                        case FlightEventKinds.Bounce:
+                        case FlightEventKinds.Landing: // the flight's end when the scene has no bounce model
                             Append(path, ref count, e.Position);
                             if (first == null)
                             {

@@ -1,7 +1,8 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
-using MagnusBall.Queries;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
 
 namespace MagnusBall.Cli
 {
@@ -63,15 +64,15 @@ namespace MagnusBall.Cli
     /// the ground plane against its normal) or reaches maxTime, locating the apex and every plane crossing
     /// between steps on the cubic Hermite interpolant.
     /// </summary>
-    internal static class Flight
+    internal static class ScenarioFlight
     {
         public static FlightResult Simulate(Scenario scenario, bool recordSteps)
         {
             FlightModel model = scenario.Model;
             double endTime = scenario.Initial.Time + scenario.MaxTime;
 
-            // The library's shared stepping loop: each step's end derivative is the next step's start, the cubic
-            // Hermite of the step costs nothing more, and the events are located on it to 1e-12 s.
+            // The library's one flight core: each step's end derivative is the next step's start, the cubic Hermite
+            // of the step costs nothing more, and the events are located on it to 1e-12 s.
             Plane? ground = scenario.Ground is NamedPlane g ? new Plane(g.Point, g.Normal) : null;
             var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
             var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
@@ -82,34 +83,36 @@ namespace MagnusBall.Cli
             FlightState? apex = null;
             FlightState? landing = null;
 
-            while (stepper.State.Time < endTime && landing is null)
+            // Bounded: each pass advances the clock by a step (the last one trimmed to maxTime by the library's one
+            // end-time rule) or ends the run.
+            while (true)
             {
-                // Fixed steps; the last one is shortened to end exactly at maxTime.
-                double h = Math.Min(scenario.Step, endTime - stepper.State.Time);
-                if (!(h > 1e-9 * scenario.Step))
-                {
-                    break;
-                }
-
                 double before = stepper.State.Time;
-                // TryStep refuses a step that blows up (the state is kept), so the error can name the step.
-                if (!stepper.TryStep(h) || !stepper.State.IsFinite)
+                double h = FlightStepper.StepToward(before, endTime, scenario.Step, out bool last);
+                StepOutcome outcome = stepper.TryStep(h, FlightEventKinds.Landing);
+                if (outcome == StepOutcome.Diverged)
                 {
+                    // The core refused the step (the state is kept), so the error can name the step.
                     throw new InputError(
                         $"scenarios[{scenario.Index}].step",
-                        $"the flight diverged (non-finite state after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step");
+                        $"the flight diverged (the state would not be finite after t = {JsonFields.Format(before)} s with {scenario.Integrator.Name}); use a smaller step or stable-rk4");
                 }
 
-                // Events come in time order; nothing after the landing counts (the library's one rule for it).
-                ReadOnlySpan<FlightEvent> events = stepper.EventsUntil(FlightEventKinds.Landing, out bool landed, out FlightEvent touchdown);
-                if (landed)
+                if (outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    landing = touchdown.State;
+                    throw new InputError(
+                        $"scenarios[{scenario.Index}].initial.time",
+                        $"a step of {JsonFields.Format(h)} s does not advance the clock at t = {JsonFields.Format(before)} s (the time is too large for double precision); start the flight at a smaller time");
                 }
 
-                foreach (FlightEvent e in events)
+                // The core stops at the landing: the events it reports are those that happen (nothing after the landing).
+                foreach (FlightEvent e in stepper.Events)
                 {
-                    if (e.Kind == FlightEventKinds.Apex && apex is null)
+                    if (e.Kind == FlightEventKinds.Landing)
+                    {
+                        landing = e.State;
+                    }
+                    else if (e.Kind == FlightEventKinds.Apex && apex is null)
                     {
                         apex = e.State;
                     }
@@ -121,10 +124,13 @@ namespace MagnusBall.Cli
                 }
 
                 points?.Add(new StepPoint(stepper.State, stepper.Derivative));
+                if (stepper.IsStopped || last)
+                {
+                    break;
+                }
             }
 
-            // The last step point may lie past the landing: it stays for the interpolant, but the flight ends at the landing.
-            FlightState end = landing ?? stepper.State;
+            FlightState end = stepper.State;
             return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, end, points);
         }
     }

@@ -1,6 +1,8 @@
 using System;
+using MagnusBall.Contact;
+using MagnusBall.Integration;
 
-namespace MagnusBall.Queries
+namespace MagnusBall.Flight
 {
     /// <summary>What happened at a <see cref="FlightEvent"/>. Flags, so a set of kinds can say where to stop.</summary>
     [Flags]
@@ -18,13 +20,24 @@ namespace MagnusBall.Queries
         /// <summary>The velocity along up (-gravity) changed from positive to zero or below: the top of the flight.</summary>
         Apex = 4,
 
+        /// <summary>
+        /// The ball touched the contact surface and bounced (a flight with a <see cref="GroundContact"/>):
+        /// <see cref="FlightEvent.State"/> is the ball arriving, <see cref="FlightEvent.After"/> leaving.
+        /// </summary>
+        Bounce = 8,
+
+        /// <summary>The rolling ball came to rest (a flight with a <see cref="GroundContact"/>).</summary>
+        Rest = 16,
+
         /// <summary>Every kind.</summary>
-        All = Landing | PlaneCrossing | Apex,
+        All = Landing | PlaneCrossing | Apex | Bounce | Rest,
     }
 
     /// <summary>
-    /// An event located inside a step on the step's cubic Hermite interpolant: its kind, the plane it
-    /// concerns (for plane crossings) and the full interpolated state (time, position, velocity, spin).
+    /// Something that happened inside a step, located on the step's dense output: its kind, the plane it concerns
+    /// (for plane crossings), the state at that instant and, for a bounce, the state leaving the surface. The one
+    /// event type of the library: the flight core, the predictor, the aim solvers and the fixed-step driver all
+    /// report these.
     /// </summary>
     public readonly struct FlightEvent
     {
@@ -34,18 +47,42 @@ namespace MagnusBall.Queries
         /// <summary>For <see cref="FlightEventKinds.PlaneCrossing"/>, the index of the plane in the watched list; otherwise -1.</summary>
         public readonly int PlaneIndex;
 
-        /// <summary>The interpolated state at the event (time to 1e-12 s).</summary>
+        /// <summary>The interpolated state at the event (time to 1e-12 s); for a bounce, the ball arriving.</summary>
         public readonly FlightState State;
 
-        /// <summary>Creates an event.</summary>
+        /// <summary>For a bounce, the state leaving the surface (same time and position); otherwise the same as <see cref="State"/>.</summary>
+        public readonly FlightState After;
+
+        /// <summary>For a bounce, how it went (slide or grip); otherwise <see cref="BounceRegime.None"/>.</summary>
+        public readonly BounceRegime Regime;
+
+        /// <summary>For a bounce, true when the ball left the surface too slowly to fly and rolls from here.</summary>
+        public readonly bool StartsRolling;
+
+        /// <summary>Creates an event with no bounce data.</summary>
         /// <param name="kind">What happened.</param>
         /// <param name="planeIndex">Index of the crossed plane, or -1.</param>
         /// <param name="state">The state at the event.</param>
         public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state)
+            : this(kind, planeIndex, state, state, BounceRegime.None, false)
+        {
+        }
+
+        /// <summary>Creates an event.</summary>
+        /// <param name="kind">What happened.</param>
+        /// <param name="planeIndex">Index of the crossed plane, or -1.</param>
+        /// <param name="state">The state at the event (for a bounce, arriving).</param>
+        /// <param name="after">The state just after it (for a bounce, leaving).</param>
+        /// <param name="regime">For a bounce, its regime.</param>
+        /// <param name="startsRolling">For a bounce, whether the ball rolls from here.</param>
+        public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
         {
             Kind = kind;
             PlaneIndex = planeIndex;
             State = state;
+            After = after;
+            Regime = regime;
+            StartsRolling = startsRolling;
         }
 
         /// <summary>Time of the event, s.</summary>
@@ -54,12 +91,14 @@ namespace MagnusBall.Queries
         /// <summary>Position at the event, m.</summary>
         public Vector3d Position => State.Position;
 
-        /// <summary>Velocity at the event, m/s.</summary>
+        /// <summary>Velocity at the event (for a bounce, arriving), m/s.</summary>
         public Vector3d Velocity => State.Velocity;
 
         /// <inheritdoc />
         public override string ToString() =>
-            Kind == FlightEventKinds.PlaneCrossing ? $"{Kind}[{PlaneIndex}] {State}" : $"{Kind} {State}";
+            Kind == FlightEventKinds.PlaneCrossing ? $"{Kind}[{PlaneIndex}] {State}"
+            : Kind == FlightEventKinds.Bounce ? $"{Kind} ({Regime}{(StartsRolling ? ", rolls" : string.Empty)}) {State} -> v={After.Velocity} w={After.AngularVelocity}"
+            : $"{Kind} {State}";
     }
 
     /// <summary>
@@ -93,6 +132,20 @@ namespace MagnusBall.Queries
                     throw new ArgumentException($"planes[{i}] must have a non-zero normal.", nameof(planes));
                 }
             }
+        }
+
+        /// <summary>
+        /// An event set with no apex that watches <paramref name="ground"/> and the planes in <paramref name="planes"/>,
+        /// sharing the caller's array instead of copying it: the aim solver sets each trial's plane in it. Internal:
+        /// every public set is immutable.
+        /// </summary>
+        internal static FlightEventSet Sharing(Plane ground, Plane[] planes) => new FlightEventSet(ground, planes);
+
+        private FlightEventSet(Plane ground, Plane[] planes)
+        {
+            Up = Vector3d.Zero;
+            Ground = ground;
+            _planes = planes;
         }
 
         /// <summary>The events a flight model usually needs: landing on <see cref="Plane.Ground(FlightModel, Vector3d)"/> through the origin, the apex, and the given planes.</summary>
@@ -136,8 +189,17 @@ namespace MagnusBall.Queries
                     $"events must hold at least MaximumEventsPerStep = {MaximumEventsPerStep} events; got {events.Length}.", nameof(events));
             }
 
-            return ScanPlanes(segment, Up, Ground, _planes, events, startsFlight);
+            return Scan(segment, events, startsFlight, landings: true);
         }
+
+        /// <summary>
+        /// <see cref="Scan"/> on any dense output (a Hermite segment or an adaptive step's interpolant), with the
+        /// landing optional (a flight with a contact surface reports bounces instead). The buffer must hold
+        /// <see cref="MaximumEventsPerStep"/> events.
+        /// </summary>
+        internal int Scan<TDense>(in TDense dense, Span<FlightEvent> events, bool startsFlight, bool landings)
+            where TDense : struct, IDenseOutput =>
+            ScanPlanes(dense, Up, landings ? Ground : null, _planes, events, startsFlight);
 
         /// <summary>
         /// Of one step's events in time order (as <see cref="Scan"/> writes them), how many happen when the flight
@@ -149,17 +211,16 @@ namespace MagnusBall.Queries
         /// <param name="stopAt">The kinds that end the flight (None: nothing does).</param>
         /// <param name="stopIndex">The index of the first event of those kinds, or -1.</param>
         /// <returns>How many of the events, from the first, happen.</returns>
-        public static int CountUntil(ReadOnlySpan<FlightEvent> events, FlightEventKinds stopAt, out int stopIndex)
+        internal static int CountUntil(Span<FlightEvent> events, FlightEventKinds stopAt, out int stopIndex)
         {
             stopIndex = -1;
-            Span<FlightEvent> read = SpanView.Of(events); // not the read-only indexer: Mono 6.8 lacks it (see SpanView)
-            for (int i = 0; i < read.Length; i++)
+            for (int i = 0; i < events.Length; i++)
             {
-                if ((read[i].Kind & stopAt) != 0)
+                if ((events[i].Kind & stopAt) != 0)
                 {
                     stopIndex = i;
                     int count = i + 1;
-                    while (count < read.Length && read[count].Time <= read[i].Time)
+                    while (count < events.Length && events[count].Time <= events[i].Time)
                     {
                         count++;
                     }
@@ -176,8 +237,9 @@ namespace MagnusBall.Queries
         /// for none), landings on <paramref name="ground"/>, crossings of <paramref name="planes"/>. The buffer must
         /// hold 2 + planes.Length events.
         /// </summary>
-        internal static int ScanPlanes(
-            in HermiteSegment segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+        internal static int ScanPlanes<TDense>(
+            in TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+            where TDense : struct, IDenseOutput
         {
             int count = 0;
             double time;

@@ -1,6 +1,6 @@
 using System.Runtime.CompilerServices;
 
-namespace MagnusBall.Queries
+namespace MagnusBall
 {
     /// <summary>
     /// An oriented plane: a point on it and a unit normal. The ground, a net, a goal line or a wall.

@@ -1,7 +1,7 @@
 using System;
 using System.Runtime.CompilerServices;
 
-namespace MagnusBall.Queries
+namespace MagnusBall.Integration
 {
     /// <summary>Which way a crossing of a <see cref="Plane"/> goes.</summary>
     public enum CrossingDirection
@@ -31,7 +31,7 @@ namespace MagnusBall.Queries
     /// is found by safeguarded Newton-bisection to <see cref="TimeTolerance"/>. So the first crossing inside
     /// the step is found even when both ends of the step are on the same side.</para>
     /// </remarks>
-    public readonly struct HermiteSegment
+    public readonly struct HermiteSegment : IDenseOutput
     {
         /// <summary>Events are located to this time tolerance, s (1e-12 s).</summary>
         public const double TimeTolerance = 1e-12;
@@ -168,7 +168,7 @@ namespace MagnusBall.Queries
         /// </summary>
         /// <remarks>
         /// Pass startsFlight true only for the first step after a flight was started or its state replaced
-        /// (<see cref="FlightStepper.Reset"/>, <see cref="FlightStepper.SetState"/>). A later step starts where
+        /// (the flight core's Reset or SetState). A later step starts where
         /// the previous one ended: if that end lay exactly on the plane, the previous step already reported the
         /// crossing there (or the ball reached the plane from the far side and did not cross it), so counting the
         /// start again would report one crossing twice. A ball leaving the plane (after a bounce) does not head
@@ -226,6 +226,43 @@ namespace MagnusBall.Queries
                     $"{name} must have finite velocity, acceleration and angular acceleration; got v={derivative.Velocity}, a={derivative.Acceleration}, dw/dt={derivative.AngularAcceleration}.",
                     name);
             }
+        }
+
+        /// <summary>
+        /// This segment cut at <paramref name="time"/>: the cubic restricted to [StartTime, time], which is again a cubic
+        /// Hermite with the interpolant's own end value and slope there (slopes by differentiating the cubic, exact; no
+        /// evaluation). Default (zero duration) when the time is not after the start.
+        /// </summary>
+        internal HermiteSegment Until(double time)
+        {
+            double h = Duration;
+            if (!(time > StartTime) || !(h > 0))
+            {
+                return default;
+            }
+
+            if (time >= EndTime)
+            {
+                return this;
+            }
+
+            double s = (time - StartTime) / h;
+            FlightState end = StateAt(time);
+            var endDerivative = new StateDerivative(
+                CubicSlope(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, s) / h,
+                CubicSlope(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, s) / h,
+                CubicSlope(Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h, s) / h);
+            return new HermiteSegment(Start, StartDerivative, end, endDerivative);
+        }
+
+        private static Vector3d CubicSlope(in Vector3d y0, in Vector3d m0, in Vector3d y1, in Vector3d m1, double s)
+        {
+            double s2 = s * s;
+            double d00 = 6 * s2 - 6 * s;
+            double d10 = 3 * s2 - 4 * s + 1;
+            double d01 = 6 * s - 6 * s2;
+            double d11 = 3 * s2 - 2 * s;
+            return y0 * d00 + m0 * d10 + y1 * d01 + m1 * d11;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

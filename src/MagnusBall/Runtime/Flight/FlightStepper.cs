@@ -1,0 +1,649 @@
+using System;
+using MagnusBall.Contact;
+using MagnusBall.Integration;
+
+namespace MagnusBall.Flight
+{
+    /// <summary>How a ball moves: flying, rolling on a contact surface, or stopped.</summary>
+    public enum FlightPhase
+    {
+        /// <summary>In the air (free flight under gravity, drag and Magnus).</summary>
+        Flying = 0,
+
+        /// <summary>Rolling on the contact surface.</summary>
+        Rolling = 1,
+
+        /// <summary>Stopped: at rest on the surface, or the flight ended at a stop event (a landing).</summary>
+        Stopped = 2,
+    }
+
+    /// <summary>What one call of <see cref="FlightStepper.TryStep"/> did.</summary>
+    public enum StepOutcome
+    {
+        /// <summary>The step was taken; its events are in <see cref="FlightStepper.Events"/>.</summary>
+        Taken = 0,
+
+        /// <summary>The step was taken and ended at a stop event (or the ball came to rest): the flight is over.</summary>
+        Stopped = 1,
+
+        /// <summary>
+        /// Refused: the step would make the state or its derivative non-finite (far beyond the integrator's stability
+        /// limit). Nothing changed.
+        /// </summary>
+        Diverged = 2,
+
+        /// <summary>
+        /// Refused: the clock cannot advance (the time is so large that adding the step does not change it). Nothing
+        /// changed. The state is finite: this is not a divergence; restart the flight at a smaller time.
+        /// </summary>
+        TimeCannotAdvance = 3,
+
+        /// <summary>Nothing to do: the flight was already over (<see cref="FlightStepper.IsStopped"/>).</summary>
+        AlreadyStopped = 4,
+    }
+
+    /// <summary>
+    /// The one stepping loop of the library: it steps one ball's flight, locates every event on each step's dense
+    /// output, applies each event's effect (stop at a landing, bounce and roll on a <see cref="GroundContact"/>,
+    /// continue past an apex or a plane crossing), finishes the rest of the step, and refuses a diverging step. The
+    /// trajectory predictor, the aim solvers, the fixed-step driver, the CLI and the benchmarks all fly through it.
+    /// </summary>
+    /// <remarks>
+    /// <para><b>One step, top to bottom</b> (<see cref="TryStep"/>): integrate from the current state and its
+    /// derivative (the integrator returns the end state with its end derivative, so no point is evaluated twice);
+    /// build the step's cubic Hermite; find the events on it (the ground or contact plane, the apex, each watched
+    /// plane) in time order; take the first one with an effect: a stop event ends the flight at its instant, a
+    /// contact bounces the ball there and the loop integrates the rest of the step from the bounce; a roll or a rest
+    /// finishes the step on the surface. Events are written into the stepper's array during the step (Box2D style)
+    /// and read afterwards through <see cref="Events"/>.</para>
+    /// <para><b>Costs.</b> <see cref="DerivativeEvaluations"/> adds what each integrator call reports, plus one
+    /// evaluation at each restart (the start, a bounce). A fixed step without events costs exactly the
+    /// integrator's <see cref="IIntegrator.DerivativeEvaluationsPerStep"/>.</para>
+    /// <para><b>Bounds.</b> A step holds at most <see cref="MaxPiecesPerStep"/> pieces of flight between bounces;
+    /// at the last one the ball is put to rolling. <see cref="TryStepAdaptive"/> retries a rejected adaptive step at
+    /// most <see cref="MaxAdaptiveAttempts"/> times. Nothing here loops without a cap.</para>
+    /// <para><b>Failure.</b> A refused step (<see cref="StepOutcome.Diverged"/>, <see cref="StepOutcome.TimeCannotAdvance"/>)
+    /// and every call that throws leave the stepper exactly as it was.</para>
+    /// <para>Not thread-safe: one stepper per ball. The model, integrator, event set and contact it holds are
+    /// immutable and may be shared.</para>
+    /// </remarks>
+    public sealed class FlightStepper
+    {
+        /// <summary>The most pieces of flight (between bounces) one step holds; the last puts the ball to rolling.</summary>
+        public const int MaxPiecesPerStep = 16;
+
+        /// <summary>The most attempts <see cref="TryStepAdaptive"/> makes before it accepts the smallest step it tried.</summary>
+        public const int MaxAdaptiveAttempts = 64;
+
+        private readonly FlightEvent[] _events;
+        private readonly FlightEvent[] _scratch;
+        private readonly HermiteSegment[] _segments = new HermiteSegment[MaxPiecesPerStep + 1];
+        private readonly Plane _contactPlane;
+        private readonly Vector3d _normal;
+        private readonly double _rollingDeceleration; // c_rr g_n
+        private readonly bool _canRest;               // the slope alone cannot keep the ball moving against rolling resistance
+        private readonly bool _gravityHolds;          // gravity pushes the ball into the surface
+
+        private Snapshot _now;
+        private int _eventCount;
+        private int _segmentCount;
+        private bool _started;
+
+        /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
+        /// <param name="model">The flight model.</param>
+        /// <param name="integrator">The integration method.</param>
+        /// <param name="events">What to look for in each step (ground, apex, planes), or null for no events.</param>
+        /// <param name="contact">A surface to bounce and roll on, or null (then touching the event set's ground is a landing).</param>
+        /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
+        public FlightStepper(FlightModel model, IIntegrator integrator, FlightEventSet? events = null, GroundContact? contact = null)
+        {
+            Model = Require.NotNull(model, nameof(model));
+            Integrator = Require.NotNull(integrator, nameof(integrator));
+            EventSet = events;
+            Contact = contact;
+            int perPiece = (events?.MaximumEventsPerStep ?? 0) + 1;
+            _events = new FlightEvent[(MaxPiecesPerStep + 1) * perPiece + 1];
+            _scratch = new FlightEvent[perPiece];
+            if (contact != null)
+            {
+                _normal = contact.Plane.Normal;
+                _contactPlane = new Plane(contact.Plane.Point + _normal * model.Ball.Radius, _normal);
+                double gn = -Vector3d.Dot(model.Gravity, _normal);
+                Vector3d gt = model.Gravity + _normal * gn;
+                _rollingDeceleration = contact.RollingResistance * Math.Max(gn, 0);
+                _gravityHolds = gn > 0;
+                _canRest = gt.Length / (1 + model.Ball.InertiaFactor) <= _rollingDeceleration;
+            }
+        }
+
+        /// <summary>The flight model.</summary>
+        public FlightModel Model { get; }
+
+        /// <summary>The integration method.</summary>
+        public IIntegrator Integrator { get; }
+
+        /// <summary>The events looked for in each step, or null.</summary>
+        public FlightEventSet? EventSet { get; }
+
+        /// <summary>The surface the ball bounces and rolls on, or null.</summary>
+        public GroundContact? Contact { get; }
+
+        /// <summary>The current state (the end of the last step, or the stop).</summary>
+        public FlightState State => _now.State;
+
+        /// <summary>
+        /// The derivative at the current state (the next step's start derivative). After a stop at an event, the slope of
+        /// the step's dense output there (the flight is over; no evaluation is spent on it); at rest, zero.
+        /// </summary>
+        public StateDerivative Derivative => _now.Derivative;
+
+        /// <summary>The state at the start of the last step.</summary>
+        public FlightState PreviousState => _now.Previous;
+
+        /// <summary>Flying, rolling or stopped.</summary>
+        public FlightPhase Phase => _now.Phase;
+
+        /// <summary>True once the flight is over: stopped at a stop event, or at rest.</summary>
+        public bool IsStopped => _now.Phase == FlightPhase.Stopped;
+
+        /// <summary>The dense output of the last piece of flight of the last step (default before the first step).</summary>
+        public HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
+
+        /// <summary>The events of the last step, in time order, up to its stop event (nothing after a stop happens).</summary>
+        public ReadOnlySpan<FlightEvent> Events => new ReadOnlySpan<FlightEvent>(_events, 0, _eventCount);
+
+        /// <summary>The stop event of the flight (default until <see cref="IsStopped"/>; a rest is a stop too).</summary>
+        public FlightEvent StopEvent => _now.StopEvent;
+
+        /// <summary>Steps taken since the last <see cref="Reset"/>.</summary>
+        public long StepCount => _now.Steps;
+
+        /// <summary>Bounces since the last <see cref="Reset"/>.</summary>
+        public int BounceCount => _now.Bounces;
+
+        /// <summary>Model evaluations since the last <see cref="Reset"/> (including the one at the start state).</summary>
+        public long DerivativeEvaluations => _now.Evaluations;
+
+        /// <summary>
+        /// Starts a new flight from <paramref name="state"/>: sets the state, evaluates its derivative, zeroes the
+        /// counters. A ball placed exactly on the ground or a watched plane and heading through it crosses it at the
+        /// start of the next step; with a contact, a ball placed on the surface and not leaving it rolls (or rests).
+        /// </summary>
+        /// <param name="state">The start state; every component finite.</param>
+        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
+        public void Reset(in FlightState state)
+        {
+            Require.FiniteState(state, nameof(state));
+            _now = default;
+            Restart(state);
+        }
+
+        /// <summary>
+        /// Replaces the current state mid-flight (a hit, a teleport) without zeroing the counters: one evaluation.
+        /// As after <see cref="Reset"/>, a state exactly on a plane and heading through it crosses it at the start of
+        /// the next step.
+        /// </summary>
+        /// <param name="state">The new state; every component finite.</param>
+        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
+        public void SetState(in FlightState state)
+        {
+            Require.FiniteState(state, nameof(state));
+            Restart(state);
+        }
+
+        private void Restart(in FlightState state)
+        {
+            _now.State = state;
+            _now.Previous = state;
+            _now.Derivative = Model.Derivative(state);
+            _now.Evaluations++;
+            _now.Phase = FlightPhase.Flying;
+            _now.StartsFlight = true;
+            _now.StopEvent = default;
+            _eventCount = 0;
+            _segmentCount = 0;
+            _started = true;
+            if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
+            {
+                // Placed on the surface (or in it) and not leaving it: it rolls from there, or rests.
+                StartRolling(_contactPlane.Project(state.Position), state.Velocity, state.AngularVelocity, state.Time);
+            }
+        }
+
+        /// <summary>
+        /// Advances the flight by <paramref name="step"/> seconds (less when it stops at an event of the
+        /// <paramref name="stopAt"/> kinds), locating and applying every event inside. Allocates nothing.
+        /// </summary>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <param name="stopAt">The event kinds that end the flight (for example <see cref="FlightEventKinds.Landing"/>);
+        /// a rest always does.</param>
+        /// <returns>What happened; a refused step (<see cref="StepOutcome.Diverged"/>, <see cref="StepOutcome.TimeCannotAdvance"/>) changes nothing.</returns>
+        /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The step is not finite and positive.</exception>
+        public StepOutcome TryStep(double step, FlightEventKinds stopAt = FlightEventKinds.None)
+        {
+            RequireStarted();
+            Require.Step(step, nameof(step));
+            return Advance(step, stopAt, adaptive: null);
+        }
+
+        /// <summary>
+        /// One adaptive Dormand-Prince 5(4) step of at most <paramref name="maxStep"/> seconds, its size chosen by
+        /// error control (the controller's next step is kept between calls); events are located on the method's own
+        /// fourth-order interpolant. Allocates nothing.
+        /// </summary>
+        /// <param name="method">The adaptive method and its tolerances.</param>
+        /// <param name="maxStep">The longest step to take, s; finite and &gt; 0 (pass the time left to hit an end time).</param>
+        /// <param name="stopAt">The event kinds that end the flight.</param>
+        /// <returns>What happened, as for <see cref="TryStep"/>.</returns>
+        /// <exception cref="InvalidOperationException">No state was given yet.</exception>
+        /// <exception cref="ArgumentException">method is null or maxStep is not finite and positive.</exception>
+        public StepOutcome TryStepAdaptive(DormandPrince54 method, double maxStep, FlightEventKinds stopAt = FlightEventKinds.None)
+        {
+            RequireStarted();
+            Require.NotNull(method, nameof(method));
+            Require.Step(maxStep, nameof(maxStep));
+            return Advance(maxStep, stopAt, method);
+        }
+
+        /// <summary>The first event of one of the <paramref name="kinds"/> in the last step.</summary>
+        /// <param name="kinds">The kinds to look for.</param>
+        /// <param name="found">The event; default when none.</param>
+        /// <returns>True when one was found.</returns>
+        public bool TryGetEvent(FlightEventKinds kinds, out FlightEvent found)
+        {
+            for (int i = 0; i < _eventCount; i++)
+            {
+                if ((_events[i].Kind & kinds) != 0)
+                {
+                    found = _events[i];
+                    return true;
+                }
+            }
+
+            found = default;
+            return false;
+        }
+
+        /// <summary>
+        /// The step to take toward <paramref name="endTime"/> with steps of <paramref name="step"/>: the step, or the
+        /// time left when that is no more than a step (and a part in 1e9): the one end-time rule every client uses, so
+        /// a run ends on its end time without a sliver of a step.
+        /// </summary>
+        /// <param name="now">The current time, s.</param>
+        /// <param name="endTime">The end time, s.</param>
+        /// <param name="step">The fixed step, s.</param>
+        /// <param name="last">True when the returned step reaches the end time.</param>
+        public static double StepToward(double now, double endTime, double step, out bool last)
+        {
+            double remaining = endTime - now;
+            last = remaining <= step * (1 + 1e-9);
+            return last ? remaining : step;
+        }
+
+        /// <summary>
+        /// The state at <paramref name="time"/> inside the last step, on its dense output (pieces between bounces,
+        /// the roll); the step's start before it, the current state after it.
+        /// </summary>
+        /// <param name="time">The time, s.</param>
+        public FlightState StateAt(double time)
+        {
+            if (_segmentCount == 0 || time >= _now.State.Time)
+            {
+                return _now.State;
+            }
+
+            if (time <= _now.Previous.Time)
+            {
+                return _now.Previous;
+            }
+
+            for (int i = 0; i < _segmentCount; i++)
+            {
+                HermiteSegment segment = _segments[i];
+                if (time <= segment.EndTime)
+                {
+                    return time < segment.StartTime ? segment.Start : segment.StateAt(time);
+                }
+            }
+
+            return _now.State;
+        }
+
+        private StepOutcome Advance(double step, FlightEventKinds stopAt, DormandPrince54? adaptive)
+        {
+            if (_now.Phase == FlightPhase.Stopped)
+            {
+                _eventCount = 0;
+                return StepOutcome.AlreadyStopped;
+            }
+
+            double endTime = _now.State.Time + step;
+            if (!(endTime > _now.State.Time))
+            {
+                _eventCount = 0;
+                return StepOutcome.TimeCannotAdvance;
+            }
+
+            // Everything this step may change, kept so that a refused step puts it all back.
+            Snapshot before = _now;
+            int eventsBefore = _eventCount, segmentsBefore = _segmentCount;
+            _now.Previous = _now.State;
+            _eventCount = 0;
+            _segmentCount = 0;
+
+            // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
+            for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
+            {
+                double h = piece == 0 ? step : endTime - _now.State.Time;
+                if (!(_now.State.Time + h > _now.State.Time))
+                {
+                    break; // less than one ulp of time left after a bounce
+                }
+
+                bool ok = adaptive == null
+                    ? FlyPiece(h, endTime, piece, stopAt)
+                    : FlyAdaptivePiece(adaptive, h, piece, stopAt, ref endTime);
+                if (!ok)
+                {
+                    _now = before;
+                    _eventCount = eventsBefore;
+                    _segmentCount = segmentsBefore;
+                    return StepOutcome.Diverged;
+                }
+
+                if (_now.State.Time >= endTime)
+                {
+                    break;
+                }
+            }
+
+            if (_now.Phase == FlightPhase.Rolling)
+            {
+                Roll(endTime);
+            }
+
+            _now.Steps++;
+            _now.StartsFlight = false;
+            return _now.Phase == FlightPhase.Stopped ? StepOutcome.Stopped : StepOutcome.Taken;
+        }
+
+        // One piece of a fixed step: integrate to endTime, then handle the first event with an effect.
+        private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
+        {
+            FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
+            if (!next.IsFinite || !nextDerivative.IsFinite)
+            {
+                return false;
+            }
+
+            _now.Evaluations += evaluations;
+            if (next.Time != endTime)
+            {
+                // A piece after a bounce: end exactly on the step's end time.
+                next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
+            }
+
+            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative);
+            HandlePiece(segment, segment, next, nextDerivative, piece, stopAt);
+            return true;
+        }
+
+        // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end.
+        private bool FlyAdaptivePiece(DormandPrince54 method, double h, int piece, FlightEventKinds stopAt, ref double endTime)
+        {
+            double trial = _now.NextAdaptiveStep > 0 ? Math.Min(_now.NextAdaptiveStep, h) : method.InitialStep(Model, _now.State, _now.Derivative, h);
+            if (_now.NextAdaptiveStep <= 0)
+            {
+                _now.Evaluations++; // InitialStep's one evaluation
+            }
+
+            DormandPrince54Step result = default;
+            for (int attempt = 0; attempt < MaxAdaptiveAttempts; attempt++)
+            {
+                bool accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out result);
+                _now.Evaluations += 6;
+                if (accepted || attempt == MaxAdaptiveAttempts - 1 || !(result.NextStep > 0) || !(_now.State.Time + result.NextStep > _now.State.Time))
+                {
+                    break;
+                }
+
+                trial = Math.Min(result.NextStep, h);
+            }
+
+            if (!result.End.IsFinite || !result.EndDerivative.IsFinite)
+            {
+                return false;
+            }
+
+            _now.NextAdaptiveStep = result.NextStep;
+            endTime = result.End.Time;
+            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
+            var hermite = new HermiteSegment(result.Start, result.StartDerivative, result.End, result.EndDerivative);
+            HandlePiece(result, hermite, result.End, result.EndDerivative, piece, stopAt);
+            return true;
+        }
+
+        // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an
+        // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
+        // Hermite, kept for StateAt.
+        private void HandlePiece<TDense>(
+            in TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
+            where TDense : struct, IDenseOutput
+        {
+            Span<FlightEvent> found = _scratch;
+            int count = EventSet == null ? 0 : EventSet.Scan(dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
+            double contactTime = double.PositiveInfinity;
+            // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
+            if (Contact != null && piece < MaxPiecesPerStep - 1 &&
+                dense.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, false, out double t))
+            {
+                contactTime = t;
+            }
+
+            // Only what comes before the contact happens; of that, the first stop event ends the flight (with the events
+            // up to it and at its instant: FlightEventSet.CountUntil, the one rule); otherwise the contact bounces the ball.
+            int before = 0;
+            while (before < count && found[before].Time <= contactTime)
+            {
+                before++;
+            }
+
+            int happen = FlightEventSet.CountUntil(found.Slice(0, before), stopAt, out int stopIndex);
+            if (stopIndex >= 0)
+            {
+                FlightEvent stop = found[stopIndex];
+                Record(found.Slice(0, happen));
+                HermiteSegment cut = hermite.Until(stop.Time);
+                PushSegment(cut);
+                // The flight is over: its last derivative is the dense output's slope at the stop (no evaluation).
+                Stop(stop, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
+                return;
+            }
+
+            count = before;
+            Record(found.Slice(0, count));
+            if (double.IsPositiveInfinity(contactTime))
+            {
+                PushSegment(hermite);
+                _now.State = end;
+                _now.Derivative = endDerivative;
+                return;
+            }
+
+            Bounce(dense, hermite, contactTime, piece);
+        }
+
+        private void Bounce<TDense>(in TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+            where TDense : struct, IDenseOutput
+        {
+            GroundContact contact = Contact!;
+            FlightState touching = dense.StateAt(contactTime);
+            Vector3d centre = _contactPlane.Project(touching.Position);
+            PushSegment(hermite.Until(contactTime));
+            BounceOutcome outcome = contact.Bounce.Bounce(Model.Ball, _normal, touching.Velocity, touching.AngularVelocity);
+            double outgoingNormalSpeed = Vector3d.Dot(outcome.Velocity, _normal);
+            // Rest only where gravity holds the ball on the surface (a floor or a slope, not a wall or a ceiling).
+            bool roll = _gravityHolds &&
+                (outcome.Regime == BounceRegime.None || outgoingNormalSpeed < contact.RestNormalSpeed || piece >= MaxPiecesPerStep - 2);
+            _now.Bounces++;
+            var arriving = new FlightState(centre, touching.Velocity, touching.AngularVelocity, contactTime);
+            var leaving = new FlightState(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
+            Write(new FlightEvent(FlightEventKinds.Bounce, -1, arriving, leaving, outcome.Regime, roll));
+            if (roll)
+            {
+                StartRolling(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
+                return;
+            }
+
+            _now.State = leaving;
+            _now.Derivative = Model.Derivative(leaving);
+            _now.Evaluations++;
+        }
+
+        private void Stop(in FlightEvent stop, in StateDerivative slope)
+        {
+            _now.State = stop.State;
+            _now.Derivative = slope;
+            _now.Phase = FlightPhase.Stopped;
+            _now.StopEvent = stop;
+        }
+
+        private void StartRolling(in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity, double time)
+        {
+            // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
+            double radius = Model.Ball.Radius, alpha = Model.Ball.InertiaFactor;
+            Vector3d vt = velocity - _normal * Vector3d.Dot(velocity, _normal);
+            Vector3d lambda = vt - Vector3d.Cross(_normal, angularVelocity) * (radius * alpha);
+            Vector3d rolling = lambda / (1 + alpha);
+            Vector3d spinNormal = _normal * Vector3d.Dot(angularVelocity, _normal);
+            _now.Phase = FlightPhase.Rolling;
+            var state = new FlightState(centre, rolling, RollingSpin(rolling, spinNormal), time);
+            _now.State = state;
+            _now.Derivative = new StateDerivative(state.Velocity, RollingAcceleration(state), Vector3d.Zero);
+        }
+
+        // The roll to endTime: Heun's method (exact for a constant acceleration, so exact on level ground in still air),
+        // with the stop located inside the step where the speed along the motion reaches zero.
+        private void Roll(double endTime)
+        {
+            if (!(_now.State.Time < endTime))
+            {
+                return;
+            }
+
+            double h = endTime - _now.State.Time;
+            FlightState s0 = _now.State;
+            Vector3d v0 = s0.Velocity;
+            Vector3d spinNormal = _normal * Vector3d.Dot(s0.AngularVelocity, _normal);
+            Vector3d a0 = _now.Derivative.Acceleration;
+            Vector3d vPredicted = v0 + a0 * h;
+            if (_canRest && (v0.LengthSquared == 0 || Vector3d.Dot(vPredicted, v0) <= 0))
+            {
+                StopWithin(s0, a0, vPredicted, h, spinNormal);
+                return;
+            }
+
+            var predicted = new FlightState(s0.Position + v0 * h, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
+            Vector3d a1 = RollingAcceleration(predicted);
+            Vector3d average = (a0 + a1) * 0.5;
+            Vector3d v1 = v0 + average * h;
+            if (_canRest && Vector3d.Dot(v1, v0) <= 0)
+            {
+                StopWithin(s0, average, v1, h, spinNormal);
+                return;
+            }
+
+            var next = new FlightState(_contactPlane.Project(s0.Position + (v0 + v1) * (0.5 * h)), v1, RollingSpin(v1, spinNormal), endTime);
+            var nextDerivative = new StateDerivative(v1, RollingAcceleration(next), Vector3d.Zero);
+            PushSegment(new HermiteSegment(s0, _now.Derivative, next, nextDerivative));
+            _now.State = next;
+            _now.Derivative = nextDerivative;
+        }
+
+        private void StopWithin(in FlightState s0, in Vector3d a, in Vector3d v1, double h, in Vector3d spinNormal)
+        {
+            Vector3d v0 = s0.Velocity;
+            double speed = v0.Length;
+            double along = speed > 0 ? Vector3d.Dot(v1, v0) / speed : 0;
+            double stopAfter = speed > 0 ? h * speed / (speed - along) : 0;
+            Vector3d position = _contactPlane.Project(s0.Position + v0 * stopAfter + a * (0.5 * stopAfter * stopAfter));
+            var rest = new FlightState(position, Vector3d.Zero, spinNormal, s0.Time + stopAfter);
+            if (rest.Time > s0.Time)
+            {
+                PushSegment(new HermiteSegment(s0, _now.Derivative, rest, new StateDerivative(Vector3d.Zero, a, Vector3d.Zero)));
+            }
+
+            var stop = new FlightEvent(FlightEventKinds.Rest, -1, rest);
+            Write(stop);
+            _now.State = rest;
+            _now.Derivative = default;
+            _now.Phase = FlightPhase.Stopped;
+            _now.StopEvent = stop;
+        }
+
+        private Vector3d RollingAcceleration(in FlightState state)
+        {
+            Vector3d a = Model.Gravity;
+            if (Model.HasAerodynamics)
+            {
+                a = Model.Derivative(state).Acceleration;
+                _now.Evaluations++;
+            }
+
+            Vector3d tangential = a - _normal * Vector3d.Dot(a, _normal);
+            return tangential * (1.0 / (1 + Model.Ball.InertiaFactor)) - state.Velocity.NormalizedOrZero() * _rollingDeceleration;
+        }
+
+        private Vector3d RollingSpin(in Vector3d velocity, in Vector3d spinNormal) =>
+            Vector3d.Cross(_normal, velocity) * (1.0 / Model.Ball.Radius) + spinNormal;
+
+        private void Record(Span<FlightEvent> events)
+        {
+            for (int i = 0; i < events.Length; i++)
+            {
+                Write(events[i]);
+            }
+        }
+
+        private void Write(in FlightEvent e)
+        {
+            // The array holds every event MaxPiecesPerStep pieces can produce; this guard only keeps it in bounds.
+            if (_eventCount < _events.Length)
+            {
+                _events[_eventCount++] = e;
+            }
+        }
+
+        private void PushSegment(in HermiteSegment segment)
+        {
+            if (_segmentCount < _segments.Length && segment.Duration > 0)
+            {
+                _segments[_segmentCount++] = segment;
+            }
+        }
+
+        private void RequireStarted()
+        {
+            if (!_started)
+            {
+                throw new InvalidOperationException("Call Reset(state) before stepping.");
+            }
+        }
+
+        // The mutable state of the flight, one value so that a refused step restores it in one assignment.
+        private struct Snapshot
+        {
+            public FlightState State;
+            public StateDerivative Derivative;
+            public FlightState Previous;
+            public FlightPhase Phase;
+            public FlightEvent StopEvent;
+            public long Steps;
+            public long Evaluations;
+            public int Bounces;
+            public bool StartsFlight;
+            public double NextAdaptiveStep;
+        }
+    }
+}

@@ -1,0 +1,40 @@
+using MagnusBall.Flight;
+
+namespace MagnusBall.Stepping
+{
+    /// <summary>What one call of <see cref="FixedStepDriver.Advance(double, System.Span{FlightEvent})"/> did.</summary>
+    public readonly struct AdvanceResult
+    {
+        /// <summary>Fixed steps taken in this call (a last step cut short by a landing counts as one).</summary>
+        public readonly int StepsTaken;
+
+        /// <summary>Events written to the caller's buffer, in time order.</summary>
+        public readonly int EventCount;
+
+        /// <summary>Events that happened but did not fit in the caller's buffer (they are lost; pass a larger buffer).</summary>
+        public readonly int EventsNotReported;
+
+        /// <summary>
+        /// Frame time, s, that was not simulated: the part of a hitch above the clamp, what was left when the
+        /// substep cap was reached, and all frame time once the flight has ended. The ball runs this much
+        /// behind the wall clock; its path is unchanged.
+        /// </summary>
+        public readonly double DroppedSeconds;
+
+        /// <summary>True when a fixed step diverged: the driver refused it, kept the last finite state and ended the flight.</summary>
+        public readonly bool Diverged;
+
+        internal AdvanceResult(int stepsTaken, int eventCount, int eventsNotReported, double droppedSeconds, bool diverged)
+        {
+            Diverged = diverged;
+            StepsTaken = stepsTaken;
+            EventCount = eventCount;
+            EventsNotReported = eventsNotReported;
+            DroppedSeconds = droppedSeconds;
+        }
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            $"steps={StepsTaken} events={EventCount} notReported={EventsNotReported} dropped={DroppedSeconds:R} s{(Diverged ? " diverged" : string.Empty)}";
+    }
+}
