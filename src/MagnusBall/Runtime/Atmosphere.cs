@@ -71,7 +71,7 @@ namespace MagnusBall
         public static double SaturationVapourPressure(double temperatureCelsius)
         {
             Require.InRange(temperatureCelsius, MinimumTemperatureCelsius, MaximumTemperatureCelsius, nameof(temperatureCelsius));
-            return 610.78 * Math.Exp(17.27 * temperatureCelsius / (temperatureCelsius + 237.3));
+            return 610.78 * PortableMath.Exp(17.27 * temperatureCelsius / (temperatureCelsius + 237.3));
         }
 
         /// <summary>
@@ -122,11 +122,11 @@ namespace MagnusBall
             Require.InRange(altitudeMetres, MinimumAltitude, MaximumAltitude, nameof(altitudeMetres));
             const double seaLevelKelvin = SeaLevelTemperatureCelsius + ZeroCelsiusInKelvin;
             double h = Math.Min(altitudeMetres, TropopauseAltitude);
-            double pressure = SeaLevelPressure * Math.Pow(1 - TroposphereLapseRate * h / seaLevelKelvin, PressureExponent);
+            double pressure = SeaLevelPressure * PortableMath.Pow(1 - TroposphereLapseRate * h / seaLevelKelvin, PressureExponent);
             if (altitudeMetres > TropopauseAltitude)
             {
                 double tropopauseKelvin = seaLevelKelvin - TroposphereLapseRate * TropopauseAltitude;
-                pressure *= Math.Exp(-IsothermalScale * (altitudeMetres - TropopauseAltitude) / tropopauseKelvin);
+                pressure *= PortableMath.Exp(-IsothermalScale * (altitudeMetres - TropopauseAltitude) / tropopauseKelvin);
             }
 
             return pressure;

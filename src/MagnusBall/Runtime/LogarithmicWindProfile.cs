@@ -53,7 +53,7 @@ namespace MagnusBall
             ReferenceHeight = referenceHeight;
             RoughnessLength = roughnessLength;
             GroundPoint = groundPoint;
-            _inverseLogReference = 1.0 / Math.Log(referenceHeight / roughnessLength);
+            _inverseLogReference = 1.0 / PortableMath.Log(referenceHeight / roughnessLength);
         }
 
         /// <summary>Height at which the reference wind is given, m.</summary>
@@ -72,7 +72,7 @@ namespace MagnusBall
         /// <param name="height">Height above the ground, m (any finite value).</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double Factor(double height) =>
-            height > RoughnessLength ? Math.Log(height / RoughnessLength) * _inverseLogReference : 0.0;
+            height > RoughnessLength ? PortableMath.Log(height / RoughnessLength) * _inverseLogReference : 0.0;
 
         /// <summary>Height of <paramref name="position"/> above the ground along <paramref name="up"/> (a unit vector), m.</summary>
         /// <param name="position">The point, m.</param>

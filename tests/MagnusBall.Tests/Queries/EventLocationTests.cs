@@ -211,7 +211,7 @@ namespace MagnusBall.Tests.Queries
             stepper.TryStep(3.0);
             int count = stepper.Events.Length; // one step holds everything: x=5 at 0.5 s, apex 1 s, x=15 at 1.5 s, landing ~2.05 s
             Assert.That(count, Is.EqualTo(4));
-            ReadOnlySpan<FlightEvent> e = stepper.Events;
+            FlightEvent[] e = stepper.Events.ToArray(); // a copy: Mono 6.8 has no ReadOnlySpan indexer a compiler accepts (SpanView)
             Assert.That(e[0].Kind, Is.EqualTo(FlightEventKinds.PlaneCrossing));
             Assert.That(e[0].PlaneIndex, Is.EqualTo(1));
             Assert.That(e[0].Time, Is.EqualTo(0.5).Within(1e-12));

@@ -38,13 +38,13 @@ namespace MagnusBall.Aerodynamics
         {
             // exp overflows to +inf only far above the crisis (s > about 940 m/s), where 0.346/inf = 0 gives the
             // correct supercritical limit 0.155; at s = 0 it is exp(-12.19/1.309) = 9e-5. No NaN for any s >= 0.
-            return 0.155 + 0.346 / (1.0 + Math.Exp((speed - 12.19) / 1.309));
+            return 0.155 + 0.346 / (1.0 + PortableMath.Exp((speed - 12.19) / 1.309));
         }
 
         /// <summary>The spinning-ball law 0.4127 S^0.3056 (0 for S &lt;= 0).</summary>
         /// <param name="spinParameter">S = r|w|/s.</param>
         public static double Spinning(double spinParameter) =>
-            spinParameter > 0 ? 0.4127 * Math.Pow(spinParameter, 0.3056) : 0.0;
+            spinParameter > 0 ? 0.4127 * PortableMath.Pow(spinParameter, 0.3056) : 0.0;
 
         /// <inheritdoc />
         public override string ToString() => "GoffCarreSoccerDrag";

@@ -75,7 +75,7 @@ namespace MagnusBall.Aerodynamics
         {
             double s = spinParameter > 0 ? spinParameter : 0.0;
             // exp overflows to +inf far above the crisis, where c/inf = 0 is the right limit; no NaN for Re >= 0.
-            return Floor + SpinSlope * s + CrisisRise / (1.0 + Math.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
+            return Floor + SpinSlope * s + CrisisRise / (1.0 + PortableMath.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
         }
 
         /// <inheritdoc />
@@ -154,8 +154,8 @@ namespace MagnusBall.Aerodynamics
 
             double spin = Saturation * spinParameter / (spinParameter + HalfSpin);
             // Re is held at 1 or more inside the power so a near-zero speed cannot make it overflow (q <= 1).
-            double reynolds = Math.Pow(ReferenceReynolds / Math.Max(reynoldsNumber, 1.0), ReynoldsExponent);
-            double onset = 1.0 / (1.0 + Math.Exp(-(reynoldsNumber - OnsetReynolds) / OnsetWidth));
+            double reynolds = PortableMath.Pow(ReferenceReynolds / Math.Max(reynoldsNumber, 1.0), ReynoldsExponent);
+            double onset = 1.0 / (1.0 + PortableMath.Exp(-(reynoldsNumber - OnsetReynolds) / OnsetWidth));
             return spin * reynolds * onset;
         }
 

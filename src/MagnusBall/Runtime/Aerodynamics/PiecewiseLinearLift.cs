@@ -36,12 +36,12 @@ namespace MagnusBall.Aerodynamics
                     nameof(spinParameters));
             }
 
-            _s = new double[spinParameters.Count];
-            _c = new double[spinParameters.Count];
+            _s = CopyOf(spinParameters);
+            _c = CopyOf(liftCoefficients);
             for (int i = 0; i < _s.Length; i++)
             {
-                _s[i] = Require.NonNegative(spinParameters[i], nameof(spinParameters));
-                _c[i] = Require.Finite(liftCoefficients[i], nameof(liftCoefficients));
+                Require.NonNegative(_s[i], nameof(spinParameters));
+                Require.Finite(_c[i], nameof(liftCoefficients));
                 if (i > 0 && !(_s[i] > _s[i - 1]))
                 {
                     throw new ArgumentException(
@@ -52,6 +52,27 @@ namespace MagnusBall.Aerodynamics
 
             _sView = Array.AsReadOnly(_s);
             _cView = Array.AsReadOnly(_c);
+        }
+
+        /// <summary>
+        /// A copy. An array (what callers and the presets pass) is cloned, not read through its IReadOnlyList indexer:
+        /// Mono 6.8 run with -O=-intrins (the determinism check, docs/determinism.md) overflows its stack in the
+        /// interface indexer of a double[].
+        /// </summary>
+        private static double[] CopyOf(IReadOnlyList<double> values)
+        {
+            if (values is double[] array)
+            {
+                return (double[])array.Clone();
+            }
+
+            var copy = new double[values.Count];
+            for (int i = 0; i < copy.Length; i++)
+            {
+                copy[i] = values[i];
+            }
+
+            return copy;
         }
 
         /// <summary>The table's S_perp values, increasing.</summary>

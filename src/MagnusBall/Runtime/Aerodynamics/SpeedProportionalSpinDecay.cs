@@ -43,7 +43,7 @@ namespace MagnusBall.Aerodynamics
                 throw new ArgumentOutOfRangeException(nameof(fraction), fraction, $"fraction must be in [0, 1); got {Require.Format(fraction)}.");
             }
 
-            return new SpeedProportionalSpinDecay(-Math.Log(1 - fraction) / distanceMetres);
+            return new SpeedProportionalSpinDecay(-PortableMath.Log(1 - fraction) / distanceMetres);
         }
 
         /// <summary>Tennis, Cross &amp; Lindsey (2014): 2 % spin loss over 6.4 m, k = 0.003157 per metre.</summary>

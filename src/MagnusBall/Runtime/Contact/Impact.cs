@@ -235,7 +235,7 @@ namespace MagnusBall.Contact
             Vector3d lambda1 = vt - omega * alphaEffective;
 
             double tangentialSpeed = vt.Length;
-            double incomingAngleDegrees = Math.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
+            double incomingAngleDegrees = PortableMath.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
             ey = contact.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn / onePlusKappa; // J: the ball's normal velocity change
             double mu = contact.Friction;
@@ -339,7 +339,7 @@ namespace MagnusBall.Contact
             double lo = 0, hi = 1, r = 0.5;
             for (int i = 0; i < 200; i++)
             {
-                double rk1 = Math.Pow(r, k - 1);
+                double rk1 = PortableMath.Pow(r, k - 1);
                 double rk = rk1 * r;
                 double g = scale * ((1 - rk1) / (k - 1) + t0Squared * (1 - rk * r) / (k + 1)) - q;
                 if (g > 0)
@@ -370,7 +370,7 @@ namespace MagnusBall.Contact
 
             double t = r * t0;
             double tSquared = t * t;
-            double s = s0 * Math.Pow(r, k - 1) * (1 + tSquared) / (1 + t0Squared);
+            double s = s0 * PortableMath.Pow(r, k - 1) * (1 + tSquared) / (1 + t0Squared);
             double cos2 = (1 - tSquared) / (1 + tSquared);
             double sin2 = 2 * t / (1 + tSquared);
             u2 = (e1 * cos2 + e2 * sin2) * s;

@@ -238,7 +238,7 @@ namespace MagnusBall.Flight
         /// hold 2 + planes.Length events.
         /// </summary>
         internal static int ScanPlanes<TDense>(
-            in TDense segment, in Vector3d up, Plane? ground, ReadOnlySpan<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+            in TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
             where TDense : struct, IDenseOutput
         {
             int count = 0;

@@ -134,7 +134,7 @@ namespace MagnusBall.Integration
             }
             else
             {
-                factor = Math.Max(MinimumFactor, Math.Min(MaximumFactor, Safety * Math.Pow(norm, -0.2)));
+                factor = Math.Max(MinimumFactor, Math.Min(MaximumFactor, Safety * PortableMath.Pow(norm, -0.2)));
             }
 
             if (!accepted)
@@ -173,7 +173,7 @@ namespace MagnusBall.Integration
             d2 = Math.Sqrt(d2 / 9) / h0;
 
             double largest = Math.Max(d1, d2);
-            double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : Math.Pow(0.01 / largest, 0.2);
+            double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : PortableMath.Pow(0.01 / largest, 0.2);
             double h = Math.Min(100 * h0, h1);
             return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
         }

@@ -603,7 +603,7 @@ namespace MagnusBall.Queries
                 if (stepper.IsStopped)
                 {
                     // A crossing at the same instant as the landing still arrives.
-                    foreach (FlightEvent e in stepper.Events)
+                    foreach (FlightEvent e in SpanView.Of(stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                     {
                         if (e.Kind == FlightEventKinds.PlaneCrossing)
                         {

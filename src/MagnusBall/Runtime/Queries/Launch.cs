@@ -53,8 +53,8 @@ namespace MagnusBall.Queries
         {
             Require.Finite(elevationRadians, nameof(elevationRadians));
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            double ce = Math.Cos(elevationRadians);
-            return Forward * (ce * Math.Cos(azimuthRadians)) + Side * (ce * Math.Sin(azimuthRadians)) + Up * Math.Sin(elevationRadians);
+            double ce = PortableMath.Cos(elevationRadians);
+            return Forward * (ce * PortableMath.Cos(azimuthRadians)) + Side * (ce * PortableMath.Sin(azimuthRadians)) + Up * PortableMath.Sin(elevationRadians);
         }
     }
 

@@ -175,7 +175,7 @@ namespace MagnusBall.Queries
                         timeCannotAdvance: outcome == StepOutcome.TimeCannotAdvance);
                 }
 
-                ReadOnlySpan<FlightEvent> found = stepper.Events;
+                Span<FlightEvent> found = SpanView.Of(stepper.Events); // not the read-only indexer: Mono 6.8 lacks it
                 for (int i = 0; i < found.Length; i++)
                 {
                     if (eventCount < events.Length)

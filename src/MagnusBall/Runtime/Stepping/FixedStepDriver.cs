@@ -307,7 +307,7 @@ namespace MagnusBall.Stepping
                 _older = last;
                 steps++;
                 _accumulator -= FixedStep;
-                foreach (FlightEvent e in _stepper.Events)
+                foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                 {
                     if (written < events.Length)
                     {

@@ -86,7 +86,9 @@ namespace MagnusBall.Contact.Swings
             {
                 var frame = new LaunchFrame(Vector3d.UnitZ, Vector3d.UnitX);
                 double c = Vector3d.Dot(PathDirection(frame), FaceNormal(frame));
-                return Math.Acos(Math.Max(-1, Math.Min(1, c))) * (180 / Math.PI);
+                c = Math.Max(-1, Math.Min(1, c));
+                // acos(c) as atan2(sqrt(1 - c^2), c): the library's own deterministic atan2 (docs/determinism.md).
+                return PortableMath.Atan2(Math.Sqrt((1 - c) * (1 + c)), c) * (180 / Math.PI);
             }
         }
 

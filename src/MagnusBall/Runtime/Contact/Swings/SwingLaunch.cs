@@ -44,12 +44,12 @@ namespace MagnusBall.Contact.Swings
                 Vector3d v = Impact.Velocity;
                 double up = Vector3d.Dot(v, Frame.Up);
                 Vector3d horizontal = v - Frame.Up * up;
-                return Math.Atan2(up, horizontal.Length);
+                return PortableMath.Atan2(up, horizontal.Length);
             }
         }
 
         /// <summary>Launch azimuth from the frame's forward toward its side, rad.</summary>
-        public double AzimuthRadians => Math.Atan2(Vector3d.Dot(Impact.Velocity, Frame.Side), Vector3d.Dot(Impact.Velocity, Frame.Forward));
+        public double AzimuthRadians => PortableMath.Atan2(Vector3d.Dot(Impact.Velocity, Frame.Side), Vector3d.Dot(Impact.Velocity, Frame.Forward));
 
         /// <summary>Launch elevation, degrees.</summary>
         public double ElevationDegrees => ElevationRadians * (180 / Math.PI);
@@ -95,7 +95,7 @@ namespace MagnusBall.Contact.Swings
             get
             {
                 LaunchSpin s = LaunchSpin;
-                return Math.Atan2(s.Sidespin, -s.Topspin) * (180 / Math.PI);
+                return PortableMath.Atan2(s.Sidespin, -s.Topspin) * (180 / Math.PI);
             }
         }
 

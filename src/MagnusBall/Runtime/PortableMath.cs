@@ -1,0 +1,646 @@
+using System;
+
+namespace MagnusBall
+{
+    /// <summary>
+    /// The transcendental functions the library's simulation uses, computed only from IEEE 754 + - * / and
+    /// <see cref="Math.Sqrt"/> (all exactly rounded on every conforming runtime), exact operations (comparisons,
+    /// <see cref="Math.Abs(double)"/>, <see cref="Math.Floor(double)"/>, bit moves between double and long) and
+    /// integer arithmetic. <see cref="Math"/>'s own Sin, Exp, Pow, ... come from each platform's C library or from
+    /// the JIT (Mono compiles Math.Sin to x87 fsin), so they can differ by an ulp between a game's players; these
+    /// give the same bits wherever the runtime does not contract a*b+c into a fused multiply-add.
+    /// </summary>
+    /// <remarks>
+    /// Algorithms: the kernels and reductions of Sun's fdlibm (the same minimax polynomials; its Cody-Waite
+    /// splits of pi/2 and ln 2), with two additions: arguments of Sin and Cos beyond 2^20 pi/2 are reduced
+    /// exactly by integer Payne-Hanek reduction against 1,280 bits of 2/pi, and <see cref="Pow"/> evaluates
+    /// y ln x in double-double (Dekker products by Veltkamp splitting, no FMA) so that its error stays below
+    /// about one ulp even where exp magnifies the error of the logarithm 700-fold. Accuracy against
+    /// <see cref="Math"/> over the whole input range, as measured by PortableMathTests (docs/determinism.md):
+    /// Sin, Cos, Atan2, Exp, Log within 1 ulp; Pow within 1 ulp. Special values (NaN, infinities, signed zeros)
+    /// follow C99 Annex F, as <see cref="Math"/> does on .NET Core 3.0 and later.
+    /// </remarks>
+    internal static class PortableMath
+    {
+        // ---- exp (fdlibm e_exp.c) ----
+        private const double Ln2Hi = 6.93147180369123816490e-01; // ln 2, first 32 bits: k * Ln2Hi is exact for |k| < 2^21
+        private const double Ln2Lo = 1.90821492927058770002e-10; // ln 2 - Ln2Hi
+        private const double InvLn2 = 1.44269504088896338700e+00;
+        private const double P1 = 1.66666666666666019037e-01;
+        private const double P2 = -2.77777777770155933842e-03;
+        private const double P3 = 6.61375632143793436117e-05;
+        private const double P4 = -1.65339022054652515390e-06;
+        private const double P5 = 4.13813679705723846039e-08;
+        private const double ExpOverflow = 7.09782712893383973096e+02;  // above: +infinity
+        private const double ExpUnderflow = -7.45133219101941108420e+02; // below: +0
+
+        // ---- log in double-double ----
+        private const double Ln2Hi53 = 0.6931471805599453;      // ln 2 rounded to double
+        private const double Ln2Lo53 = 2.3190468138462996e-17;  // ln 2 - Ln2Hi53
+        private const double ThirdHi = 0.3333333333333333;
+        private const double ThirdLo = 1.850371707708594e-17;   // 1/3 - ThirdHi
+        private const double Sqrt2 = 1.4142135623730951;
+
+        // ---- sin, cos (fdlibm k_sin.c, k_cos.c, e_rem_pio2.c) ----
+        private const double S1 = -1.66666666666666324348e-01;
+        private const double S2 = 8.33333333332248946124e-03;
+        private const double S3 = -1.98412698298579493134e-04;
+        private const double S4 = 2.75573137070700676789e-06;
+        private const double S5 = -2.50507602534068634195e-08;
+        private const double S6 = 1.58969099521155010221e-10;
+        private const double C1 = 4.16666666666666019037e-02;
+        private const double C2 = -1.38888888888741095749e-03;
+        private const double C3 = 2.48015872894767294178e-05;
+        private const double C4 = -2.75573143513906633035e-07;
+        private const double C5 = 2.08757232129817482790e-09;
+        private const double C6 = -1.13596475577881948265e-11;
+        private const double InvPio2 = 6.36619772367581382433e-01;
+        private const double Pio2_1 = 1.57079632673412561417e+00;  // first 33 bits of pi/2
+        private const double Pio2_1t = 6.07710050650619224932e-11; // pi/2 - Pio2_1
+        private const double Pio2_2 = 6.07710050630396597660e-11;  // second 33 bits
+        private const double Pio2_2t = 2.02226624879595063154e-21;
+        private const double Pio2_3 = 2.02226624871116645580e-21;  // third 33 bits
+        private const double Pio2_3t = 8.47842766036889956997e-32;
+        private const double Pio2Hi = 1.5707963267948966;
+        private const double Pio2Lo = 6.123233995736766e-17;
+        private const double MediumReduction = 1647099.3291652855; // 2^20 pi/2: above, Payne-Hanek
+
+        // 2/pi to 1,280 bits, most significant word first (tools/portable-math-constants.py prints them).
+        private static readonly ulong[] TwoOverPi =
+        {
+            0xA2F9836E4E441529UL, 0xFC2757D1F534DDC0UL, 0xDB6295993C439041UL, 0xFE5163ABDEBBC561UL, 0xB7246E3A424DD2E0UL,
+            0x06492EEA09D1921CUL, 0xFE1DEB1CB129A73EUL, 0xE88235F52EBB4484UL, 0xE99C7026B45F7E41UL, 0x3991D639835339F4UL,
+            0x9C845F8BBDF9283BUL, 0x1FF897FFDE05980FUL, 0xEF2F118B5A0A6D1FUL, 0x6D367ECF27CB09B7UL, 0x4F463F669E5FEA2DUL,
+            0x7527BAC7EBE5F17BUL, 0x3D0739F78A5292EAUL, 0x6BFB5FB11F8D5D08UL, 0x56033046FC7B6BABUL, 0xF0CFBC209AF4361DUL,
+        };
+
+        // ---- atan (fdlibm s_atan.c, e_atan2.c) ----
+        private static readonly double[] AtanHi = { 4.63647609000806093515e-01, 7.85398163397448278999e-01, 9.82793723247329054082e-01, 1.57079632679489655800e+00 };
+        private static readonly double[] AtanLo = { 2.26987774529616870924e-17, 3.06161699786838301793e-17, 1.39033110312309984516e-17, 6.12323399573676603587e-17 };
+        private const double AT0 = 3.33333333333329318027e-01;
+        private const double AT1 = -1.99999999998764832476e-01;
+        private const double AT2 = 1.42857142725034663711e-01;
+        private const double AT3 = -1.11111104054623557880e-01;
+        private const double AT4 = 9.09088713343650656196e-02;
+        private const double AT5 = -7.69187620504482999495e-02;
+        private const double AT6 = 6.66107313738753120669e-02;
+        private const double AT7 = -5.83357013379057348645e-02;
+        private const double AT8 = 4.97687799461593236017e-02;
+        private const double AT9 = -3.65315727442169155270e-02;
+        private const double AT10 = 1.62858201153657823623e-02;
+        private const double Pi = 3.1415926535897931160E+00;
+        private const double PiLo = 1.2246467991473531772E-16; // pi - Pi
+
+        /// <summary>e^x.</summary>
+        public static double Exp(double x)
+        {
+            if (double.IsNaN(x))
+            {
+                return x;
+            }
+
+            if (x > ExpOverflow)
+            {
+                return double.PositiveInfinity;
+            }
+
+            if (x < ExpUnderflow)
+            {
+                return 0.0;
+            }
+
+            return ExpCore(x, 0.0);
+        }
+
+        /// <summary>The natural logarithm of x (NaN below 0, -infinity at 0).</summary>
+        public static double Log(double x)
+        {
+            if (!(x > 0) || double.IsPositiveInfinity(x))
+            {
+                return x == 0 ? double.NegativeInfinity : x > 0 ? x : double.NaN;
+            }
+
+            LogCore(x, out double hi, out double lo);
+            return hi + lo;
+        }
+
+        /// <summary>x^y, with the special cases of C99 (and of <see cref="Math.Pow"/>).</summary>
+        public static double Pow(double x, double y)
+        {
+            if (y == 0 || x == 1)
+            {
+                return 1.0;
+            }
+
+            if (double.IsNaN(x) || double.IsNaN(y))
+            {
+                return double.NaN;
+            }
+
+            double ax = Math.Abs(x);
+            if (double.IsInfinity(y))
+            {
+                if (ax == 1)
+                {
+                    return 1.0;
+                }
+
+                return (ax > 1) == (y > 0) ? double.PositiveInfinity : 0.0;
+            }
+
+            bool yIsInteger = Math.Floor(y) == y;
+            bool yIsOdd = yIsInteger && Math.Abs(y) < 9007199254740992.0 && Math.Floor(y * 0.5) * 2 != y;
+            bool negative = x < 0 || (x == 0 && 1 / x < 0); // sign bit (x is not NaN here)
+            if (x == 0 || double.IsInfinity(x))
+            {
+                bool large = double.IsInfinity(x) == (y > 0); // |x|^y is infinite
+                double magnitude = large ? double.PositiveInfinity : 0.0;
+                return negative && yIsOdd ? -magnitude : magnitude;
+            }
+
+            if (x < 0 && !yIsInteger)
+            {
+                return double.NaN;
+            }
+
+            double result = ax == 1 ? 1.0 : PositivePow(ax, y); // x = -1, y an integer (of any size)
+            return x < 0 && yIsOdd ? -result : result;
+        }
+
+        /// <summary>The sine of x (radians); NaN for infinities.</summary>
+        public static double Sin(double x)
+        {
+            if (Math.Abs(x) <= 7.85398163397448278999e-01)
+            {
+                return Math.Abs(x) < 7.450580596923828e-09 ? x : KernelSin(x, 0, false); // |x| < 2^-27: sin x rounds to x
+            }
+
+            if (double.IsNaN(x) || double.IsInfinity(x))
+            {
+                return double.NaN;
+            }
+
+            int n = Reduce(x, out double y0, out double y1);
+            switch (n & 3)
+            {
+                case 0: return KernelSin(y0, y1, true);
+                case 1: return KernelCos(y0, y1);
+                case 2: return -KernelSin(y0, y1, true);
+                default: return -KernelCos(y0, y1);
+            }
+        }
+
+        /// <summary>The cosine of x (radians); NaN for infinities.</summary>
+        public static double Cos(double x)
+        {
+            if (Math.Abs(x) <= 7.85398163397448278999e-01)
+            {
+                return Math.Abs(x) < 7.450580596923828e-09 ? 1.0 : KernelCos(x, 0); // |x| < 2^-27: cos x rounds to 1
+            }
+
+            if (double.IsNaN(x) || double.IsInfinity(x))
+            {
+                return double.NaN;
+            }
+
+            int n = Reduce(x, out double y0, out double y1);
+            switch (n & 3)
+            {
+                case 0: return KernelCos(y0, y1);
+                case 1: return -KernelSin(y0, y1, true);
+                case 2: return -KernelCos(y0, y1);
+                default: return KernelSin(y0, y1, true);
+            }
+        }
+
+        /// <summary>The arctangent of x, in [-pi/2, pi/2].</summary>
+        public static double Atan(double x)
+        {
+            if (double.IsNaN(x))
+            {
+                return x;
+            }
+
+            double ax = Math.Abs(x);
+            if (ax >= 7.378697629483821e19) // 2^66: atan rounds to +-pi/2
+            {
+                return x > 0 ? AtanHi[3] + AtanLo[3] : -AtanHi[3] - AtanLo[3];
+            }
+
+            int id;
+            if (ax < 0.4375)
+            {
+                if (ax < 3.725290298461914e-09) // 2^-28: atan x rounds to x
+                {
+                    return x;
+                }
+
+                id = -1;
+            }
+            else if (ax < 1.1875)
+            {
+                if (ax < 0.6875)
+                {
+                    id = 0;
+                    ax = (2.0 * ax - 1.0) / (2.0 + ax);
+                }
+                else
+                {
+                    id = 1;
+                    ax = (ax - 1.0) / (ax + 1.0);
+                }
+            }
+            else if (ax < 2.4375)
+            {
+                id = 2;
+                ax = (ax - 1.5) / (1.0 + 1.5 * ax);
+            }
+            else
+            {
+                id = 3;
+                ax = -1.0 / ax;
+            }
+
+            double z = ax * ax;
+            double w = z * z;
+            double s1 = z * (AT0 + w * (AT2 + w * (AT4 + w * (AT6 + w * (AT8 + w * AT10)))));
+            double s2 = w * (AT1 + w * (AT3 + w * (AT5 + w * (AT7 + w * AT9))));
+            if (id < 0)
+            {
+                return x - x * (s1 + s2); // here ax == |x| and the sign rides on x
+            }
+
+            double r = AtanHi[id] - ((ax * (s1 + s2) - AtanLo[id]) - ax);
+            return x < 0 ? -r : r;
+        }
+
+        /// <summary>The angle of the point (x, y) from the +x axis, in [-pi, pi], with C99's special cases.</summary>
+        public static double Atan2(double y, double x)
+        {
+            if (double.IsNaN(x) || double.IsNaN(y))
+            {
+                return double.NaN;
+            }
+
+            if (x == 1.0)
+            {
+                return Atan(y);
+            }
+
+            bool yNegative = y < 0 || (y == 0 && 1 / y < 0);
+            bool xNegative = x < 0 || (x == 0 && 1 / x < 0);
+            if (y == 0)
+            {
+                return !xNegative ? y : yNegative ? -Pi - PiLo : Pi + PiLo;
+            }
+
+            if (x == 0)
+            {
+                return yNegative ? -Pio2Hi - Pio2Lo : Pio2Hi + Pio2Lo;
+            }
+
+            if (double.IsInfinity(x))
+            {
+                double angle = double.IsInfinity(y)
+                    ? (xNegative ? 3.0 * 7.85398163397448278999e-01 : 7.85398163397448278999e-01)
+                    : (xNegative ? Pi + PiLo : 0.0);
+                return yNegative ? -angle : angle;
+            }
+
+            if (double.IsInfinity(y))
+            {
+                return yNegative ? -Pio2Hi - Pio2Lo : Pio2Hi + Pio2Lo;
+            }
+
+            int k = Exponent(y) - Exponent(x);
+            double z;
+            if (k > 60)
+            {
+                z = Pio2Hi + 0.5 * PiLo; // |y/x| > 2^60
+            }
+            else if (xNegative && k < -60)
+            {
+                z = 0.0; // |y/x| < 2^-60 and x < 0
+            }
+            else
+            {
+                z = Atan(Math.Abs(y / x));
+            }
+
+            if (!xNegative)
+            {
+                return yNegative ? -z : z;
+            }
+
+            double fromPi = Pi - (z - PiLo);
+            return yNegative ? -fromPi : fromPi;
+        }
+
+        // ---------------------------------------------------------------- exp
+
+        /// <summary>e^(hi + lo) for |lo| much smaller than ulp(hi) and hi inside (ExpUnderflow, ExpOverflow].</summary>
+        private static double ExpCore(double hi, double lo)
+        {
+            double k = Math.Floor(hi * InvLn2 + 0.5);
+            double rHi = hi - k * Ln2Hi;   // exact (Sterbenz; k * Ln2Hi exact)
+            double rLo = k * Ln2Lo - lo;   // the reduced argument is rHi - rLo
+            double r = rHi - rLo;
+            double t = r * r;
+            double c = r - t * (P1 + t * (P2 + t * (P3 + t * (P4 + t * P5))));
+            double e = 1.0 - ((rLo - (r * c) / (2.0 - c)) - rHi);
+            return Scale(e, (int)k);
+        }
+
+        /// <summary>v * 2^k, rounded once.</summary>
+        private static double Scale(double v, int k)
+        {
+            if (k > 1023)
+            {
+                return v * PowerOfTwo(1023) * PowerOfTwo(k - 1023);
+            }
+
+            if (k < -1022)
+            {
+                return v * PowerOfTwo(k + 1000) * PowerOfTwo(-1000); // the first product is exact; the second rounds once
+            }
+
+            return v * PowerOfTwo(k);
+        }
+
+        private static double PowerOfTwo(int k) => BitConverter.Int64BitsToDouble((long)(k + 1023) << 52);
+
+        private static int Exponent(double v) => (int)((BitConverter.DoubleToInt64Bits(v) >> 52) & 0x7FF);
+
+        // ---------------------------------------------------------------- log, pow
+
+        /// <summary>ln x = hi + lo (|lo| &lt;= ulp(hi)/2, error about 1e-20 relative) for finite x &gt; 0.</summary>
+        private static void LogCore(double x, out double hi, out double lo)
+        {
+            int k = 0;
+            if (x < 2.2250738585072014e-308)
+            {
+                x *= 18014398509481984.0; // 2^54: subnormal to normal, exactly
+                k = -54;
+            }
+
+            long bits = BitConverter.DoubleToInt64Bits(x);
+            k += (int)((bits >> 52) & 0x7FF) - 1023;
+            double m = BitConverter.Int64BitsToDouble((bits & 0x000FFFFFFFFFFFFFL) | 0x3FF0000000000000L); // [1, 2)
+            if (m > Sqrt2)
+            {
+                m *= 0.5;
+                k++;
+            }
+
+            // ln m = 2 atanh(s), s = (m - 1) / (m + 1), |s| <= 0.1716: s in double-double.
+            double f = m - 1.0;                       // exact (Sterbenz)
+            double uHi = 2.0 + f;
+            double uLo = f - (uHi - 2.0);             // 2 + f = uHi + uLo exactly
+            double sHi = f / uHi;
+            TwoProduct(sHi, uHi, out double p, out double pe);
+            double sLo = (((f - p) - pe) - sHi * uLo) / uHi;
+
+            // 2 atanh(s) = 2s + 2 s^3 (1/3 + s^2/5 + s^4/7 + ...), the 1/3 term and s^3 in double-double.
+            double z = sHi * sHi;
+            double q = z * (1.0 / 5 + z * (1.0 / 7 + z * (1.0 / 9 + z * (1.0 / 11 + z * (1.0 / 13 + z * (1.0 / 15
+                + z * (1.0 / 17 + z * (1.0 / 19 + z * (1.0 / 21 + z * (1.0 / 23 + z * (1.0 / 25 + z * (1.0 / 27))))))))))));
+            TwoSum(ThirdHi, q, out double iHi, out double iLo);
+            iLo += ThirdLo;
+            TwoProduct(sHi, sHi, out double s2Hi, out double s2Lo);
+            s2Lo += 2.0 * sHi * sLo;
+            Multiply(s2Hi, s2Lo, sHi, sLo, out double s3Hi, out double s3Lo);
+            Multiply(s3Hi, s3Lo, iHi, iLo, out double tHi, out double tLo);
+            TwoSum(sHi, tHi, out double lHi, out double lLo);
+            lLo += sLo + tLo;
+            lHi *= 2.0;
+            lLo *= 2.0;
+
+            // + k ln 2 in double-double.
+            TwoProduct(k, Ln2Hi53, out double kHi, out double kLo);
+            kLo += k * Ln2Lo53;
+            TwoSum(kHi, lHi, out hi, out double e);
+            e += kLo + lLo;
+            FastTwoSum(hi, e, out hi, out lo);
+        }
+
+        /// <summary>x^y for finite x &gt; 0, finite y != 0: e^(y ln x) with y ln x in double-double.</summary>
+        private static double PositivePow(double x, double y)
+        {
+            LogCore(x, out double lHi, out double lLo);
+            double estimate = y * lHi;
+            if (estimate > 710)
+            {
+                return double.PositiveInfinity;
+            }
+
+            if (estimate < -746)
+            {
+                return 0.0;
+            }
+
+            TwoProduct(y, lHi, out double hi, out double lo);
+            lo += y * lLo;
+            FastTwoSum(hi, lo, out hi, out lo);
+            if (hi > ExpOverflow)
+            {
+                return double.PositiveInfinity;
+            }
+
+            if (hi < ExpUnderflow)
+            {
+                return 0.0;
+            }
+
+            return ExpCore(hi, lo);
+        }
+
+        // ---------------------------------------------------------------- double-double arithmetic (no FMA)
+
+        private static void TwoSum(double a, double b, out double s, out double e)
+        {
+            s = a + b;
+            double bb = s - a;
+            e = (a - (s - bb)) + (b - bb);
+        }
+
+        private static void FastTwoSum(double a, double b, out double s, out double e) // |a| >= |b| or a == 0
+        {
+            s = a + b;
+            e = b - (s - a);
+        }
+
+        private static void Split(double a, out double hi, out double lo)
+        {
+            double t = 134217729.0 * a; // 2^27 + 1 (Veltkamp)
+            hi = t - (t - a);
+            lo = a - hi;
+        }
+
+        /// <summary>a * b = p + e exactly (Dekker), for |a|, |b| below about 2^995.</summary>
+        private static void TwoProduct(double a, double b, out double p, out double e)
+        {
+            p = a * b;
+            Split(a, out double aHi, out double aLo);
+            Split(b, out double bHi, out double bLo);
+            e = ((aHi * bHi - p) + aHi * bLo + aLo * bHi) + aLo * bLo;
+        }
+
+        private static void Multiply(double aHi, double aLo, double bHi, double bLo, out double hi, out double lo)
+        {
+            TwoProduct(aHi, bHi, out double p, out double e);
+            e += aHi * bLo + aLo * bHi;
+            FastTwoSum(p, e, out hi, out lo);
+        }
+
+        // ---------------------------------------------------------------- sin, cos
+
+        private static double KernelSin(double x, double y, bool hasTail)
+        {
+            double z = x * x;
+            double v = z * x;
+            double r = S2 + z * (S3 + z * (S4 + z * (S5 + z * S6)));
+            return !hasTail ? x + v * (S1 + z * r) : x - ((z * (0.5 * y - v * r) - y) - v * S1);
+        }
+
+        private static double KernelCos(double x, double y)
+        {
+            double z = x * x;
+            double r = z * (C1 + z * (C2 + z * (C3 + z * (C4 + z * (C5 + z * C6)))));
+            double hz = 0.5 * z;
+            double w = 1.0 - hz;
+            return w + (((1.0 - w) - hz) + (z * r - x * y));
+        }
+
+        /// <summary>x = n pi/2 + (y0 + y1), |y0 + y1| &lt;= pi/4 (about), for finite |x| &gt; pi/4; returns n.</summary>
+        private static int Reduce(double x, out double y0, out double y1)
+        {
+            double ax = Math.Abs(x);
+            int n;
+            if (ax < MediumReduction)
+            {
+                // fdlibm's medium case: pi/2 in three 33-bit pieces, a piece more while the difference cancels.
+                double fn = Math.Floor(ax * InvPio2 + 0.5);
+                n = (int)fn;
+                double r = ax - fn * Pio2_1;
+                double w = fn * Pio2_1t;
+                y0 = r - w;
+                int j = Exponent(ax);
+                if (j - Exponent(y0) > 16)
+                {
+                    double t = r;
+                    w = fn * Pio2_2;
+                    r = t - w;
+                    w = fn * Pio2_2t - ((t - r) - w);
+                    y0 = r - w;
+                    if (j - Exponent(y0) > 49)
+                    {
+                        t = r;
+                        w = fn * Pio2_3;
+                        r = t - w;
+                        w = fn * Pio2_3t - ((t - r) - w);
+                        y0 = r - w;
+                    }
+                }
+
+                y1 = (r - y0) - w;
+            }
+            else
+            {
+                n = ReduceLarge(ax, out y0, out y1);
+            }
+
+            if (x < 0)
+            {
+                y0 = -y0;
+                y1 = -y1;
+                return -n;
+            }
+
+            return n;
+        }
+
+        /// <summary>Payne-Hanek: ax (2/pi) mod 4 from a 192-bit window of 2/pi, in integer arithmetic.</summary>
+        private static int ReduceLarge(double ax, out double y0, out double y1)
+        {
+            long bits = BitConverter.DoubleToInt64Bits(ax);
+            int e = (int)((bits >> 52) & 0x7FF) - 1075;                 // ax = m 2^e, e >= -32 here
+            ulong m = ((ulong)bits & 0x000FFFFFFFFFFFFFUL) | 0x0010000000000000UL;
+            const int Bits = 64 * 20;
+            int low = Bits - e - 190;                                     // ax 2/pi mod 4 = (m W mod 2^192) 2^-190
+            ulong w0 = TwoOverPiBits(low), w1 = TwoOverPiBits(low + 64), w2 = TwoOverPiBits(low + 128);
+
+            ulong h0 = MultiplyHigh(m, w0, out ulong r0);
+            ulong h1 = MultiplyHigh(m, w1, out ulong l1);
+            ulong l2 = m * w2;
+            ulong r1 = h0 + l1;
+            ulong r2 = h1 + l2 + (r1 < h0 ? 1UL : 0UL);
+
+            int n = (int)(r2 >> 62);
+            r2 &= 0x3FFFFFFFFFFFFFFFUL;                                   // the fraction, 190 bits
+            bool negative = (r2 >> 61) != 0;                              // fraction >= 1/2: round n up, fraction - 1
+            if (negative)
+            {
+                n++;
+                // 2^190 - fraction, in three words
+                r0 = ~r0 + 1;
+                r1 = ~r1 + (r0 == 0 ? 1UL : 0UL);
+                r2 = (~r2 + (r0 == 0 && r1 == 0 ? 1UL : 0UL)) & 0x3FFFFFFFFFFFFFFFUL;
+            }
+
+            // Normalise the 192-bit fraction so its top bit is bit 191, then take 53 + 53 bits.
+            int shift = 0;
+            while (r2 == 0)
+            {
+                r2 = r1;
+                r1 = r0;
+                r0 = 0;
+                shift += 64;
+            }
+
+            while ((r2 & 0x8000000000000000UL) == 0)
+            {
+                r2 = (r2 << 1) | (r1 >> 63);
+                r1 = (r1 << 1) | (r0 >> 63);
+                r0 <<= 1;
+                shift++;
+            }
+
+            double fHi = (double)(long)(r2 >> 11) * PowerOfTwo(-51 - shift);
+            double fLo = (double)(long)(((r2 & 0x7FFUL) << 42) | (r1 >> 22)) * PowerOfTwo(-104 - shift);
+
+            // (fHi + fLo) pi/2 in double-double.
+            TwoProduct(fHi, Pio2Hi, out double p, out double pe);
+            pe += fHi * Pio2Lo + fLo * Pio2Hi;
+            FastTwoSum(p, pe, out y0, out y1);
+            if (negative)
+            {
+                y0 = -y0;
+                y1 = -y1;
+            }
+
+            return n & 3;
+        }
+
+        /// <summary>Bits j .. j+63 of 2^1280 (2/pi) (bit j lowest), zero beyond the table.</summary>
+        private static ulong TwoOverPiBits(int j)
+        {
+            int top = 64 * 20 - 1 - j - 63;                               // position, from the table's first bit, of the chunk's top bit
+            int word = top >= 0 ? top / 64 : -((-top + 63) / 64);
+            int offset = top - 64 * word;
+            ulong first = Word(word) << offset;
+            return offset == 0 ? first : first | (Word(word + 1) >> (64 - offset));
+        }
+
+        private static ulong Word(int i) => i >= 0 && i < TwoOverPi.Length ? TwoOverPi[i] : 0UL;
+
+        /// <summary>The high 64 bits of a * b (the low ones in <paramref name="low"/>).</summary>
+        private static ulong MultiplyHigh(ulong a, ulong b, out ulong low)
+        {
+            ulong aLo = a & 0xFFFFFFFFUL, aHi = a >> 32, bLo = b & 0xFFFFFFFFUL, bHi = b >> 32;
+            ulong ll = aLo * bLo, lh = aLo * bHi, hl = aHi * bLo, hh = aHi * bHi;
+            ulong middle = (ll >> 32) + (lh & 0xFFFFFFFFUL) + (hl & 0xFFFFFFFFUL);
+            low = (middle << 32) | (ll & 0xFFFFFFFFUL);
+            return hh + (lh >> 32) + (hl >> 32) + (middle >> 32);
+        }
+    }
+}
