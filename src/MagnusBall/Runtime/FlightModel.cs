@@ -178,7 +178,12 @@ namespace MagnusBall
         /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
         /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit.
         /// </remarks>
-        public StateDerivative Derivative(in FlightState state) => _kernel.Derivative(state);
+        public StateDerivative Derivative(in FlightState state)
+        {
+            StateDerivative d = _kernel.Derivative(state);
+            // The plain formula overflows only for absurd states (speeds beyond ~1e150 m/s): then the scaled one.
+            return d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite ? d : ScaledDerivative(state);
+        }
 
         /// <summary>The kernel this model's evaluations and the built-in fixed steps run through.</summary>
         internal FlightKernel Kernel => _kernel;

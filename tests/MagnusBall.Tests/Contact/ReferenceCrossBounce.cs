@@ -101,7 +101,7 @@ namespace MagnusBall.Tests.Contact
             Vector3d lambda1 = vt - omega * alpha;
 
             double tangentialSpeed = vt.Length;
-            double incomingAngleDegrees = Math.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
+            double incomingAngleDegrees = PortableMath.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
             double ey = surface.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn; // |Delta v_n| = P_n / m
             double mu = surface.SlidingFriction;
@@ -197,7 +197,7 @@ namespace MagnusBall.Tests.Contact
             double lo = 0, hi = 1, r = 0.5;
             for (int i = 0; i < 200; i++)
             {
-                double rk1 = Math.Pow(r, k - 1);
+                double rk1 = PortableMath.Pow(r, k - 1);
                 double rk = rk1 * r;
                 double g = scale * ((1 - rk1) / (k - 1) + t0Squared * (1 - rk * r) / (k + 1)) - q;
                 if (g > 0)
@@ -228,7 +228,7 @@ namespace MagnusBall.Tests.Contact
 
             double t = r * t0;
             double tSquared = t * t;
-            double s = s0 * Math.Pow(r, k - 1) * (1 + tSquared) / (1 + t0Squared);
+            double s = s0 * PortableMath.Pow(r, k - 1) * (1 + tSquared) / (1 + t0Squared);
             double cos2 = (1 - tSquared) / (1 + tSquared);
             double sin2 = 2 * t / (1 + tSquared);
             u2 = (e1 * cos2 + e2 * sin2) * s;
