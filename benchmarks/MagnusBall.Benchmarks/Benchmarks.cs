@@ -144,12 +144,14 @@ namespace MagnusBall.Benchmarks
         private FlightState[] _samples = null!;
         private FlightEvent[] _events = null!;
         private readonly DormandPrince54 _dp54 = new DormandPrince54(1e-6, 1e-6);
+        private FlightStepper _dp54Stepper = null!;
 
         [GlobalSetup]
         public void Setup()
         {
             _model = Scenarios.FullTennis();
             _rk4 = new TrajectoryPredictor(_model, RungeKutta4.Instance, 1.0 / 240);
+            _dp54Stepper = Flight.ReferenceStepper(_model);
             _stableRk4 = new TrajectoryPredictor(_model, StableIntegrator.RungeKutta4, 1.0 / 240);
             _start = Scenarios.TennisDrive();
             _samples = new FlightState[600];
@@ -165,7 +167,7 @@ namespace MagnusBall.Benchmarks
         [Benchmark(Description = "DP54 adaptive rtol=atol=1e-6 to the landing, dense-output landing")]
         public double PredictDp54()
         {
-            Flight.TryLandReference(_model, _start, 2.0, _dp54, out Vector3d landing, out _);
+            Flight.TryLandReference(_dp54Stepper, _start, 2.0, _dp54, out Vector3d landing, out _);
             return landing.X;
         }
     }

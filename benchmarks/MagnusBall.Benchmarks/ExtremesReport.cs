@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.Globalization;
@@ -46,68 +47,46 @@ namespace MagnusBall.Benchmarks
 
         public static Outcome Fly(FlightModel model, IIntegrator integrator, bool stable, FlightState state, double step)
         {
+            // Through the library's one flight core, with the ground as a stop event: a refused (diverging) step is a
+            // non-finite outcome; each taken step is checked for energy rise and run-away speed.
             var outcome = new Outcome { Finite = true };
-            StateDerivative derivative = model.Derivative(state);
+            var stepper = new FlightStepper(model, stable ? new StableIntegrator(integrator) : integrator, new FlightEventSet(Vector3d.Zero, LandingLocator.Ground));
+            stepper.Reset(state);
             double s0 = state.Velocity.Length;
             double g = model.Gravity.Length;
             double m = model.Ball.Mass;
-            outcome.Evaluations = 1;
-            int perStep = integrator.DerivativeEvaluationsPerStep;
-            while (state.Time < MaxTime)
+            while (stepper.State.Time < MaxTime)
             {
-                FlightState next;
-                StateDerivative end;
-                try
-                {
-                    if (stable)
-                    {
-                        next = StableStepping.Step(integrator, model, state, derivative, step, out end, out int substeps);
-                        outcome.Evaluations += (long)perStep * substeps;
-                    }
-                    else
-                    {
-                        next = integrator.Step(model, state, derivative, step);
-                        end = model.Derivative(next);
-                        outcome.Evaluations += perStep;
-                    }
-                }
-                catch (ArgumentException)
-                {
-                    // Only a non-finite state (from an earlier overflow) is rejected here.
-                    outcome.Finite = false;
-                    return outcome;
-                }
-
-                if (!next.IsFinite || !IsFinite(end))
+                FlightState before = stepper.State;
+                StepOutcome taken = stepper.TryStep(step, FlightEventKinds.Landing);
+                outcome.Evaluations = stepper.DerivativeEvaluations;
+                if (taken == StepOutcome.Diverged || taken == StepOutcome.TimeCannotAdvance)
                 {
                     outcome.Finite = false;
                     return outcome;
                 }
 
-                double e0 = model.MechanicalEnergy(state), e1 = model.MechanicalEnergy(next);
-                double scale = m * (0.5 * Math.Max(state.Velocity.LengthSquared, next.Velocity.LengthSquared) +
-                                    g * Math.Max(state.Position.Length, next.Position.Length) + g);
+                FlightState next = stepper.State;
+                double e0 = model.MechanicalEnergy(before), e1 = model.MechanicalEnergy(next);
+                double scale = m * (0.5 * Math.Max(before.Velocity.LengthSquared, next.Velocity.LengthSquared) +
+                                    g * Math.Max(before.Position.Length, next.Position.Length) + g);
                 outcome.MaxEnergyRise = Math.Max(outcome.MaxEnergyRise, (e1 - e0) / scale);
                 if (next.Velocity.Length > s0 + g * next.Time + 1e-9)
                 {
                     outcome.Diverged = true;
                 }
 
-                if (LandingLocator.TryLocate(state, derivative, next, end, out Vector3d landing))
+                if (stepper.IsStopped)
                 {
                     outcome.Landed = true;
-                    outcome.Landing = landing;
+                    outcome.Landing = stepper.StopEvent.Position;
                     return outcome;
                 }
-
-                state = next;
-                derivative = end;
             }
 
             return outcome;
         }
 
-        private static bool IsFinite(in StateDerivative d) => d.Velocity.IsFinite && d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite;
 
         /// <summary>The full matrix, summarised per (method, step) and, for the default stepping, per (ball, step).</summary>
         public static string Matrix(bool quick)
@@ -305,26 +284,15 @@ namespace MagnusBall.Benchmarks
 
         private static bool Oscillates(FlightModel model, IIntegrator integrator, FlightState state, double step)
         {
-            StateDerivative d = model.Derivative(state);
-            for (int i = 0; i < 40 && state.Time < 2; i++)
+            var stepper = new FlightStepper(model, integrator);
+            stepper.Reset(state);
+            for (int i = 0; i < 40 && stepper.State.Time < 2; i++)
             {
-                FlightState next;
-                try
-                {
-                    next = integrator.Step(model, state, d, step);
-                }
-                catch (ArgumentException)
+                FlightState before = stepper.State;
+                if (stepper.TryStep(step) != StepOutcome.Taken || stepper.State.Velocity.X * before.Velocity.X < 0)
                 {
                     return true;
                 }
-
-                if (!next.IsFinite || next.Velocity.X * state.Velocity.X < 0)
-                {
-                    return true;
-                }
-
-                state = next;
-                d = model.Derivative(state);
             }
 
             return false;
@@ -333,27 +301,12 @@ namespace MagnusBall.Benchmarks
         private static bool Diverges(FlightModel model, IIntegrator integrator, FlightState state, double step)
         {
             double s0 = state.Velocity.Length, g = model.Gravity.Length;
-            StateDerivative d = model.Derivative(state);
-            for (int i = 0; i < 40 && state.Time < 2; i++)
+            var stepper = new FlightStepper(model, integrator);
+            stepper.Reset(state);
+            for (int i = 0; i < 40 && stepper.State.Time < 2; i++)
             {
-                FlightState next;
-                try
-                {
-                    next = integrator.Step(model, state, d, step);
-                }
-                catch (ArgumentException)
-                {
-                    return true;
-                }
-
-                if (!next.IsFinite || next.Velocity.Length > s0 + g * next.Time + 1e-9)
-                {
-                    return true;
-                }
-
-                state = next;
-                d = model.Derivative(state);
-                if (!double.IsFinite(d.Acceleration.X))
+                // A step the core refuses (non-finite state or derivative) is a divergence, as is a run-away speed.
+                if (stepper.TryStep(step) != StepOutcome.Taken || stepper.State.Velocity.Length > s0 + g * stepper.State.Time + 1e-9)
                 {
                     return true;
                 }

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
 
@@ -26,109 +27,64 @@ namespace MagnusBall.Benchmarks
         }
     }
 
-    /// <summary>Fixed-step and reference flights to the landing.</summary>
+    /// <summary>Fixed-step and reference flights to the landing, through the library's one flight core.</summary>
     internal static class Flight
     {
-        /// <summary>Flies with a fixed step until the landing; evaluations count every derivative evaluation.</summary>
+        /// <summary>The ground through the origin, no apex: the landing is the only event.</summary>
+        private static readonly FlightEventSet GroundOnly = new FlightEventSet(Vector3d.Zero, LandingLocator.Ground);
+
+        /// <summary>Flies with a fixed step until the landing; evaluations count every model evaluation.</summary>
         public static bool TryLand(
-            FlightModel model, IIntegrator integrator, FlightState state, double step, double maxTime, out Vector3d landing, out long evaluations)
-        {
-            StateDerivative derivative = model.Derivative(state);
-            evaluations = 1;
-            int perStep = integrator.DerivativeEvaluationsPerStep;
-            while (state.Time < maxTime)
-            {
-                FlightState next = integrator.Step(model, state, derivative, step);
-                StateDerivative end = model.Derivative(next);
-                evaluations += perStep;
-                if (LandingLocator.TryLocate(state, derivative, next, end, out landing))
-                {
-                    return true;
-                }
+            FlightModel model, IIntegrator integrator, FlightState state, double step, double maxTime, out Vector3d landing, out long evaluations) =>
+            Fly(new FlightStepper(model, integrator, GroundOnly), state, step, maxTime, out landing, out evaluations);
 
-                state = next;
-                derivative = end;
-            }
-
-            landing = default;
-            return false;
-        }
-
-        /// <summary>As <see cref="TryLand"/>, through <see cref="StableStepping.Step"/> (the default, safe stepping).</summary>
+        /// <summary>As <see cref="TryLand"/>, substepped for stability (<see cref="StableIntegrator"/>, the default, safe stepping).</summary>
         public static bool TryLandStable(
-            FlightModel model, IIntegrator integrator, FlightState state, double step, double maxTime, out Vector3d landing, out long evaluations)
+            FlightModel model, IIntegrator integrator, FlightState state, double step, double maxTime, out Vector3d landing, out long evaluations) =>
+            Fly(new FlightStepper(model, new StableIntegrator(integrator), GroundOnly), state, step, maxTime, out landing, out evaluations);
+
+        private static bool Fly(FlightStepper stepper, FlightState state, double step, double maxTime, out Vector3d landing, out long evaluations)
         {
-            StateDerivative derivative = model.Derivative(state);
-            evaluations = 1;
-            int perStep = integrator.DerivativeEvaluationsPerStep;
-            while (state.Time < maxTime)
+            stepper.Reset(state);
+            // Bounded: each pass advances the clock by a step, or ends.
+            while (stepper.State.Time < maxTime && stepper.TryStep(step, FlightEventKinds.Landing) != StepOutcome.Diverged)
             {
-                FlightState next = StableStepping.Step(integrator, model, state, derivative, step, out StateDerivative end, out int substeps);
-                evaluations += (long)perStep * substeps;
-                if (LandingLocator.TryLocate(state, derivative, next, end, out landing))
+                if (stepper.IsStopped)
                 {
+                    landing = stepper.StopEvent.Position;
+                    evaluations = stepper.DerivativeEvaluations;
                     return true;
                 }
-
-                state = next;
-                derivative = end;
             }
 
             landing = default;
+            evaluations = stepper.DerivativeEvaluations;
             return false;
         }
 
         /// <summary>
         /// The reference landing: adaptive Dormand-Prince 5(4) at rtol = atol = <paramref name="tolerance"/>, the crossing
-        /// located by bisection on its own fourth-order dense output.
+        /// located on its own fourth-order dense output by the flight core.
         /// </summary>
         public static bool TryLandReference(FlightModel model, FlightState state, double maxTime, double tolerance, out Vector3d landing, out long evaluations) =>
-            TryLandReference(model, state, maxTime, new DormandPrince54(tolerance, tolerance), out landing, out evaluations);
+            TryLandReference(new FlightStepper(model, RungeKutta4.Instance, GroundOnly), state, maxTime, new DormandPrince54(tolerance, tolerance), out landing, out evaluations);
 
-        /// <summary>As above, with a given method (no allocation).</summary>
-        public static bool TryLandReference(FlightModel model, FlightState state, double maxTime, DormandPrince54 method, out Vector3d landing, out long evaluations)
+        /// <summary>As above, with a given stepper and method (no allocation).</summary>
+        public static bool TryLandReference(FlightStepper stepper, FlightState state, double maxTime, DormandPrince54 method, out Vector3d landing, out long evaluations)
         {
-            StateDerivative derivative = model.Derivative(state);
-            double step = method.InitialStep(model, state, derivative, 0.01);
-            evaluations = 2;
-            while (state.Time < maxTime)
+            stepper.Reset(state);
+            // Bounded: FlightStepper.MaxAdaptiveAttempts per step, and each accepted step advances the clock.
+            while (stepper.State.Time < maxTime &&
+                   stepper.TryStepAdaptive(method, maxTime - stepper.State.Time, FlightEventKinds.Landing) == StepOutcome.Taken)
             {
-                bool accepted = method.TryStep(model, state, derivative, step, out DormandPrince54Step result);
-                evaluations += 6;
-                step = result.NextStep;
-                if (!accepted)
-                {
-                    continue;
-                }
-
-                double h0 = Vector3d.Dot(result.Start.Position, Scenarios.Up);
-                double h1 = Vector3d.Dot(result.End.Position, Scenarios.Up);
-                if (h0 >= 0 && h1 < 0)
-                {
-                    double lo = 0, hi = 1;
-                    for (int i = 0; i < 80 && hi - lo > 1e-16; i++)
-                    {
-                        double mid = 0.5 * (lo + hi);
-                        if (Vector3d.Dot(result.InterpolateFraction(mid).Position, Scenarios.Up) >= 0)
-                        {
-                            lo = mid;
-                        }
-                        else
-                        {
-                            hi = mid;
-                        }
-                    }
-
-                    landing = result.InterpolateFraction(0.5 * (lo + hi)).Position;
-                    return true;
-                }
-
-                state = result.End;
-                derivative = result.EndDerivative;
             }
 
-            landing = default;
-            return false;
+            evaluations = stepper.DerivativeEvaluations;
+            landing = stepper.IsStopped ? stepper.StopEvent.Position : default;
+            return stepper.IsStopped;
         }
+
+        /// <summary>A stepper for <see cref="TryLandReference(FlightStepper, FlightState, double, DormandPrince54, out Vector3d, out long)"/>.</summary>
+        public static FlightStepper ReferenceStepper(FlightModel model) => new FlightStepper(model, RungeKutta4.Instance, GroundOnly);
     }
 }
