@@ -75,7 +75,7 @@ namespace MagnusBall.Tests.Flight
             stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(5, 0, 0), Vector3d.Zero));
             Assert.That(stepper.TryStep(1.0), Is.EqualTo(StepOutcome.Taken));
 
-            ReadOnlySpan<FlightEvent> events = stepper.Events;
+            FlightEvent[] events = stepper.Events.ToArray(); // a copy: Mono 6.8 cannot index a ReadOnlySpan (docs/determinism.md)
             foreach (FlightEvent e in events)
             {
                 TestContext.Out.WriteLine(e.ToString());

@@ -147,6 +147,11 @@ namespace MagnusBall.Tests.Queries
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new LaunchSpin(double.NaN))!.ParamName, Is.EqualTo("topspin"));
             Assert.That(Assert.Throws<ArgumentException>(() => new AimSolver(FlightModel.Vacuum(Ball.Tennis, Vector3d.Zero), RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ)))!.ParamName, Is.EqualTo("model"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new AimSolver(Vacuum, RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ), minimumElevationDegrees: 10, maximumElevationDegrees: 5))!.ParamName, Is.EqualTo("maximumElevationDegrees"));
+            // Bounded work: a scan of 1e-6 degree over the default 125 degrees would fly 1.25e8 trials per solve.
+            var fine = Assert.Throws<ArgumentOutOfRangeException>(() => new AimSolver(Vacuum, RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ), elevationScanDegrees: 1e-6))!;
+            Assert.That(fine.ParamName, Is.EqualTo("elevationScanDegrees"));
+            Assert.That(fine.Message, Does.Contain("0.0125"));
+            Assert.That(new AimSolver(Vacuum, RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ), elevationScanDegrees: 0.0125).ElevationScanRadians, Is.GreaterThan(0), "the finest allowed scan");
             Assert.That(Assert.Throws<ArgumentException>(() => new LaunchFrame(Vector3d.UnitZ, new Vector3d(0, 0, 2)))!.ParamName, Is.EqualTo("forward"));
         }
     }

@@ -121,6 +121,9 @@ namespace MagnusBall.Queries
         /// <summary>Elevation and azimuth are refined to this tolerance, rad (1e-8 rad = 5.7e-7 degree).</summary>
         public const double AngleTolerance = 1e-8;
 
+        /// <summary>The most trial flights one elevation scan may take (the constructor refuses a finer scan).</summary>
+        public const int MaximumScanTrials = 10_000;
+
         /// <summary>Speed is refined to this tolerance, m/s.</summary>
         public const double SpeedTolerance = 1e-8;
 
@@ -136,7 +139,7 @@ namespace MagnusBall.Queries
         /// <param name="maximumFlightTime">The longest trial flight, s; finite and &gt; 0.</param>
         /// <param name="minimumElevationDegrees">Lowest elevation tried, degrees; in [-89, 89].</param>
         /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
-        /// <param name="elevationScanDegrees">Elevation scan step, degrees; in (0, 10]. A solution window narrower than this can be missed.</param>
+        /// <param name="elevationScanDegrees">Elevation scan step, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>. A solution window narrower than this can be missed.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolver(
@@ -175,6 +178,16 @@ namespace MagnusBall.Queries
             }
 
             Require.InRange(elevationScanDegrees, double.Epsilon, 10, nameof(elevationScanDegrees));
+            double scanTrials = (maximumElevationDegrees - minimumElevationDegrees) / elevationScanDegrees;
+            if (!(scanTrials <= MaximumScanTrials))
+            {
+                // Bounded work: the elevation scan flies one trial per scan step.
+                throw new ArgumentOutOfRangeException(
+                    nameof(elevationScanDegrees), elevationScanDegrees,
+                    $"elevationScanDegrees must be at least (maximum - minimum elevation) / {MaximumScanTrials} = " +
+                    $"{Require.Format((maximumElevationDegrees - minimumElevationDegrees) / MaximumScanTrials)} degrees here (at most {MaximumScanTrials} scan trials per solve), and at most 10; got {Require.Format(elevationScanDegrees)}.");
+            }
+
             MinimumElevationRadians = minimumElevationDegrees * (Math.PI / 180);
             MaximumElevationRadians = maximumElevationDegrees * (Math.PI / 180);
             ElevationScanRadians = elevationScanDegrees * (Math.PI / 180);
@@ -320,6 +333,8 @@ namespace MagnusBall.Queries
             double direction = f0 > 0 ? -1 : 1;
             double stride = Math.Min(limit, Math.Max(Math.Abs(f0) / distance * 1.5, 1e-3));
             double a1 = a0, f1 = f0;
+            // Bounded: the stride is at least 1e-3 rad and the azimuth at most the limit (<= 90 degrees), so at most
+            // about 1,600 passes before the limit is reached.
             while (true)
             {
                 double next = a1 + direction * stride;
