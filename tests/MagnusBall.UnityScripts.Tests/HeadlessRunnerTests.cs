@@ -114,6 +114,23 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void Help_ListsEveryIntegrator_AndTheAnglesItAccepts()
+        {
+            (int code, string output, _) = Run("--help");
+            Assert.That(code, Is.EqualTo(0));
+            foreach (string name in MagnusBall.Integration.Integrators.Names)
+            {
+                Assert.That(output, Does.Contain(name), "every integrator the scene accepts is listed");
+            }
+
+            // The range the parser enforces (Program.cs: -89.9..89.9), not a wider one.
+            Assert.That(output, Does.Contain("--elevation DEG     launch angle above horizontal (-89.9..89.9)"));
+            (int bad, _, string error) = Run("--elevation", "90");
+            Assert.That(bad, Is.EqualTo(2));
+            Assert.That(error, Does.Contain("--elevation"));
+        }
+
+        [Test]
         public void Aim_SolvesTheAngles_SoTheBallLandsOnTheTarget()
         {
             // The kick serve's speed and spin (with sidespin, so the sidespin sign convention is exercised), aimed
