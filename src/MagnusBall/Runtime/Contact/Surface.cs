@@ -123,14 +123,14 @@ namespace MagnusBall.Contact
         /// <param name="incomingSpeed">v1: the ball's speed before the bounce, m/s.</param>
         public double ForceOffsetAt(double incomingSpeed) => ForceOffset + ForceOffsetPerSpeed * incomingSpeed;
 
-        /// <summary>The preset called <paramref name="name"/> (case-insensitive): hard, clay, grass or frictionless.</summary>
+        /// <summary>The preset called <paramref name="name"/> (case-insensitive; surrounding spaces ignored): hard, clay, grass or frictionless.</summary>
         /// <param name="name">A preset name.</param>
         /// <exception cref="ArgumentException">The name is unknown; the message lists the known names.</exception>
         public static Surface FromName(string name)
         {
             foreach (Surface surface in All)
             {
-                if (string.Equals(surface.Name, name, StringComparison.OrdinalIgnoreCase))
+                if (NameLookup.Matches(surface.Name, name))
                 {
                     return surface;
                 }

@@ -114,19 +114,16 @@ namespace MagnusBall.Integration
             }
         }
 
-        /// <summary>The integrator called <paramref name="name"/> (case-insensitive).</summary>
+        /// <summary>The integrator called <paramref name="name"/> (case-insensitive; '_' or ' ' may stand for '-').</summary>
         /// <param name="name">One of <see cref="Names"/>.</param>
         /// <exception cref="ArgumentException">The name is unknown; the message lists the known names.</exception>
         public static IIntegrator FromName(string name)
         {
-            if (name != null)
+            foreach (IIntegrator integrator in All)
             {
-                foreach (IIntegrator integrator in All)
+                if (NameLookup.Matches(integrator.Name, name))
                 {
-                    if (string.Equals(integrator.Name, name, StringComparison.OrdinalIgnoreCase))
-                    {
-                        return integrator;
-                    }
+                    return integrator;
                 }
             }
 

@@ -187,15 +187,11 @@ namespace MagnusBall.Presets
         /// <exception cref="ArgumentException">The name is null or unknown; the message lists the known names.</exception>
         public static SportPreset FromName(string name)
         {
-            if (name != null)
+            foreach (SportPreset preset in All)
             {
-                string key = name.Trim().Replace('_', '-').Replace(' ', '-');
-                foreach (SportPreset preset in All)
+                if (NameLookup.Matches(preset.Name, name))
                 {
-                    if (string.Equals(preset.Name, key, StringComparison.OrdinalIgnoreCase))
-                    {
-                        return preset;
-                    }
+                    return preset;
                 }
             }
 
