@@ -136,6 +136,36 @@ namespace MagnusBall.Tests.Flight
         }
 
         [Test]
+        public void AStepRefusedAfterABounce_LeavesTheLastStepsEventsAndPiecesAsTheyWere()
+        {
+            // A bounce that launches the ball at 1e200 m/s: the piece after it overflows, so the step is refused after it
+            // already located the apex... and the bounce. Nothing of that half-done step may show.
+            FlightModel model = Shots.StepanekTennis(Gravity.ZUp);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, FlightEventSet.ForModel(model), new GroundContact(new Catapult(), Plane.Ground(model)));
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(10, 0, 3), Vector3d.Zero));
+            Assert.That(stepper.TryStep(0.35), Is.EqualTo(StepOutcome.Taken), "up to just past the apex (~0.3 s), before the bounce");
+            FlightEvent[] events = stepper.Events.ToArray();
+            Assert.That(events, Has.Length.EqualTo(1), "the apex");
+            HermiteSegment last = stepper.LastSegment;
+            FlightState state = stepper.State;
+
+            Assert.That(stepper.TryStep(1.0), Is.EqualTo(StepOutcome.Diverged), "it bounces, then the catapulted piece overflows");
+            Assert.That(stepper.Events.ToArray(), Is.EqualTo(events));
+            Assert.That(stepper.LastSegment.Start, Is.EqualTo(last.Start));
+            Assert.That(stepper.LastSegment.End, Is.EqualTo(last.End));
+            Assert.That(stepper.State, Is.EqualTo(state));
+            Assert.That(stepper.BounceCount, Is.EqualTo(0));
+            Assert.That(stepper.StateAt(state.Time - 0.1), Is.EqualTo(last.StateAt(state.Time - 0.1)));
+        }
+
+        /// <summary>A bounce law that sends the ball off the surface at 1e200 m/s.</summary>
+        private sealed class Catapult : IBounceModel
+        {
+            public BounceOutcome Bounce(Ball ball, in Vector3d normal, in Vector3d velocity, in Vector3d angularVelocity) =>
+                new BounceOutcome(normal * 1e200, angularVelocity, BounceRegime.Slide, 1, -Vector3d.Dot(velocity, normal));
+        }
+
+        [Test]
         public void SteppingAllocatesNothing_WithEventsAndBounces()
         {
             FlightModel model = Shots.StepanekTennis(Gravity.ZUp);

@@ -488,12 +488,6 @@ namespace MagnusBall.Batch
             }
         }
 
-        private static void CheckState(in FlightState state)
-        {
-            if (!state.IsFinite)
-            {
-                throw new ArgumentException($"state must have finite position, velocity, angular velocity and time; got {state}.", nameof(state));
-            }
-        }
+        private static void CheckState(in FlightState state) => Require.FiniteState(state, nameof(state));
     }
 }

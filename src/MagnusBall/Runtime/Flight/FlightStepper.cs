@@ -75,9 +75,13 @@ namespace MagnusBall.Flight
         /// <summary>The most attempts <see cref="TryStepAdaptive"/> makes before it accepts the smallest step it tried.</summary>
         public const int MaxAdaptiveAttempts = 64;
 
-        private readonly FlightEvent[] _events;
+        // Two of each: a step writes its events and pieces into the pending arrays and swaps them in when it is taken,
+        // so a refused step leaves the last step's Events and segments exactly as they were.
+        private FlightEvent[] _events;
+        private FlightEvent[] _pendingEvents;
         private readonly FlightEvent[] _scratch;
-        private readonly HermiteSegment[] _segments = new HermiteSegment[MaxPiecesPerStep + 1];
+        private HermiteSegment[] _segments = new HermiteSegment[MaxPiecesPerStep + 1];
+        private HermiteSegment[] _pendingSegments = new HermiteSegment[MaxPiecesPerStep + 1];
         private readonly Plane _contactPlane;
         private readonly Vector3d _normal;
         private readonly double _rollingDeceleration; // c_rr g_n
@@ -87,6 +91,8 @@ namespace MagnusBall.Flight
         private Snapshot _now;
         private int _eventCount;
         private int _segmentCount;
+        private int _pendingEventCount;
+        private int _pendingSegmentCount;
         private bool _started;
 
         /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
@@ -103,6 +109,7 @@ namespace MagnusBall.Flight
             Contact = contact;
             int perPiece = (events?.MaximumEventsPerStep ?? 0) + 1;
             _events = new FlightEvent[(MaxPiecesPerStep + 1) * perPiece + 1];
+            _pendingEvents = new FlightEvent[_events.Length];
             _scratch = new FlightEvent[perPiece];
             if (contact != null)
             {
@@ -149,7 +156,10 @@ namespace MagnusBall.Flight
         /// <summary>The dense output of the last piece of flight of the last step (default before the first step).</summary>
         public HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
-        /// <summary>The events of the last step, in time order, up to its stop event (nothing after a stop happens).</summary>
+        /// <summary>
+        /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
+        /// step leaves them as they were; a call on a stopped flight (<see cref="StepOutcome.AlreadyStopped"/>) clears them.
+        /// </summary>
         public ReadOnlySpan<FlightEvent> Events => new ReadOnlySpan<FlightEvent>(_events, 0, _eventCount);
 
         /// <summary>The stop event of the flight (default until <see cref="IsStopped"/>; a rest is a stop too).</summary>
@@ -321,16 +331,15 @@ namespace MagnusBall.Flight
             double endTime = _now.State.Time + step;
             if (!(endTime > _now.State.Time))
             {
-                _eventCount = 0;
                 return StepOutcome.TimeCannotAdvance;
             }
 
-            // Everything this step may change, kept so that a refused step puts it all back.
+            // Everything this step may change, kept so that a refused step puts it all back (events and pieces go to the
+            // pending arrays, swapped in only when the step is taken).
             Snapshot before = _now;
-            int eventsBefore = _eventCount, segmentsBefore = _segmentCount;
             _now.Previous = _now.State;
-            _eventCount = 0;
-            _segmentCount = 0;
+            _pendingEventCount = 0;
+            _pendingSegmentCount = 0;
 
             // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
             for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
@@ -347,8 +356,6 @@ namespace MagnusBall.Flight
                 if (!ok)
                 {
                     _now = before;
-                    _eventCount = eventsBefore;
-                    _segmentCount = segmentsBefore;
                     return StepOutcome.Diverged;
                 }
 
@@ -365,6 +372,10 @@ namespace MagnusBall.Flight
 
             _now.Steps++;
             _now.StartsFlight = false;
+            (_events, _pendingEvents) = (_pendingEvents, _events);
+            (_segments, _pendingSegments) = (_pendingSegments, _segments);
+            _eventCount = _pendingEventCount;
+            _segmentCount = _pendingSegmentCount;
             return _now.Phase == FlightPhase.Stopped ? StepOutcome.Stopped : StepOutcome.Taken;
         }
 
@@ -609,17 +620,17 @@ namespace MagnusBall.Flight
         private void Write(in FlightEvent e)
         {
             // The array holds every event MaxPiecesPerStep pieces can produce; this guard only keeps it in bounds.
-            if (_eventCount < _events.Length)
+            if (_pendingEventCount < _pendingEvents.Length)
             {
-                _events[_eventCount++] = e;
+                _pendingEvents[_pendingEventCount++] = e;
             }
         }
 
         private void PushSegment(in HermiteSegment segment)
         {
-            if (_segmentCount < _segments.Length && segment.Duration > 0)
+            if (_pendingSegmentCount < _pendingSegments.Length && segment.Duration > 0)
             {
-                _segments[_segmentCount++] = segment;
+                _pendingSegments[_pendingSegmentCount++] = segment;
             }
         }
 

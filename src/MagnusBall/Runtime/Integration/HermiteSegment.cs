@@ -210,13 +210,7 @@ namespace MagnusBall.Integration
             return FirstFall(f0, m0, f1, m1, false, out time);
         }
 
-        private static void RequireFinite(in FlightState state, string name)
-        {
-            if (!state.IsFinite)
-            {
-                throw new ArgumentException($"{name} must have finite position, velocity, angular velocity and time; got {state}.", name);
-            }
-        }
+        private static void RequireFinite(in FlightState state, string name) => Require.FiniteState(state, name);
 
         private static void RequireFinite(in StateDerivative derivative, string name)
         {

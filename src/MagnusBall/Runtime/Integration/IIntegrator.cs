@@ -163,7 +163,8 @@ namespace MagnusBall.Integration
                     nameof(step), step, $"step must be a finite time step > 0 s; got {Require.Format(step)}.");
             }
 
-            throw new ArgumentException($"state must have finite position, velocity, angular velocity and time; got {state}.", nameof(state));
+            // Called only when a check failed: with the model and the step valid, it is the state.
+            Require.FiniteState(state, nameof(state));
         }
     }
 }
