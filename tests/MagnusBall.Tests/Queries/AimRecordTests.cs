@@ -1,0 +1,91 @@
+using System;
+using System.Collections.Generic;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Queries
+{
+    /// <summary>
+    /// The aim solver's answers on <see cref="AimCases"/>, recorded with the solver as it was before it was rebuilt
+    /// (fixed RK4 trials at 1/240 s, an elevation scan of 2 degrees and Illinois refinement to 1e-8 rad and 1e-8 m/s;
+    /// commit 8e90142), and the rebuilt solver checked against them.
+    /// </summary>
+    [TestFixture]
+    public class AimRecordTests
+    {
+        // name, solved, elevation (rad), azimuth (rad), speed (m/s); the comment: flights and miss (m) of the old solver.
+        internal static readonly (string Name, bool Solved, double Elevation, double Azimuth, double Speed)[] Recorded =
+        {
+            ("cross stepanek z-up net_nospin", true, 0.06837247846079986, 0, 30), // 30 flights, miss 1.4490602717742718E-08
+            ("cross stepanek z-up baseline_nospin", true, 0.13807413067581145, 0, 30), // 49 flights, miss 6.376170829693051E-08
+            ("cross stepanek z-up net_topspin", true, 0.09584211686293428, 0, 30), // 31 flights, miss 1.6932366397881538E-08
+            ("cross stepanek z-up baseline_topspin", true, 0.20703406705046226, 0, 30), // 50 flights, miss 1.2953236283195715E-07
+            ("cross thesis z-up net_nospin", true, 0.0693728022875417, 0, 30), // 30 flights, miss 1.7907739624511976E-08
+            ("cross thesis z-up baseline_nospin", true, 0.14344880225412565, 0, 30), // 49 flights, miss 1.3373539625802932E-07
+            ("cross thesis z-up net_topspin", true, 0.10739402549698464, 0, 30), // 33 flights, miss 3.762135047935544E-11
+            ("cross thesis z-up baseline_topspin", true, 0.22243343774229893, 0, 30), // 50 flights, miss 8.63841765881102E-08
+            ("cross stepanek y-up net_nospin", true, 0.06837247846079986, 0, 30), // 30 flights, miss 1.4490602717742718E-08
+            ("cross stepanek y-up baseline_nospin", true, 0.13807413067581145, 0, 30), // 49 flights, miss 6.376170829693051E-08
+            ("cross stepanek y-up net_topspin", true, 0.09584211686293428, 0, 30), // 31 flights, miss 1.6932366397881538E-08
+            ("cross stepanek y-up baseline_topspin", true, 0.20703406705046226, 0, 30), // 50 flights, miss 1.2953236283195715E-07
+            ("freekick z-up", true, 0.3373291463129691, -0.1645857349654243, 24.15), // 88 flights, miss 6.543782037779092E-08
+            ("freekick y-up", true, 0.3373291463129691, -0.16458573496542434, 24.15), // 89 flights, miss 6.543781995062697E-08
+            ("bench clear net", true, 0.09568886270863664, 0, 30), // 31 flights, miss 1.612988520527381E-08
+            ("bench baseline", true, 0.20615017292371632, 0, 30), // 50 flights, miss 1.3593571705728877E-07
+            ("bench corner", true, 0.21213081795031694, 0, 30), // 119 flights, miss 7.954581721526105E-08
+            ("bench speed", true, 0.13962634015954636, 0, 35.57751617489639), // 61 flights, miss 6.474945007245436E-10
+            ("curve angles", true, 0.26118669901273195, -0.0413707413031349, 28), // 92 flights, miss 4.9941044433126034E-08
+            ("curve elevation az 3deg", true, 0.2625629179830345, 0.05235987755982988, 28), // 36 flights, miss 1.8936984446582155
+            ("curve speed", true, 0.20943951023931953, -0.03490658503988659, 24.124950017001947), // 46 flights, miss 0.08784820668776676
+            ("backspin float", true, 0.18776166468959848, 0, 22), // 49 flights, miss 1.5971109156541485E-08
+            ("high net", true, 0.3950503859430418, 0.1, 25), // 41 flights, miss 1.7763568394002505E-15
+            ("serve down", true, -0.08641962668496697, 0, 50), // 44 flights, miss 1.8299560819792788E-08
+            ("too far", false, 0, 0, 12), // 64 flights, miss Infinity
+            ("too far angles", false, 0, 0, 12), // 64 flights, miss Infinity
+            ("too high", false, 0, 0, 10), // 64 flights, miss Infinity
+            ("speed too steep down", false, -0.5235987755982988, 0, 100), // 100 flights, miss Infinity
+        };
+
+        private static Dictionary<string, AimSolution> Solve(AimCases.SolverFactory make)
+        {
+            var byName = new Dictionary<string, AimSolution>();
+            foreach ((string name, AimSolution solution) in AimCases.SolveAll(make))
+            {
+                byName.Add(name, solution);
+            }
+
+            Assert.That(byName.Count, Is.EqualTo(Recorded.Length), "every recorded case is solved");
+            return byName;
+        }
+
+        private static void Compare(Dictionary<string, AimSolution> solved, double angleTolerance, double speedTolerance)
+        {
+            foreach (var r in Recorded)
+            {
+                AimSolution s = solved[r.Name];
+                TestContext.Out.WriteLine(
+                    $"{r.Name,-40} elevation {s.ElevationRadians - r.Elevation,10:E1} azimuth {s.AzimuthRadians - r.Azimuth,10:E1} " +
+                    $"speed {s.Speed - r.Speed,10:E1}  {s.Simulations} flights");
+                Assert.That(s.IsSolved, Is.EqualTo(r.Solved), r.Name);
+                if (!r.Solved)
+                {
+                    continue;
+                }
+
+                Assert.That(s.ElevationRadians, Is.EqualTo(r.Elevation).Within(angleTolerance), r.Name + ": elevation");
+                Assert.That(s.AzimuthRadians, Is.EqualTo(r.Azimuth).Within(angleTolerance), r.Name + ": azimuth");
+                Assert.That(s.Speed, Is.EqualTo(r.Speed).Within(speedTolerance), r.Name + ": speed");
+            }
+        }
+
+        [Test]
+        public void FixedStepTrials_GiveTheRecordedAnswers()
+        {
+            // The same trials as when recorded (RK4 at 1/240 s) and the same margin function, so only the root finders
+            // differ: each stops within its tolerance (AimSolver.AngleTolerance 1e-8 rad, SpeedTolerance 1e-8 m/s) of the
+            // same root, so two answers differ by at most twice that.
+            Compare(Solve((m, g) => new AimSolver(m, RungeKutta4.Instance, 1.0 / 240, g)), 2 * AimSolver.AngleTolerance, 2 * AimSolver.SpeedTolerance);
+        }
+    }
+}
