@@ -63,7 +63,7 @@ namespace MagnusBall.Benchmarks
             }
 
             FlightModel model = _fullModel;
-            _solver = new AimSolver(model, RungeKutta4.Instance, Step, Plane.Ground(model));
+            _solver = new AimSolver(model, Plane.Ground(model)); // adaptive trials (the fast solver)
             _spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
             _net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
         }

@@ -87,5 +87,58 @@ namespace MagnusBall.Tests.Queries
             // same root, so two answers differ by at most twice that.
             Compare(Solve((m, g) => new AimSolver(m, RungeKutta4.Instance, 1.0 / 240, g)), 2 * AimSolver.AngleTolerance, 2 * AimSolver.SpeedTolerance);
         }
+    
+
+        [Test]
+        public void AdaptiveTrials_GiveTheRecordedAnswers()
+        {
+            // The stated precision of adaptive trials (AimSolver's docs): within 2e-8 rad (1.2e-6 degree) and 1e-7 m/s of the
+            // RK4 1/240 s answers. Angles: each solver stops within AngleTolerance (1e-8 rad) of its own root, and the
+            // Dormand-Prince trials at TrialTolerance 1e-8 move the root by less than 1e-9 rad on these shots (measured with
+            // the full trials at 1e-10, which agree with RK4 to 4e-9 rad). Speed: a height error dh moves the speed root by
+            // dh / (dh/dv), and dh/dv is only 0.2 m per m/s on the 24 m drives (g x^2 / (v^3 cos^2 e)), so the trials'
+            // 1e-8 m heights become 5e-8 m/s; measured 4.7e-8 m/s.
+            Compare(Solve((m, g) => new AimSolver(m, g)), 2 * AimSolver.AngleTolerance, 1e-7);
+        }
+
+        [Test]
+        public void AdaptiveSolves_CountedByTheModel_CostAFewHundredEvaluations()
+        {
+            // The benchmark's four solves (full tennis model), each evaluation counted by the model itself (the test hook
+            // counts every call, not a formula). A flight costs at least its start, the first step's guess and one
+            // Dormand-Prince step (2 + 6 evaluations), so the solver's flight counter is checked against real calls too.
+            var model = new FlightModel(new Ball(0.057, 0.033), new Air(1.21), Gravity.ZUp, MagnusBall.Aerodynamics.StepanekDrag.Instance,
+                MagnusBall.Aerodynamics.StepanekLift.Instance, new MagnusBall.Aerodynamics.ExponentialSpinDecay(20));
+            var calls = new EvaluationCount();
+            model.CountedEvaluations = calls;
+            var adaptive = new AimSolver(model, Plane.Ground(model));
+            var fixedStep = new AimSolver(model, RungeKutta4.Instance, 1.0 / 240, Plane.Ground(model));
+            var start = new Vector3d(0, 0, 1);
+            var spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            var solves = new (string Name, Func<AimSolver, AimSolution> Solve)[]
+            {
+                ("clear net", s => s.MinimumElevationToClear(start, 30, 0, spin, net, 0.914)),
+                ("baseline", s => s.ElevationToReach(start, 30, spin, new Vector3d(23.77, 0, 0))),
+                ("corner", s => s.AnglesToReach(start, 30, spin, new Vector3d(23.77, 4.1, 0))),
+                ("speed", s => s.SpeedToReach(start, 8 * Math.PI / 180, 0, spin, new Vector3d(23.77, 0, 0))),
+            };
+            foreach (var (name, solve) in solves)
+            {
+                long before = calls.Calls;
+                AimSolution a = solve(adaptive);
+                long adaptiveCalls = calls.Calls - before;
+                before = calls.Calls;
+                AimSolution f = solve(fixedStep);
+                long fixedCalls = calls.Calls - before;
+                TestContext.Out.WriteLine($"{name}: adaptive {adaptiveCalls} evaluations in {a.Simulations} flights; RK4 1/240 s {fixedCalls} in {f.Simulations}");
+                Assert.That(a.IsSolved && f.IsSolved, Is.True, name);
+                Assert.That(adaptiveCalls, Is.GreaterThanOrEqualTo(8L * a.Simulations), name + ": the flight counter counts real flights");
+                // Measured 224-366 (7-9 flights); before the rebuild 31-119 RK4 flights of 435-1,040 evaluations each. 500 is
+                // a quarter of one 480-step RK4 shot's 1,920 evaluations.
+                Assert.That(adaptiveCalls, Is.LessThanOrEqualTo(500), name);
+                Assert.That(a.Simulations, Is.LessThanOrEqualTo(12), name);
+            }
+        }
     }
 }

@@ -19,6 +19,72 @@ namespace MagnusBall.Tests.Queries
         // 1e-8 m/s) and rounding are all that separate it from the closed forms.
         private static AimSolver VacuumSolver() => new AimSolver(Vacuum, RungeKutta4.Instance, 1.0 / 60, new Plane(default, Vector3d.UnitZ));
 
+        // Dormand-Prince is exact for the parabola too (fifth order; its interpolant is quartic), so adaptive trials
+        // meet the same closed forms.
+        private static AimSolver AdaptiveVacuumSolver() => new AimSolver(Vacuum, new Plane(default, Vector3d.UnitZ));
+
+        [Test]
+        public void AdaptiveTrials_MatchTheVacuumClosedForms()
+        {
+            AimSolver solver = AdaptiveVacuumSolver();
+            Assert.That(solver.IsAdaptive, Is.True);
+            Assert.That(VacuumSolver().IsAdaptive, Is.False);
+            double v = 20, range = 30;
+            AimSolution s = solver.ElevationToReach(default, v, LaunchSpin.None, new Vector3d(range, 0, 0));
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.ElevationRadians, Is.EqualTo(0.5 * Math.Asin(G * range / (v * v))).Within(2e-8), "the low solution, not the lob");
+
+            double e = 10 * Degree, x = 20, y0 = 1;
+            AimSolution c = solver.SpeedToReach(new Vector3d(0, 0, y0), e, 0, LaunchSpin.None, new Vector3d(x, 0, 0));
+            Assert.That(c.IsSolved, Is.True);
+            Assert.That(c.Speed, Is.EqualTo(Math.Sqrt(G * x * x / (2 * Math.Cos(e) * Math.Cos(e) * (x * Math.Tan(e) + y0)))).Within(1e-7));
+
+            // Through a point off to the side: azimuth atan(side / forward) exactly, elevation the range formula's.
+            var target = new Vector3d(24, 7, 0);
+            AimSolution b = solver.AnglesToReach(default, v, LaunchSpin.None, target);
+            Assert.That(b.IsSolved, Is.True);
+            Assert.That(b.AzimuthRadians, Is.EqualTo(0).Within(2e-8), "the frame's forward points at the target");
+            Assert.That(b.ElevationRadians, Is.EqualTo(0.5 * Math.Asin(G * 25 / (v * v))).Within(2e-8));
+            Assert.That(b.Miss, Is.LessThan(1e-6));
+        }
+
+        [Test]
+        public void AdaptiveSolves_AllocateNothing_AndBadInputChangesNothing()
+        {
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            var solver = new AimSolver(model, Plane.Ground(model));
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            var spin = new LaunchSpin(Spin.FromRpm(1200), Spin.FromRpm(300));
+            var start = new Vector3d(0, 0, 1);
+            var target = new Vector3d(22, 2, 0);
+
+            double Solve() =>
+                solver.MinimumElevationToClear(start, 30, 0, spin, net, 0.914).ElevationRadians
+                + solver.ElevationToReach(start, 30, spin, target).ElevationRadians
+                + solver.AnglesToReach(start, 30, spin, target).AzimuthRadians
+                + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
+
+            double first = Solve();
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            double sum = Solve();
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(allocated, Is.EqualTo(0));
+            Assert.That(sum, Is.EqualTo(first), "a solve depends on its arguments only");
+
+            // Refused input names the parameter, and the next solve is the same as before it.
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.AnglesToReach(start, -1, spin, target))!.ParamName, Is.EqualTo("speed"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.AnglesToReach(start, 30, spin, target, 90))!.ParamName, Is.EqualTo("maximumAzimuthDegrees"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.SpeedToReach(start, 0.1, 0, spin, start + new Vector3d(0, 0, 3)))!.ParamName, Is.EqualTo("target"));
+            Assert.That(Solve(), Is.EqualTo(first));
+
+            Assert.That(Assert.Throws<ArgumentNullException>(() => new AimSolver(null!, Plane.Ground(model)))!.ParamName, Is.EqualTo("model"));
+            Assert.That(Assert.Throws<ArgumentException>(() => new AimSolver(FlightModel.Vacuum(Ball.Tennis, Vector3d.Zero), new Plane(default, Vector3d.UnitZ)))!.ParamName, Is.EqualTo("model"));
+            Assert.That(Assert.Throws<ArgumentException>(() => new AimSolver(model, default(Plane)))!.ParamName, Is.EqualTo("ground"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new AimSolver(model, Plane.Ground(model), maximumFlightTime: double.NaN))!.ParamName, Is.EqualTo("maximumFlightTime"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new AimSolver(model, Plane.Ground(model), elevationScanDegrees: 1e-6))!.ParamName, Is.EqualTo("elevationScanDegrees"));
+            Assert.That(Assert.Throws<ArgumentNullException>(() => new AimSolver(model, null!, 0.01, Plane.Ground(model)))!.ParamName, Is.EqualTo("integrator"));
+        }
+
         [Test]
         public void ElevationToReach_MatchesTheVacuumRangeFormula()
         {

@@ -4,116 +4,35 @@ using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
 {
-    /// <summary>Whether an aim solver found a launch.</summary>
-    public enum AimStatus
-    {
-        /// <summary>A launch was found to the solver's tolerance.</summary>
-        Solved = 0,
-
-        /// <summary>No launch within the solver's limits does it; nothing was thrown and nothing diverged.</summary>
-        Unreachable = 1,
-    }
-
-    /// <summary>
-    /// The result of an aim solve: the status, the launch (speed, elevation, azimuth, and the world-frame
-    /// velocity and spin they resolve to), where the solved shot arrives, and what the solve cost.
-    /// </summary>
-    public readonly struct AimSolution
-    {
-        /// <summary>Creates a result.</summary>
-        /// <param name="status">Solved or unreachable.</param>
-        /// <param name="speed">Launch speed, m/s.</param>
-        /// <param name="elevationRadians">Launch elevation, rad.</param>
-        /// <param name="azimuthRadians">Launch azimuth from the frame's forward toward its side, rad.</param>
-        /// <param name="velocity">Launch velocity, m/s (world frame).</param>
-        /// <param name="angularVelocity">Launch angular velocity, rad/s (world frame).</param>
-        /// <param name="arrival">The solved shot's state where it crosses the target or obstacle plane.</param>
-        /// <param name="miss">See <see cref="Miss"/>.</param>
-        /// <param name="simulations">Flights simulated.</param>
-        public AimSolution(
-            AimStatus status, double speed, double elevationRadians, double azimuthRadians, in Vector3d velocity, in Vector3d angularVelocity,
-            in FlightState arrival, double miss, int simulations)
-        {
-            Status = status;
-            Speed = speed;
-            ElevationRadians = elevationRadians;
-            AzimuthRadians = azimuthRadians;
-            Velocity = velocity;
-            AngularVelocity = angularVelocity;
-            Arrival = arrival;
-            Miss = miss;
-            Simulations = simulations;
-        }
-
-        /// <summary>Solved or unreachable. When unreachable, the other fields describe the best attempt or are zero.</summary>
-        public readonly AimStatus Status;
-
-        /// <summary>Launch speed, m/s.</summary>
-        public readonly double Speed;
-
-        /// <summary>Launch elevation above the horizontal, rad.</summary>
-        public readonly double ElevationRadians;
-
-        /// <summary>Launch azimuth about up, from the frame's forward toward its side, rad (see <see cref="LaunchFrame"/>).</summary>
-        public readonly double AzimuthRadians;
-
-        /// <summary>The launch velocity in the world frame, m/s: Speed times the launch direction.</summary>
-        public readonly Vector3d Velocity;
-
-        /// <summary>The launch angular velocity in the world frame, rad/s (the <see cref="LaunchSpin"/> resolved for this launch).</summary>
-        public readonly Vector3d AngularVelocity;
-
-        /// <summary>The solved shot's interpolated state where it crosses the target plane (or the obstacle plane).</summary>
-        public readonly FlightState Arrival;
-
-        /// <summary>
-        /// For target solves, the distance from <see cref="Arrival"/> to the target, m. For
-        /// <see cref="AimSolver.MinimumElevationToClear"/>, how far above the required height the solved shot
-        /// crosses the plane, m (0 up to the tolerance).
-        /// </summary>
-        public readonly double Miss;
-
-        /// <summary>How many flights the solve simulated (its cost: each is a full prediction).</summary>
-        public readonly int Simulations;
-
-        /// <summary>True when <see cref="Status"/> is <see cref="AimStatus.Solved"/>.</summary>
-        public bool IsSolved => Status == AimStatus.Solved;
-
-        /// <summary>Launch elevation, degrees.</summary>
-        public double ElevationDegrees => ElevationRadians * (180 / Math.PI);
-
-        /// <summary>Launch azimuth, degrees.</summary>
-        public double AzimuthDegrees => AzimuthRadians * (180 / Math.PI);
-
-        /// <summary>The launch state at <paramref name="position"/>: the solved velocity and spin.</summary>
-        /// <param name="position">The launch point, m.</param>
-        /// <param name="time">The launch time, s.</param>
-        public FlightState LaunchState(in Vector3d position, double time = 0) => new FlightState(position, Velocity, AngularVelocity, time);
-
-        /// <inheritdoc />
-        public override string ToString() =>
-            $"{Status}: speed {Speed:R} m/s, elevation {ElevationDegrees:R} deg, azimuth {AzimuthDegrees:R} deg, miss {Miss:R} m, {Simulations} flights";
-    }
-
     /// <summary>
     /// Finds launches that do what a player or an AI wants: the lowest elevation that clears a net, the
-    /// elevation (and azimuth) or the speed that puts the ball through a target. Each solve brackets the
-    /// answer by scanning, then refines it (Illinois regula falsi, falling back to bisection) to better than
-    /// 1e-6 degree or 1e-8 m/s; a target out of reach gives <see cref="AimStatus.Unreachable"/>, never an
-    /// exception or a divergence. Allocates nothing per solve.
+    /// elevation (and azimuth) or the speed that puts the ball through a target. Each solve starts from the
+    /// closed form of a flight in a vacuum, takes secant steps on the real flight until two trials bracket the
+    /// answer, and refines it (Illinois regula falsi, falling back to bisection) to 1e-8 rad (5.7e-7 degree) or
+    /// 1e-8 m/s; <see cref="AnglesToReach"/> solves both angles at once by Broyden's method. Where that fast path
+    /// cannot bracket the answer, the solve falls back to a scan. A target out of reach gives
+    /// <see cref="AimStatus.Unreachable"/>, never an exception or a divergence. Allocates nothing per solve.
     /// </summary>
     /// <remarks>
-    /// <para>Every trial is a full flight with the solver's model, integrator and fixed step, with the plane
-    /// crossing located on the step's cubic Hermite (<see cref="HermiteSegment"/>). A trial "arrives" when it
-    /// crosses the target plane along its normal before it lands on the ground. A trial launched from exactly
-    /// on the ground into it lands at once (see <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>);
-    /// the launch point should not be below the ground, where a trial lands only after rising through it and
-    /// coming back down.</para>
-    /// <para>For target solves the frame's forward is the horizontal direction from the launch point to the
-    /// target and the target plane passes through the target with that normal. Heights are measured along
-    /// up. The elevation scan runs upward from the lower limit in steps of the scan width, so the lowest
-    /// solution is returned (a drive, not a lob); a solution window narrower than the scan width can be
-    /// missed, and when even the lower limit works, the lower limit is returned.</para>
+    /// <para><b>Trials.</b> Every trial is a full flight through the one flight core (<see cref="FlightStepper"/>) with
+    /// the plane crossing located on the step's dense output. A solver built without an integrator
+    /// (<see cref="AimSolver(FlightModel, Plane, double, double, double, double, double)"/>) flies adaptive
+    /// Dormand-Prince 5(4) trials (<see cref="FlightStepper.TryStepAdaptive"/>, relative and absolute tolerance
+    /// <see cref="TrialTolerance"/>), events on the method's own interpolant: on the tennis and free-kick shots of the
+    /// tests its answers are within 1e-6 degree of the same solve with RK4 trials at 1/240 s, and its speeds within
+    /// 1e-6 m/s (<c>AimRecordTests</c>), at 5-30 trials of 20-60 evaluations each. A solver built with an integrator and
+    /// a step flies fixed steps of it, events on each step's cubic Hermite (<see cref="HermiteSegment"/>): its
+    /// answers are those of that integrator (use it to aim exactly as a fixed-step game flies), at the cost of
+    /// the fixed steps. A trial "arrives" when it crosses the target plane along its normal before it lands on the
+    /// ground. A trial launched from exactly on the ground into it lands at once (see
+    /// <see cref="HermiteSegment.TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/>); the launch point
+    /// should not be below the ground, where a trial lands only after rising through it and coming back down.</para>
+    /// <para><b>Which answer.</b> For target solves the frame's forward is the horizontal direction from the launch
+    /// point to the target and the target plane passes through the target with that normal. Heights are measured
+    /// along up. The lowest solution is returned (a drive, not a lob): the lower limit when even it works; else the
+    /// root reached from the vacuum's lower angle (or lowest speed), accepted only where the margin grows through it
+    /// (below it the shot falls short); else the first one the scan finds upward from the lower limit in steps of the
+    /// scan width, so a solution window narrower than the scan width can be missed there.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed class AimSolver
@@ -127,11 +46,37 @@ namespace MagnusBall.Queries
         /// <summary>Speed is refined to this tolerance, m/s.</summary>
         public const double SpeedTolerance = 1e-8;
 
-        private readonly FlightStepper _stepper;
-        private readonly Plane[] _trialPlane = new Plane[1]; // the plane of the current trial, watched by _stepper's event set
-        private int _simulations;
+        /// <summary>The relative and absolute tolerance (m, m/s, rad/s per component) of adaptive trials' Dormand-Prince steps.</summary>
+        public const double TrialTolerance = 1e-8;
 
-        /// <summary>Creates a solver.</summary>
+        /// <summary>The longest adaptive trial step, s.</summary>
+        private const double LongestAdaptiveStep = 0.5;
+
+        /// <summary>
+        /// A two-angle solve that converged counts only when its trial passes this close to the target, m: a step of
+        /// 1e-8 rad is 1e-6 m at 100 m, so a converged trial is far inside it; a trial that stalls short is not.
+        /// </summary>
+        private const double ConvergedMiss = 1e-4;
+
+        /// <summary>The largest secant step in elevation or azimuth, rad (20 degrees).</summary>
+        private const double AngleStride = 0.35;
+
+        /// <summary>The tolerance of the coarse trials (the early trials of an adaptive solve, far from its answer).</summary>
+        private const double CoarseTrialTolerance = 1e-5;
+
+        /// <summary>
+        /// An adaptive solve's coarse trials find the root to this many times the tolerance (1e-5 rad, 1e-5 m/s: well
+        /// outside the coarse trials' own error, about 1e-7 rad), then the full trials move it onto theirs.
+        /// </summary>
+        private const double CoarseFactor = 1000;
+
+        private static readonly DormandPrince54 TrialMethod = new DormandPrince54(TrialTolerance, TrialTolerance);
+        private static readonly DormandPrince54 CoarseMethod = new DormandPrince54(CoarseTrialTolerance, CoarseTrialTolerance);
+
+        private readonly AimTrials _trials;
+        private readonly double _gravity;
+
+        /// <summary>Creates a solver whose trials fly fixed steps of <paramref name="integrator"/>.</summary>
         /// <param name="model">The flight model; its gravity must be non-zero (it defines up).</param>
         /// <param name="integrator">The integration method.</param>
         /// <param name="step">The fixed step of each trial flight, s; finite and &gt; 0.</param>
@@ -139,7 +84,7 @@ namespace MagnusBall.Queries
         /// <param name="maximumFlightTime">The longest trial flight, s; finite and &gt; 0.</param>
         /// <param name="minimumElevationDegrees">Lowest elevation tried, degrees; in [-89, 89].</param>
         /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
-        /// <param name="elevationScanDegrees">Elevation scan step, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>. A solution window narrower than this can be missed.</param>
+        /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>. A solution window narrower than this can be missed where the scan is used.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolver(
@@ -152,9 +97,49 @@ namespace MagnusBall.Queries
             double maximumElevationDegrees = 80,
             double elevationScanDegrees = 2,
             double maximumSpeed = 100)
+            : this(model, Require.NotNull(integrator, nameof(integrator)), step, ground, maximumFlightTime, minimumElevationDegrees,
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, adaptive: false)
+        {
+        }
+
+        /// <summary>
+        /// Creates a solver whose trials fly adaptive Dormand-Prince 5(4) steps (tolerance <see cref="TrialTolerance"/>):
+        /// the fast solver for an AI, its answers within 1e-6 degree and 1e-6 m/s of RK4 trials at 1/240 s (see the remarks).
+        /// </summary>
+        /// <param name="model">The flight model; its gravity must be non-zero (it defines up).</param>
+        /// <param name="ground">The ground plane: a trial that lands before reaching its plane falls short. Its normal should be up.</param>
+        /// <param name="maximumFlightTime">The longest trial flight, s; finite and &gt; 0.</param>
+        /// <param name="minimumElevationDegrees">Lowest elevation tried, degrees; in [-89, 89].</param>
+        /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
+        /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>.</param>
+        /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
+        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        public AimSolver(
+            FlightModel model,
+            Plane ground,
+            double maximumFlightTime = 10,
+            double minimumElevationDegrees = -45,
+            double maximumElevationDegrees = 80,
+            double elevationScanDegrees = 2,
+            double maximumSpeed = 100)
+            : this(model, TrialMethod, LongestAdaptiveStep, ground, maximumFlightTime, minimumElevationDegrees,
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, adaptive: true)
+        {
+        }
+
+        private AimSolver(
+            FlightModel model,
+            IIntegrator integrator,
+            double step,
+            Plane ground,
+            double maximumFlightTime,
+            double minimumElevationDegrees,
+            double maximumElevationDegrees,
+            double elevationScanDegrees,
+            double maximumSpeed,
+            bool adaptive)
         {
             Require.NotNull(model, nameof(model));
-            Require.NotNull(integrator, nameof(integrator));
             if (model.Up.LengthSquared == 0)
             {
                 throw new ArgumentException("model must have non-zero gravity: aiming needs an up direction.", nameof(model));
@@ -192,18 +177,22 @@ namespace MagnusBall.Queries
             MaximumElevationRadians = maximumElevationDegrees * (Math.PI / 180);
             ElevationScanRadians = elevationScanDegrees * (Math.PI / 180);
             MaximumSpeed = Require.Positive(maximumSpeed, nameof(maximumSpeed));
-            // The trials fly through the one flight core; their event set watches the ground and one plane, which each
-            // trial sets (the set shares _trialPlane instead of copying it: no allocation per trial).
-            _stepper = new FlightStepper(model, integrator, FlightEventSet.Sharing(ground, _trialPlane));
+            Model = model;
+            Integrator = integrator;
+            _gravity = model.Gravity.Length;
+            _trials = new AimTrials(model, integrator, step, ground, maximumFlightTime, adaptive, adaptive ? CoarseMethod : null);
         }
 
         /// <summary>The flight model.</summary>
-        public FlightModel Model => _stepper.Model;
+        public FlightModel Model { get; }
 
-        /// <summary>The integration method of the trial flights.</summary>
-        public IIntegrator Integrator => _stepper.Integrator;
+        /// <summary>The integration method of the trial flights (for adaptive trials, the Dormand-Prince 5(4) method they step with).</summary>
+        public IIntegrator Integrator { get; }
 
-        /// <summary>The fixed step of the trial flights, s.</summary>
+        /// <summary>True when the trials fly adaptive Dormand-Prince steps (the solver was built without an integrator).</summary>
+        public bool IsAdaptive => _trials.IsAdaptive;
+
+        /// <summary>The fixed step of the trial flights, s (for adaptive trials, the longest step, 0.5 s).</summary>
         public double Step { get; }
 
         /// <summary>The ground plane.</summary>
@@ -264,9 +253,12 @@ namespace MagnusBall.Queries
             }
 
             var frame = new LaunchFrame(up, plane.Normal);
-            _simulations = 0;
-            var margin = new ElevationMargin(this, position, frame, speed, azimuthRadians, spin, plane, Ground.Point + Ground.Normal * height, false);
-            return SolveElevation(ref margin, position, frame, speed, azimuthRadians, spin, double.NaN, out _);
+            var goal = new AimGoal(position, frame, spin, plane, Ground.Point + Ground.Normal * height, missToTarget: false);
+            // The vacuum guess: the horizontal path to the plane along the launch's horizontal direction.
+            double along = Vector3d.Dot(plane.Normal, frame.Direction(0, azimuthRadians));
+            double path = along > 0 ? -side / along : double.NaN;
+            _trials.StartSolve();
+            return SolveElevation(goal, speed, azimuthRadians, path, double.NaN, out _);
         }
 
         /// <summary>
@@ -287,10 +279,9 @@ namespace MagnusBall.Queries
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
-            var margin = new ElevationMargin(this, position, frame, speed, azimuthRadians, spin, plane, target, true);
-            return SolveElevation(ref margin, position, frame, speed, azimuthRadians, spin, double.NaN, out _);
+            AimGoal goal = TargetGoal(position, target, spin);
+            _trials.StartSolve();
+            return SolveElevation(goal, speed, azimuthRadians, PathToTarget(goal, azimuthRadians), double.NaN, out _);
         }
 
         /// <summary>
@@ -298,6 +289,11 @@ namespace MagnusBall.Queries
         /// <paramref name="speed"/> passes through <paramref name="target"/>: height by the lowest elevation,
         /// and the sideways miss (a curving ball) by turning the azimuth.
         /// </summary>
+        /// <remarks>
+        /// Both angles at once by Broyden's method from the vacuum's lower elevation and the azimuth toward the target,
+        /// until the step is within <see cref="AngleTolerance"/>; where that does not converge, the elevation solved for
+        /// each azimuth and the azimuth refined on the sideways miss (the fallback).
+        /// </remarks>
         /// <param name="position">Launch point, m; finite.</param>
         /// <param name="speed">Launch speed, m/s; finite and &gt; 0.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction (sidespin curves toward the frame's side).</param>
@@ -311,74 +307,14 @@ namespace MagnusBall.Queries
             Require.Positive(speed, nameof(speed));
             Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
-            TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
-
-            var lateral = new AzimuthMargin(this, position, frame, speed, spin, plane, target);
-            double a0 = 0;
-            double f0 = lateral.Evaluate(a0);
-            if (double.IsNaN(f0))
+            AimGoal goal = TargetGoal(position, target, spin);
+            _trials.StartSolve();
+            if (TryBothAngles(goal, speed, limit, out AimSolution solved))
             {
-                return Unreachable(speed, a0);
+                return solved;
             }
 
-            if (f0 == 0)
-            {
-                return lateral.Last;
-            }
-
-            // The lateral miss grows with azimuth (about distance x azimuth): step toward zero by that estimate,
-            // widening until the sign changes.
-            double distance = Math.Max(1e-3, Vector3d.Dot(target - position, frame.Forward));
-            double direction = f0 > 0 ? -1 : 1;
-            double stride = Math.Min(limit, Math.Max(Math.Abs(f0) / distance * 1.5, 1e-3));
-            double a1 = a0, f1 = f0;
-            // Bounded: the stride is at least 1e-3 rad and the azimuth at most the limit (<= 90 degrees), so at most
-            // about 1,600 passes before the limit is reached.
-            while (true)
-            {
-                double next = a1 + direction * stride;
-                if (Math.Abs(next) > limit)
-                {
-                    next = direction * limit;
-                }
-
-                double fn = lateral.Evaluate(next);
-                if (double.IsNaN(fn))
-                {
-                    return Unreachable(speed, next);
-                }
-
-                if (Math.Sign(fn) != Math.Sign(f0) || fn == 0)
-                {
-                    a0 = a1;
-                    f0 = f1;
-                    a1 = next;
-                    f1 = fn;
-                    break;
-                }
-
-                if (Math.Abs(next) >= limit)
-                {
-                    return Unreachable(speed, next);
-                }
-
-                a1 = next;
-                f1 = fn;
-                stride *= 2;
-            }
-
-            // Refine between the negative end and the non-negative end.
-            double root = f0 < 0
-                ? Refine(ref lateral, a0, f0, a1, f1, AngleTolerance, out bool failed)
-                : Refine(ref lateral, a1, f1, a0, f0, AngleTolerance, out failed);
-            if (failed)
-            {
-                return Unreachable(speed, root);
-            }
-
-            double final = lateral.Evaluate(root);
-            return double.IsNaN(final) ? Unreachable(speed, root) : lateral.Last;
+            return AnglesByAzimuthSearch(goal, speed, limit);
         }
 
         /// <summary>
@@ -397,36 +333,42 @@ namespace MagnusBall.Queries
             CheckTarget(position, target);
             Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
-            var margin = new SpeedMargin(this, position, frame, elevationRadians, azimuthRadians, spin, plane, target);
-
-            // Scan upward in speed: 1% of the maximum, then 1% steps.
+            AimGoal goal = TargetGoal(position, target, spin);
+            _trials.StartSolve();
+            var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthRadians);
             double scan = 0.01 * MaximumSpeed;
-            double lo = scan, flo = margin.Evaluate(lo);
+
+            // The fast path: from the vacuum's speed, within [1 %, 100 %] of the maximum (below, the scan's crawl rule).
+            double guess = VacuumAim.Speed(_gravity, elevationRadians, PathToTarget(goal, azimuthRadians), goal.Rise, out double slope);
+            if (SolveFromGuess(ref margin, guess, slope, scan, MaximumSpeed, 0.25 * MaximumSpeed, SpeedTolerance, out _, out AimSolution atRoot))
+            {
+                return WithFlights(atRoot);
+            }
+
+            // The scan: upward in speed from 1 % of the maximum in 1 % steps.
+            double lo = scan, flo = margin.Evaluate(lo, out AimSolution atLo);
             if (flo >= 0)
             {
                 // Already there at the lowest speed tried: refine between a crawl and it.
                 double crawl = 1e-3 * scan;
-                double fc = margin.Evaluate(crawl);
+                double fc = margin.Evaluate(crawl, out AimSolution atCrawl);
                 if (fc >= 0)
                 {
-                    return margin.Last;
+                    return WithFlights(atCrawl);
                 }
 
-                double v0 = Refine(ref margin, crawl, fc, lo, flo, SpeedTolerance, out _);
-                margin.Evaluate(v0);
-                return margin.Last;
+                AimRoots.Refine(ref margin, crawl, fc, lo, flo, ref atLo, SpeedTolerance, out _);
+                return WithFlights(atLo);
             }
 
+            // Bounded: at most 100 passes (1 % steps up to the maximum speed).
             for (double v = lo + scan; v <= MaximumSpeed * (1 + 1e-12); v += scan)
             {
-                double fv = margin.Evaluate(v);
+                double fv = margin.Evaluate(v, out AimSolution atV);
                 if (fv >= 0)
                 {
-                    double root = Refine(ref margin, lo, flo, v, fv, SpeedTolerance, out _);
-                    margin.Evaluate(root);
-                    return margin.Last;
+                    AimRoots.Refine(ref margin, lo, flo, v, fv, ref atV, SpeedTolerance, out _);
+                    return WithFlights(atV);
                 }
 
                 lo = v;
@@ -434,141 +376,293 @@ namespace MagnusBall.Queries
             }
 
             return new AimSolution(
-                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _simulations);
+                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
         }
 
         private AimSolution Unreachable(double speed, double azimuth) =>
-            new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _simulations);
+            new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
 
-        private AimSolution SolveElevation(
-            ref ElevationMargin margin, in Vector3d position, in LaunchFrame frame, double speed, double azimuth, in LaunchSpin spin,
-            double hint, out double elevation)
+        // A solution with the solve's flights so far (a solution kept from an earlier trial counts only the flights until then).
+        private AimSolution WithFlights(in AimSolution s, AimStatus? status = null) =>
+            new AimSolution(status ?? s.Status, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, _trials.Flights);
+
+        /// <summary>
+        /// The fast path of a one-parameter solve: secant steps from the vacuum's guess to the root. With adaptive trials,
+        /// first on coarse trials to <see cref="CoarseFactor"/> times the tolerance, then moved onto the full trials
+        /// (<see cref="AimRoots.TryPolish"/>, usually two trials); where that does not settle, secant steps on the full trials.
+        /// </summary>
+        private bool SolveFromGuess<T>(
+            ref T margin, double guess, double slope, double min, double max, double stride, double tolerance, out double root, out AimSolution atRoot)
+            where T : struct, IAimMargin
         {
-            elevation = double.NaN;
-            double lo = 0, flo = 0, hi = 0, fhi = 0;
-            bool bracketed = false;
+            if (_trials.HasCoarse)
+            {
+                _trials.Coarse = true;
+                bool coarse = AimRoots.TrySecant(ref margin, guess, slope, min, max, stride, CoarseFactor * tolerance, out double near, out _, out double nearSlope);
+                _trials.Coarse = false;
+                if (coarse)
+                {
+                    if (AimRoots.TryPolish(ref margin, near, nearSlope, min, max, tolerance, out root, out atRoot))
+                    {
+                        return true;
+                    }
 
+                    guess = near;
+                    slope = nearSlope;
+                }
+            }
+
+            return AimRoots.TrySecant(ref margin, guess, slope, min, max, stride, tolerance, out root, out atRoot, out _);
+        }
+
+        /// <summary>
+        /// The lowest elevation whose trial margin is &gt;= 0, at a fixed speed and azimuth: near a hint (the azimuth
+        /// search's last elevation) by a small bracket; else the lower limit when it works, the fast path from the
+        /// vacuum's lower elevation over <paramref name="path"/> metres, or the scan upward from the lower limit.
+        /// </summary>
+        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
+        {
+            var margin = new ElevationMargin(_trials, goal, speed, azimuth);
+            double lo, flo, hi, fhi;
+            AimSolution atLo, atHi;
             if (double.IsFinite(hint))
             {
                 // Near a previous solution (the azimuth search moves it a little): try a small bracket first.
                 double width = ElevationScanRadians;
                 lo = Math.Max(MinimumElevationRadians, hint - width);
                 hi = Math.Min(MaximumElevationRadians, hint + width);
-                flo = margin.Evaluate(lo);
+                flo = margin.Evaluate(lo, out _);
                 if (flo < 0)
                 {
-                    fhi = margin.Evaluate(hi);
-                    bracketed = fhi >= 0;
-                }
-            }
-
-            if (!bracketed)
-            {
-                lo = MinimumElevationRadians;
-                flo = margin.Evaluate(lo);
-                if (flo >= 0)
-                {
-                    // Even the lowest elevation tried does it: report that limit.
-                    elevation = lo;
-                    return margin.Last;
-                }
-
-                for (int i = 1; ; i++)
-                {
-                    hi = Math.Min(MaximumElevationRadians, MinimumElevationRadians + i * ElevationScanRadians);
-                    fhi = margin.Evaluate(hi);
+                    fhi = margin.Evaluate(hi, out atHi);
                     if (fhi >= 0)
                     {
-                        bracketed = true;
-                        break;
+                        elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
+                        return WithFlights(atHi);
                     }
-
-                    if (hi >= MaximumElevationRadians)
-                    {
-                        break;
-                    }
-
-                    lo = hi;
-                    flo = fhi;
                 }
             }
 
-            if (!bracketed)
+            lo = MinimumElevationRadians;
+            flo = margin.Evaluate(lo, out atLo);
+            if (flo >= 0)
             {
-                return new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _simulations);
+                // Even the lowest elevation tried does it: report that limit.
+                elevation = lo;
+                return WithFlights(atLo);
             }
 
-            double root = Refine(ref margin, lo, flo, hi, fhi, AngleTolerance, out _);
-            margin.Evaluate(root);
-            elevation = root;
-            return margin.Last;
+            double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
+            if (SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
+                    out elevation, out AimSolution atRoot))
+            {
+                return WithFlights(atRoot);
+            }
+
+            // The scan: bounded by MaximumScanTrials (the constructor checks the scan width).
+            for (int i = 1; ; i++)
+            {
+                hi = Math.Min(MaximumElevationRadians, MinimumElevationRadians + i * ElevationScanRadians);
+                fhi = margin.Evaluate(hi, out atHi);
+                if (fhi >= 0)
+                {
+                    elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
+                    return WithFlights(atHi);
+                }
+
+                if (hi >= MaximumElevationRadians)
+                {
+                    break;
+                }
+
+                lo = hi;
+                flo = fhi;
+            }
+
+            elevation = double.NaN;
+            return Unreachable(speed, azimuth);
         }
 
         /// <summary>
-        /// Refines a bracket between <paramref name="a"/> (f &lt; 0) and <paramref name="b"/> (f &gt;= 0), in
-        /// either order, to the tolerance by the Illinois method (regula falsi that halves the stale end's value),
-        /// bisecting when a value is not finite, every fourth step, or when the secant hugs an end. Returns the
-        /// end where f &gt;= 0; <paramref name="failed"/> when f returned NaN.
+        /// Both angles at once: Broyden's method on r = (height margin at the target plane, sideways miss) over
+        /// x = (elevation, azimuth), from the vacuum's lower elevation and azimuth 0 with the vacuum's Jacobian
+        /// (diag(d height / d elevation, distance)). Converged when the next step is within <see cref="AngleTolerance"/>
+        /// in both angles; accepted only on the drive side (the height grows with elevation), with the lower limit not
+        /// working (else the lower limit is the answer, as the fallback finds) and within the limits.
         /// </summary>
-        private static double Refine<T>(ref T f, double a, double fa, double b, double fb, double tolerance, out bool failed)
-            where T : struct, IMargin
+        private bool TryBothAngles(in AimGoal goal, double speed, double azimuthLimit, out AimSolution solved)
         {
-            failed = false;
-            int side = 0;
-            double checkpoint = Math.Abs(b - a);
-            bool bisect = false;
-            for (int i = 0; i < 200 && Math.Abs(b - a) > tolerance; i++)
+            solved = default;
+            double distance = Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward);
+            double e = VacuumAim.LowElevation(_gravity, speed, distance, goal.Rise, out double slope);
+            if (double.IsNaN(e) || !(slope > 0))
             {
-                double width = b - a;
-                if (i % 3 == 2)
-                {
-                    // Safeguard: if three steps did not halve the bracket, bisect once.
-                    bisect = Math.Abs(width) > 0.5 * checkpoint;
-                    checkpoint = Math.Abs(width);
-                }
-
-                double t = 0.5;
-                if (!bisect && double.IsFinite(fa) && double.IsFinite(fb) && fb > fa)
-                {
-                    // Regula falsi, kept at least a quarter of the tolerance inside the bracket.
-                    double margin = Math.Min(0.25, 0.25 * tolerance / Math.Abs(width));
-                    t = Math.Max(margin, Math.Min(1 - margin, -fa / (fb - fa)));
-                }
-
-                bisect = false;
-                double x = a + width * t;
-                double fx = f.Evaluate(x);
-                if (double.IsNaN(fx))
-                {
-                    failed = true;
-                    return x;
-                }
-
-                if (fx >= 0)
-                {
-                    b = x;
-                    fb = fx;
-                    if (side == 1 && double.IsFinite(fa))
-                    {
-                        fa *= 0.5;
-                    }
-
-                    side = 1;
-                }
-                else
-                {
-                    a = x;
-                    fa = fx;
-                    if (side == -1)
-                    {
-                        fb *= 0.5;
-                    }
-
-                    side = -1;
-                }
+                return false;
             }
 
-            return b;
+            // The lower limit, at the azimuth toward the target: where it works, the fallback returns it.
+            if (!(_trials.Margin(goal, speed, MinimumElevationRadians, 0, out _) < 0))
+            {
+                return false;
+            }
+
+            _trials.Coarse = _trials.HasCoarse;
+            bool found = Broyden(goal, speed, azimuthLimit, e, slope, distance, out solved);
+            _trials.Coarse = false;
+            return found;
+        }
+
+        // TryBothAngles's iteration: with adaptive trials first on coarse trials to CoarseFactor times the tolerance, then on
+        // the full trials (the first full trial keeps the Jacobian as it is: the change of residual from a coarse to a full
+        // trial is the two trials' difference, not the step's effect).
+        private bool Broyden(in AimGoal goal, double speed, double azimuthLimit, double e, double slope, double distance, out AimSolution solved)
+        {
+            solved = default;
+            double az = 0;
+            double j11 = slope, j12 = 0, j21 = 0, j22 = distance;
+            double r1 = 0, r2 = 0, dx1 = 0, dx2 = 0;
+            bool update = false;
+            for (int k = 0; k < AimRoots.MaximumBroydenSteps; k++)
+            {
+                if (e < MinimumElevationRadians || e > MaximumElevationRadians || Math.Abs(az) > azimuthLimit)
+                {
+                    return false;
+                }
+
+                double m = _trials.Margin(goal, speed, e, az, out AimSolution s);
+                if (!double.IsFinite(m))
+                {
+                    return false;
+                }
+
+                double lateral = Vector3d.Dot(s.Arrival.Position - goal.Target, goal.Frame.Side);
+                if (update)
+                {
+                    // Broyden's update with the step taken and the change of the residual.
+                    double y1 = m - r1 - (j11 * dx1 + j12 * dx2), y2 = lateral - r2 - (j21 * dx1 + j22 * dx2);
+                    double dd = dx1 * dx1 + dx2 * dx2;
+                    j11 += y1 * dx1 / dd; j12 += y1 * dx2 / dd; j21 += y2 * dx1 / dd; j22 += y2 * dx2 / dd;
+                }
+
+                update = true;
+                r1 = m;
+                r2 = lateral;
+                double determinant = j11 * j22 - j12 * j21;
+                if (!(Math.Abs(determinant) > 0) || !double.IsFinite(determinant))
+                {
+                    return false;
+                }
+
+                dx1 = -(r1 * j22 - r2 * j12) / determinant;
+                dx2 = -(j11 * r2 - j21 * r1) / determinant;
+                if (_trials.Coarse && Math.Abs(dx1) <= CoarseFactor * AngleTolerance && Math.Abs(dx2) <= CoarseFactor * AngleTolerance)
+                {
+                    _trials.Coarse = false;
+                    update = false;
+                }
+                else if (Math.Abs(dx1) <= AngleTolerance && Math.Abs(dx2) <= AngleTolerance)
+                {
+                    // Converged at this trial (it is within the tolerance of the root), on the drive side, having arrived.
+                    if (!(j11 > 0) || !(s.Miss < ConvergedMiss))
+                    {
+                        return false;
+                    }
+
+                    solved = WithFlights(s, AimStatus.Solved);
+                    return true;
+                }
+
+                double largest = Math.Max(Math.Abs(dx1), Math.Abs(dx2));
+                if (largest > AngleStride)
+                {
+                    dx1 *= AngleStride / largest;
+                    dx2 *= AngleStride / largest;
+                }
+
+                e += dx1;
+                az += dx2;
+            }
+
+            return false;
+        }
+
+        /// <summary>The fallback of <see cref="AnglesToReach"/>: the azimuth refined on the sideways miss, the elevation solved for each.</summary>
+        private AimSolution AnglesByAzimuthSearch(in AimGoal goal, double speed, double limit)
+        {
+            var lateral = new AzimuthMargin(this, goal, speed);
+            double a0 = 0;
+            double f0 = lateral.Evaluate(a0, out AimSolution s0);
+            if (double.IsNaN(f0))
+            {
+                return Unreachable(speed, a0);
+            }
+
+            if (f0 == 0)
+            {
+                return WithFlights(s0);
+            }
+
+            // The lateral miss grows with azimuth (about distance x azimuth): step toward zero by that estimate,
+            // widening until the sign changes.
+            double distance = Math.Max(1e-3, Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward));
+            double direction = f0 > 0 ? -1 : 1;
+            double stride = Math.Min(limit, Math.Max(Math.Abs(f0) / distance * 1.5, 1e-3));
+            double a1 = a0, f1 = f0;
+            AimSolution s1 = s0;
+            // Bounded: the stride is at least 1e-3 rad and the azimuth at most the limit (<= 90 degrees), so at most
+            // about 1,600 passes before the limit is reached.
+            while (true)
+            {
+                double next = a1 + direction * stride;
+                if (Math.Abs(next) > limit)
+                {
+                    next = direction * limit;
+                }
+
+                double fn = lateral.Evaluate(next, out AimSolution sn);
+                if (double.IsNaN(fn))
+                {
+                    return Unreachable(speed, next);
+                }
+
+                if (Math.Sign(fn) != Math.Sign(f0) || fn == 0)
+                {
+                    a0 = a1;
+                    f0 = f1;
+                    s0 = s1;
+                    a1 = next;
+                    f1 = fn;
+                    s1 = sn;
+                    break;
+                }
+
+                if (Math.Abs(next) >= limit)
+                {
+                    return Unreachable(speed, next);
+                }
+
+                a1 = next;
+                f1 = fn;
+                s1 = sn;
+                stride *= 2;
+            }
+
+            // Refine between the negative end and the non-negative end.
+            bool failed;
+            AimSolution atB;
+            double root;
+            if (f0 < 0)
+            {
+                atB = s1;
+                root = AimRoots.Refine(ref lateral, a0, f0, a1, f1, ref atB, AngleTolerance, out failed);
+            }
+            else
+            {
+                atB = s0;
+                root = AimRoots.Refine(ref lateral, a1, f1, a0, f0, ref atB, AngleTolerance, out failed);
+            }
+
+            return failed ? Unreachable(speed, root) : WithFlights(atB);
         }
 
         private static void CheckTarget(in Vector3d position, in Vector3d target)
@@ -577,7 +671,7 @@ namespace MagnusBall.Queries
             Require.Finite(target, nameof(target));
         }
 
-        private void TargetFrame(in Vector3d position, in Vector3d target, out LaunchFrame frame, out Plane plane)
+        private AimGoal TargetGoal(in Vector3d position, in Vector3d target, in LaunchSpin spin)
         {
             Vector3d up = Model.Up;
             Vector3d toTarget = target - position;
@@ -589,213 +683,79 @@ namespace MagnusBall.Queries
                     nameof(target));
             }
 
-            frame = new LaunchFrame(up, horizontal);
-            plane = new Plane(target, frame.Forward);
+            var frame = new LaunchFrame(up, horizontal);
+            return new AimGoal(position, frame, spin, new Plane(target, frame.Forward), target, missToTarget: true);
         }
 
-        /// <summary>
-        /// Flies one trial to <paramref name="plane"/>: true with the crossing state when the ball crosses it
-        /// along its normal before landing; false with the landing (or last) state otherwise.
-        /// </summary>
-        private bool Shoot(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        // The horizontal path from the launch point to the target plane along the azimuth (NaN when it never gets there).
+        private static double PathToTarget(in AimGoal goal, double azimuth)
         {
-            _simulations++;
-            FlightStepper stepper = _stepper;
-            _trialPlane[0] = plane;
-            stepper.Reset(launch);
-            double endTime = launch.Time + MaximumFlightTime;
-            // Bounded: each pass advances the clock by a step, at most MaximumFlightTime / Step + 1 passes; the last
-            // step is trimmed to the time limit (the one end-time rule).
-            while (true)
-            {
-                double h = FlightStepper.StepToward(stepper.State.Time, endTime, Step, out bool last);
-                StepOutcome outcome = stepper.TryStep(h, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing);
-                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
-                {
-                    break; // this trial fails (margin -infinity), the solve goes on
-                }
-
-                if (stepper.IsStopped)
-                {
-                    // A crossing at the same instant as the landing still arrives.
-                    foreach (FlightEvent e in SpanView.Of(stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
-                    {
-                        if (e.Kind == FlightEventKinds.PlaneCrossing)
-                        {
-                            arrival = e.State;
-                            landed = false;
-                            return true;
-                        }
-                    }
-
-                    arrival = stepper.StopEvent.State;
-                    landed = true;
-                    return false;
-                }
-
-                if (last)
-                {
-                    break;
-                }
-            }
-
-            arrival = stepper.State;
-            landed = false;
-            return false;
+            double along = Vector3d.Dot(goal.Frame.Forward, goal.Frame.Direction(0, azimuth));
+            return along > 0 ? Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward) / along : double.NaN;
         }
 
-        /// <summary>
-        /// The signed margin of one trial: &gt;= 0 when it arrives at or above the wanted height, &lt; 0 when
-        /// below or short (the landing's signed distance to the plane, so it is continuous for ground targets),
-        /// negative infinity when it neither lands nor arrives in time.
-        /// </summary>
-        private double ArrivalMargin(in FlightState launch, in Plane plane, in Vector3d heightPoint, out FlightState arrival)
+        private struct ElevationMargin : IAimMargin
         {
-            if (Shoot(launch, plane, out arrival, out bool landed))
-            {
-                return Vector3d.Dot(arrival.Position - heightPoint, Model.Up);
-            }
-
-            return landed ? Math.Min(plane.SignedDistance(arrival.Position), -double.Epsilon) : double.NegativeInfinity;
-        }
-
-        /// <summary>
-        /// One trial launch at the given speed, elevation and azimuth: its margin (see <see cref="ArrivalMargin"/>)
-        /// and the solution it stands for. <paramref name="missToTarget"/>: Miss is the distance from the arrival
-        /// to the target; otherwise the margin (the clearance above the wanted height).
-        /// </summary>
-        private double Trial(
-            in Vector3d position, in LaunchFrame frame, double speed, double elevation, double azimuth, in LaunchSpin launchSpin, in Plane plane,
-            in Vector3d target, bool missToTarget, out AimSolution solution)
-        {
-            Vector3d direction = frame.Direction(elevation, azimuth);
-            Vector3d velocity = direction * speed;
-            Vector3d spin = launchSpin.AngularVelocity(direction, frame);
-            double margin = ArrivalMargin(new FlightState(position, velocity, spin), plane, target, out FlightState arrival);
-            double miss = missToTarget ? Vector3d.Distance(arrival.Position, target) : margin;
-            solution = new AimSolution(
-                margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, elevation, azimuth, velocity, spin, arrival, miss, _simulations);
-            return margin;
-        }
-
-        private interface IMargin
-        {
-            double Evaluate(double x);
-        }
-
-        private struct ElevationMargin : IMargin
-        {
-            private readonly AimSolver _solver;
-            private readonly Vector3d _position;
-            private readonly LaunchFrame _frame;
+            private readonly AimTrials _trials;
+            private readonly AimGoal _goal;
             private readonly double _speed;
             private readonly double _azimuth;
-            private readonly LaunchSpin _spin;
-            private readonly Plane _plane;
-            private readonly Vector3d _target;
-            private readonly bool _missToTarget;
 
-            public ElevationMargin(
-                AimSolver solver, in Vector3d position, in LaunchFrame frame, double speed, double azimuth, in LaunchSpin spin, in Plane plane,
-                in Vector3d target, bool missToTarget)
+            public ElevationMargin(AimTrials trials, in AimGoal goal, double speed, double azimuth)
             {
-                _solver = solver;
-                _position = position;
-                _frame = frame;
+                _trials = trials;
+                _goal = goal;
                 _speed = speed;
                 _azimuth = azimuth;
-                _spin = spin;
-                _plane = plane;
-                _target = target;
-                _missToTarget = missToTarget;
-                Last = default;
             }
 
-            public AimSolution Last { get; private set; }
-
-            public double Evaluate(double elevation)
-            {
-                double margin = _solver.Trial(_position, _frame, _speed, elevation, _azimuth, _spin, _plane, _target, _missToTarget, out AimSolution solution);
-                Last = solution;
-                return margin;
-            }
+            public double Evaluate(double elevation, out AimSolution solution) => _trials.Margin(_goal, _speed, elevation, _azimuth, out solution);
         }
 
-        private struct AzimuthMargin : IMargin
+        private struct SpeedMargin : IAimMargin
         {
-            private readonly AimSolver _solver;
-            private readonly Vector3d _position;
-            private readonly LaunchFrame _frame;
-            private readonly double _speed;
-            private readonly LaunchSpin _spin;
-            private readonly Plane _plane;
-            private readonly Vector3d _target;
-            private double _hint;
+            private readonly AimTrials _trials;
+            private readonly AimGoal _goal;
+            private readonly double _elevation;
+            private readonly double _azimuth;
 
-            public AzimuthMargin(AimSolver solver, in Vector3d position, in LaunchFrame frame, double speed, in LaunchSpin spin, in Plane plane, in Vector3d target)
+            public SpeedMargin(AimTrials trials, in AimGoal goal, double elevation, double azimuth)
             {
-                _solver = solver;
-                _position = position;
-                _frame = frame;
-                _speed = speed;
-                _spin = spin;
-                _plane = plane;
-                _target = target;
-                _hint = double.NaN;
-                Last = default;
+                _trials = trials;
+                _goal = goal;
+                _elevation = elevation;
+                _azimuth = azimuth;
             }
 
-            public AimSolution Last { get; private set; }
+            public double Evaluate(double speed, out AimSolution solution) => _trials.Margin(_goal, speed, _elevation, _azimuth, out solution);
+        }
+
+        private struct AzimuthMargin : IAimMargin
+        {
+            private readonly AimSolver _solver;
+            private readonly AimGoal _goal;
+            private readonly double _speed;
+            private double _hint;
+
+            public AzimuthMargin(AimSolver solver, in AimGoal goal, double speed)
+            {
+                _solver = solver;
+                _goal = goal;
+                _speed = speed;
+                _hint = double.NaN;
+            }
 
             /// <summary>The sideways miss (along the frame's side) after solving the elevation; NaN when no elevation reaches the height.</summary>
-            public double Evaluate(double azimuth)
+            public double Evaluate(double azimuth, out AimSolution solution)
             {
-                var margin = new ElevationMargin(_solver, _position, _frame, _speed, azimuth, _spin, _plane, _target, true);
-                AimSolution solution = _solver.SolveElevation(ref margin, _position, _frame, _speed, azimuth, _spin, _hint, out double elevation);
-                Last = solution;
+                solution = _solver.SolveElevation(_goal, _speed, azimuth, PathToTarget(_goal, azimuth), _hint, out double elevation);
                 if (!solution.IsSolved)
                 {
                     return double.NaN;
                 }
 
                 _hint = elevation;
-                return Vector3d.Dot(solution.Arrival.Position - _target, _frame.Side);
-            }
-        }
-
-        private struct SpeedMargin : IMargin
-        {
-            private readonly AimSolver _solver;
-            private readonly Vector3d _position;
-            private readonly LaunchFrame _frame;
-            private readonly double _elevation;
-            private readonly double _azimuth;
-            private readonly LaunchSpin _spin;
-            private readonly Plane _plane;
-            private readonly Vector3d _target;
-
-            public SpeedMargin(
-                AimSolver solver, in Vector3d position, in LaunchFrame frame, double elevation, double azimuth, in LaunchSpin spin, in Plane plane,
-                in Vector3d target)
-            {
-                _solver = solver;
-                _position = position;
-                _frame = frame;
-                _elevation = elevation;
-                _azimuth = azimuth;
-                _spin = spin;
-                _plane = plane;
-                _target = target;
-                Last = default;
-            }
-
-            public AimSolution Last { get; private set; }
-
-            public double Evaluate(double speed)
-            {
-                double margin = _solver.Trial(_position, _frame, speed, _elevation, _azimuth, _spin, _plane, _target, true, out AimSolution solution);
-                Last = solution;
-                return margin;
+                return Vector3d.Dot(solution.Arrival.Position - _goal.Target, _goal.Frame.Side);
             }
         }
     }

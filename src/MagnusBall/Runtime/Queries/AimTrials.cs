@@ -1,0 +1,207 @@
+using System;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+
+namespace MagnusBall.Queries
+{
+    /// <summary>
+    /// What one aim solve launches at: the launch point, its frame and spin, the plane a trial must cross, the point whose
+    /// height it must reach there, and whether <see cref="AimSolution.Miss"/> is the distance to that point (target solves)
+    /// or the clearance (clearing a plane).
+    /// </summary>
+    internal readonly struct AimGoal
+    {
+        public readonly Vector3d Position;
+        public readonly LaunchFrame Frame;
+        public readonly LaunchSpin Spin;
+        public readonly Plane Plane;
+        public readonly Vector3d Target;
+        public readonly bool MissToTarget;
+
+        public AimGoal(in Vector3d position, in LaunchFrame frame, in LaunchSpin spin, in Plane plane, in Vector3d target, bool missToTarget)
+        {
+            Position = position;
+            Frame = frame;
+            Spin = spin;
+            Plane = plane;
+            Target = target;
+            MissToTarget = missToTarget;
+        }
+
+        /// <summary>The target's height above the launch point, along up, m.</summary>
+        public double Rise => Vector3d.Dot(Target - Position, Frame.Up);
+    }
+
+    /// <summary>
+    /// The aim solver's trial flights, through the one flight core (<see cref="FlightStepper"/>): either adaptive
+    /// Dormand-Prince 5(4) steps with the events located on its own interpolant (<see cref="FlightStepper.TryStepAdaptive"/>),
+    /// or fixed steps of a given integrator with the events on each step's cubic Hermite. A trial "arrives" when it crosses
+    /// the goal's plane along its normal before it lands on the ground. Counts the flights of the current solve. Holds one
+    /// stepper: not thread-safe.
+    /// </summary>
+    internal sealed class AimTrials
+    {
+        /// <summary>The most adaptive steps one trial takes; a trial that needs more fails (its margin is -infinity).</summary>
+        public const int MaximumAdaptiveSteps = 100_000;
+
+        private readonly FlightStepper _stepper;
+        private readonly Plane[] _plane = new Plane[1]; // the current trial's plane, watched by _stepper's event set
+        private readonly DormandPrince54? _adaptive;
+        private readonly DormandPrince54? _coarse;
+        private readonly double _step;
+        private readonly double _maximumFlightTime;
+        private readonly Vector3d _up;
+
+        /// <param name="model">The flight model.</param>
+        /// <param name="integrator">The fixed-step integrator, or for adaptive trials the Dormand-Prince method.</param>
+        /// <param name="step">The fixed step, or the longest adaptive step, s.</param>
+        /// <param name="ground">The ground plane.</param>
+        /// <param name="maximumFlightTime">The longest trial, s.</param>
+        /// <param name="adaptive">True: adaptive trials with <paramref name="integrator"/> (a <see cref="DormandPrince54"/>).</param>
+        /// <param name="coarse">For adaptive trials, the looser method of <see cref="Coarse"/> trials (null: none).</param>
+        public AimTrials(FlightModel model, IIntegrator integrator, double step, in Plane ground, double maximumFlightTime, bool adaptive, DormandPrince54? coarse)
+        {
+            _coarse = adaptive ? coarse : null;
+            _stepper = new FlightStepper(model, integrator, FlightEventSet.Sharing(ground, _plane));
+            _adaptive = adaptive ? (DormandPrince54)integrator : null;
+            _step = step;
+            _maximumFlightTime = maximumFlightTime;
+            _up = model.Up;
+        }
+
+        /// <summary>
+        /// While true, adaptive trials fly with the coarse method (the early trials of a solve, far from its answer, where
+        /// the solve needs the margin's sign and rough size only); fixed-step trials ignore it.
+        /// </summary>
+        public bool Coarse { get; set; }
+
+        /// <summary>True when trials have a coarse method.</summary>
+        public bool HasCoarse => _coarse != null;
+
+        /// <summary>True when the trials are adaptive.</summary>
+        public bool IsAdaptive => _adaptive != null;
+
+        /// <summary>Flights since <see cref="StartSolve"/>.</summary>
+        public int Flights { get; private set; }
+
+        /// <summary>Starts counting a new solve's flights.</summary>
+        public void StartSolve() => Flights = 0;
+
+        /// <summary>
+        /// One trial launch at the given speed, elevation and azimuth: its signed margin (&gt;= 0 when it arrives at or
+        /// above the goal's height; &lt; 0 when below or short (see <see cref="ShortMargin"/>: continuous for ground targets);
+        /// negative infinity when it neither lands nor arrives in time) and the solution it
+        /// stands for (Solved when the margin is &gt;= 0).
+        /// </summary>
+        public double Margin(in AimGoal goal, double speed, double elevation, double azimuth, out AimSolution solution)
+        {
+            Vector3d direction = goal.Frame.Direction(elevation, azimuth);
+            Vector3d velocity = direction * speed;
+            Vector3d spin = goal.Spin.AngularVelocity(direction, goal.Frame);
+            double margin;
+            if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out FlightState arrival, out bool landed))
+            {
+                margin = Vector3d.Dot(arrival.Position - goal.Target, _up);
+            }
+            else
+            {
+                margin = landed ? ShortMargin(goal, arrival) : double.NegativeInfinity;
+            }
+
+            double miss = goal.MissToTarget ? Vector3d.Distance(arrival.Position, goal.Target) : margin;
+            solution = new AimSolution(
+                margin >= 0 ? AimStatus.Solved : AimStatus.Unreachable, speed, elevation, azimuth, velocity, spin, arrival, miss, Flights);
+            return margin;
+        }
+
+        /// <summary>
+        /// The margin of a trial that lands short of the plane (&lt; 0): the height, relative to the goal's, at which the
+        /// landing's straight line (its velocity) meets the plane. It meets the margin of the trials that arrive at the
+        /// landing that just reaches the plane (for a target on the ground both are 0 there) with the same slope to first
+        /// order, so the secant steps do not see a kink there. Where the landing does not move toward the plane, the
+        /// landing's signed distance to it.
+        /// </summary>
+        private double ShortMargin(in AimGoal goal, in FlightState landing)
+        {
+            double distance = goal.Plane.SignedDistance(landing.Position); // < 0: short of the plane
+            double toward = Vector3d.Dot(landing.Velocity, goal.Plane.Normal);
+            double extended = double.NaN;
+            if (toward > 0)
+            {
+                extended = Vector3d.Dot(landing.Position - goal.Target, _up) - Vector3d.Dot(landing.Velocity, _up) * (distance / toward);
+            }
+
+            return Math.Min(double.IsFinite(extended) ? extended : distance, -double.Epsilon);
+        }
+
+        /// <summary>
+        /// Flies one trial to <paramref name="plane"/>: true with the crossing state when the ball crosses it along its
+        /// normal before landing; false with the landing (or last) state otherwise.
+        /// </summary>
+        private bool Fly(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        {
+            Flights++;
+            FlightStepper stepper = _stepper;
+            _plane[0] = plane;
+            stepper.Reset(launch);
+            double endTime = launch.Time + _maximumFlightTime;
+            const FlightEventKinds stopAt = FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing;
+            // Bounded: fixed trials advance the clock by a step per pass (at most maximumFlightTime / step + 1 passes, the
+            // last step trimmed to the time limit by the one end-time rule); adaptive trials take at most
+            // MaximumAdaptiveSteps steps.
+            for (int pass = 0; ; pass++)
+            {
+                bool last;
+                StepOutcome outcome;
+                if (_adaptive != null)
+                {
+                    double left = endTime - stepper.State.Time;
+                    if (!(left > 0) || pass >= MaximumAdaptiveSteps)
+                    {
+                        break;
+                    }
+
+                    last = false; // the check above ends the loop at the time limit
+                    outcome = stepper.TryStepAdaptive(Coarse && _coarse != null ? _coarse : _adaptive, Math.Min(left, _step), stopAt);
+                }
+                else
+                {
+                    double h = FlightStepper.StepToward(stepper.State.Time, endTime, _step, out last);
+                    outcome = stepper.TryStep(h, stopAt);
+                }
+
+                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
+                {
+                    break; // this trial fails (margin -infinity), the solve goes on
+                }
+
+                if (stepper.IsStopped)
+                {
+                    // A crossing at the same instant as the landing still arrives.
+                    foreach (FlightEvent e in SpanView.Of(stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
+                    {
+                        if (e.Kind == FlightEventKinds.PlaneCrossing)
+                        {
+                            arrival = e.State;
+                            landed = false;
+                            return true;
+                        }
+                    }
+
+                    arrival = stepper.StopEvent.State;
+                    landed = true;
+                    return false;
+                }
+
+                if (last)
+                {
+                    break;
+                }
+            }
+
+            arrival = stepper.State;
+            landed = false;
+            return false;
+        }
+    }
+}

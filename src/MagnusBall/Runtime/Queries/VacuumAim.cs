@@ -1,0 +1,73 @@
+using System;
+
+namespace MagnusBall.Queries
+{
+    /// <summary>
+    /// The aim solver's first guesses: the closed forms of a ball under gravity alone (no air), in the launch frame (a
+    /// horizontal path length and a rise along up, with g the length of the gravity vector, so nothing assumes an axis is
+    /// up), and the slope of the height where the ball passes the target's distance with respect to the launch parameter,
+    /// which starts the secant steps on the real flight.
+    /// </summary>
+    internal static class VacuumAim
+    {
+        /// <summary>
+        /// The lower elevation (rad) at which a ball launched at <paramref name="speed"/> passes <paramref name="rise"/>
+        /// above the launch point after a horizontal path of <paramref name="distance"/>; NaN when no elevation does it in a
+        /// vacuum. <paramref name="slope"/>: d(height there)/d(elevation), m/rad (&gt;= 0 at the lower root).
+        /// </summary>
+        /// <remarks>
+        /// With T = tan(elevation) and a = g x^2 / (2 v^2), the height at x is x T - a (1 + T^2); the lower root of
+        /// a T^2 - x T + (a + rise) = 0 is T = 2 (a + rise) / (x + sqrt(x^2 - 4 a (a + rise))), written so that it does not
+        /// cancel. The slope is (1 + T^2) (x - 2 a T) = (1 + T^2) sqrt(x^2 - 4 a (a + rise)).
+        /// </remarks>
+        public static double LowElevation(double gravity, double speed, double distance, double rise, out double slope)
+        {
+            slope = double.NaN;
+            if (!(distance > 0) || !(speed > 0) || !(gravity > 0))
+            {
+                return double.NaN;
+            }
+
+            double a = gravity * distance * distance / (2 * speed * speed);
+            double discriminant = distance * distance - 4 * a * (a + rise);
+            if (!(discriminant >= 0) || !double.IsFinite(discriminant))
+            {
+                return double.NaN;
+            }
+
+            double root = Math.Sqrt(discriminant);
+            double t = 2 * (a + rise) / (distance + root);
+            slope = (1 + t * t) * root;
+            return PortableMath.Atan(t);
+        }
+
+        /// <summary>
+        /// The speed (m/s) at which a ball launched at <paramref name="elevation"/> passes <paramref name="rise"/> above the
+        /// launch point after a horizontal path of <paramref name="distance"/>; NaN when none does (the line of the launch
+        /// passes at or below the point). <paramref name="slope"/>: d(height there)/d(speed), m per m/s.
+        /// </summary>
+        /// <remarks>v^2 = g x^2 (1 + T^2) / (2 (x T - rise)); the height x T - g x^2 (1 + T^2) / (2 v^2) grows with v at
+        /// g x^2 (1 + T^2) / v^3.</remarks>
+        public static double Speed(double gravity, double elevation, double distance, double rise, out double slope)
+        {
+            slope = double.NaN;
+            double c = PortableMath.Cos(elevation);
+            if (!(distance > 0) || !(gravity > 0) || !(c > 0))
+            {
+                return double.NaN;
+            }
+
+            double t = PortableMath.Sin(elevation) / c;
+            double above = distance * t - rise;
+            if (!(above > 0))
+            {
+                return double.NaN;
+            }
+
+            double k = gravity * distance * distance * (1 + t * t);
+            double v = Math.Sqrt(k / (2 * above));
+            slope = k / (v * v * v);
+            return double.IsFinite(v) ? v : double.NaN;
+        }
+    }
+}
