@@ -42,6 +42,8 @@ namespace MagnusBall.Benchmarks
                 ("1,000 drivers (stable-rk4), frame", work.Drivers1000),
                 ("1,000 drivers (rk4), frame", work.Drivers1000Rk4),
                 ("RK4 480 steps, thesis, internal run", work.Rk4ThesisRun),
+                ("aim ElevationToReach, RK4 trials", work.AimBaselineFixed),
+                ("aim AnglesToReach, RK4 trials", work.AimCornerFixed),
             };
 
             var best = new double[items.Length];

@@ -30,6 +30,7 @@ namespace MagnusBall.Benchmarks
         private FixedStepDriver[] _drivers = null!;
         private FixedStepDriver[] _driversRk4 = null!;
         private AimSolver _solver = null!;
+        private AimSolver _solverFixed = null!;
         private LaunchSpin _spin;
         private Plane _net;
 
@@ -64,6 +65,7 @@ namespace MagnusBall.Benchmarks
 
             FlightModel model = _fullModel;
             _solver = new AimSolver(model, Plane.Ground(model)); // adaptive trials (the fast solver)
+            _solverFixed = new AimSolver(model, RungeKutta4.Instance, Step, Plane.Ground(model)); // fixed RK4 trials at 1/240 s
             _spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
             _net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
         }
@@ -158,7 +160,7 @@ namespace MagnusBall.Benchmarks
             return drivers[0].State.Position.X;
         }
 
-        /// <summary>AimSolver.MinimumElevationToClear (the net; Cross 2011's court, 30 m/s, 20 rev/s topspin).</summary>
+        /// <summary>AimSolver.MinimumElevationToClear (the net; Cross 2011's court, 30 m/s, 20 rev/s topspin), adaptive trials.</summary>
         public double AimClearNet() => _solver.MinimumElevationToClear(new Vector3d(0, 0, 1), 30, 0, _spin, _net, 0.914).ElevationRadians;
 
         /// <summary>AimSolver.ElevationToReach (the baseline).</summary>
@@ -166,6 +168,12 @@ namespace MagnusBall.Benchmarks
 
         /// <summary>AimSolver.AnglesToReach (a corner 4.1 m aside).</summary>
         public double AimCorner() => _solver.AnglesToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 4.1, 0)).ElevationRadians;
+
+        /// <summary>AimSolver.AnglesToReach (the corner) with fixed RK4 trials at 1/240 s (the solver's other mode).</summary>
+        public double AimCornerFixed() => _solverFixed.AnglesToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 4.1, 0)).ElevationRadians;
+
+        /// <summary>AimSolver.ElevationToReach (the baseline) with fixed RK4 trials at 1/240 s.</summary>
+        public double AimBaselineFixed() => _solverFixed.ElevationToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 0, 0)).ElevationRadians;
 
         /// <summary>AimSolver.SpeedToReach (the baseline at 8 degrees).</summary>
         public double AimSpeed() => _solver.SpeedToReach(new Vector3d(0, 0, 1), 8 * Math.PI / 180, 0, _spin, new Vector3d(23.77, 0, 0)).Speed;
