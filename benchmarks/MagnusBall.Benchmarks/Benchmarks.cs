@@ -173,7 +173,7 @@ namespace MagnusBall.Benchmarks
     }
 
     /// <summary>
-    /// Each aim solve of the queries' AimSolver once (RK4 at 1/240 s trial flights, full tennis model, Cross 2011's court:
+    /// Each aim solve of the queries' AimSolver once in its fixed-step mode (RK4 at 1/240 s trial flights; the adaptive solver is in PeerShots and the ratios mode), full tennis model, Cross 2011's court:
     /// launch from 1 m, net 0.914 m high 11.885 m away, baseline 23.77 m away, 30 m/s, 20 rev/s topspin).
     /// </summary>
     [Config(typeof(ShortConfig))]
