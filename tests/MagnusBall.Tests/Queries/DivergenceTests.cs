@@ -64,5 +64,21 @@ namespace MagnusBall.Tests.Queries
             Assert.That(s.Status, Is.EqualTo(AimStatus.Unreachable));
             Assert.That(double.IsNaN(s.ElevationRadians) || double.IsNaN(s.Speed), Is.False);
         }
+
+        [Test]
+        public void AdaptiveAim_AtAbsurdSpeed_EndsWithoutNaNOrException()
+        {
+            // Adaptive trials do not diverge at 1e5 m/s (their steps shrink instead): whatever the status, the solve ends,
+            // within its caps, with finite numbers.
+            var model = Shots.StepanekTennis(Gravity.ZUp);
+            var solver = new AimSolver(model, Plane.Ground(model), maximumSpeed: 1e5);
+            AimSolution s = solver.ElevationToReach(new Vector3d(0, 0, 1), 1e5, LaunchSpin.None, new Vector3d(20, 0, 0));
+            TestContext.Out.WriteLine(s.ToString());
+            Assert.That(double.IsNaN(s.ElevationRadians) || double.IsNaN(s.Speed) || double.IsNaN(s.Miss), Is.False);
+            AimSolution v = solver.SpeedToReach(new Vector3d(0, 0, 1), 0.2, 0, LaunchSpin.None, new Vector3d(20, 0, 0));
+            TestContext.Out.WriteLine(v.ToString());
+            Assert.That(v.IsSolved, Is.True);
+            Assert.That(double.IsFinite(v.Speed), Is.True);
+        }
     }
 }
