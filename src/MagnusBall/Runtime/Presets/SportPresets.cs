@@ -14,18 +14,19 @@ namespace MagnusBall.Presets
     public static class SportPresets
     {
         /// <summary>
-        /// Tennis: an ITF ball (mass 56.0-59.4 g, diameter 6.54-6.86 cm; the middle, 57.7 g and 67.0 mm, is used),
+        /// Tennis: the library's one tennis ball, <see cref="MagnusBall.Ball.Tennis"/> (57 g, 66 mm diameter, the
+        /// ball of Cross (2011) and the seed thesis, inside the ITF's 56.0-59.4 g and 6.54-6.86 cm),
         /// inertia factor 0.55 (Cross 2002, hollow shell of finite thickness); Stepanek's (1988, Am. J. Phys.
         /// 56:138) spin-dependent C_D and C_L; spin decay 2 % per 6.4 m of flight (Cross &amp; Lindsey 2014); bounce: Cross's slide/grip model on a hard
         /// court (<see cref="MagnusBall.Contact.CrossBounce.Hard"/>, Cross 2020).
         /// </summary>
         public static SportPreset Tennis { get; } = new SportPreset(
             "tennis",
-            new Ball(0.0577, 0.0335, 0.55),
+            Ball.Tennis,
             StepanekDrag.Instance,
             StepanekLift.Instance,
             SpeedProportionalSpinDecay.TennisCrossLindsey,
-            "ITF Rules of Tennis, appendix I (ball 56.0-59.4 g, 6.54-6.86 cm; middle used); inertia factor 0.55 (Cross 2002); " +
+            "ball 57 g, 66 mm (Cross 2011; inside ITF Rules of Tennis, appendix I: 56.0-59.4 g, 6.54-6.86 cm); inertia factor 0.55 (Cross 2002); " +
             "Stepanek 1988, Am. J. Phys. 56:138 (C_D, C_L); spin decay 2 % per 6.4 m (Cross & Lindsey 2014); " +
             "bounce: Cross's slide/grip model on a hard court (Cross 2020).",
             CrossBounce.Hard);
