@@ -379,11 +379,19 @@ namespace MagnusBall.Flight
             return _now.Phase == FlightPhase.Stopped ? StepOutcome.Stopped : StepOutcome.Taken;
         }
 
+        /// <summary>
+        /// The one divergence policy: a step from <paramref name="start"/> is taken only when its end state and end
+        /// derivative are finite and its clock advanced; otherwise it is refused and nothing changes. Shared with the
+        /// ball batch.
+        /// </summary>
+        internal static bool Takes(in FlightState start, in FlightState end, in StateDerivative endDerivative) =>
+            end.IsFinite && endDerivative.IsFinite && end.Time > start.Time;
+
         // One piece of a fixed step: integrate to endTime, then handle the first event with an effect.
         private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
         {
             FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
-            if (!next.IsFinite || !nextDerivative.IsFinite)
+            if (!Takes(_now.State, next, nextDerivative))
             {
                 return false;
             }
@@ -422,7 +430,7 @@ namespace MagnusBall.Flight
                 trial = Math.Min(result.NextStep, h);
             }
 
-            if (!result.End.IsFinite || !result.EndDerivative.IsFinite)
+            if (!Takes(_now.State, result.End, result.EndDerivative))
             {
                 return false;
             }
