@@ -164,7 +164,7 @@ namespace MagnusBall.Flight
         public ReadOnlySpan<Plane> Planes => _planes;
 
         /// <summary>The most events one step can report: one landing, one apex and one crossing per plane.</summary>
-        public int MaximumEventsPerStep => 2 + _planes.Length;
+        internal int MaximumEventsPerStep => 2 + _planes.Length;
 
         /// <summary>
         /// Finds the events inside one step and writes them to <paramref name="events"/> in time order: the
@@ -181,7 +181,7 @@ namespace MagnusBall.Flight
         /// </param>
         /// <returns>How many events were written.</returns>
         /// <exception cref="ArgumentException">The buffer is shorter than <see cref="MaximumEventsPerStep"/>.</exception>
-        public int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
+        internal int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
         {
             if (events.Length < MaximumEventsPerStep)
             {

@@ -154,7 +154,7 @@ namespace MagnusBall.Flight
         public bool IsStopped => _now.Phase == FlightPhase.Stopped;
 
         /// <summary>The dense output of the last piece of flight of the last step (default before the first step).</summary>
-        public HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
+        internal HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
         /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
