@@ -63,7 +63,7 @@ namespace MagnusBall.Flight
         /// <param name="kind">What happened.</param>
         /// <param name="planeIndex">Index of the crossed plane, or -1.</param>
         /// <param name="state">The state at the event.</param>
-        public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state)
+        internal FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state)
             : this(kind, planeIndex, state, state, BounceRegime.None, false)
         {
         }
@@ -75,7 +75,7 @@ namespace MagnusBall.Flight
         /// <param name="after">The state just after it (for a bounce, leaving).</param>
         /// <param name="regime">For a bounce, its regime.</param>
         /// <param name="startsRolling">For a bounce, whether the ball rolls from here.</param>
-        public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
+        internal FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
         {
             Kind = kind;
             PlaneIndex = planeIndex;
