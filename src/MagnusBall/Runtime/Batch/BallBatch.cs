@@ -272,9 +272,9 @@ namespace MagnusBall.Batch
                 return;
             }
 
-            var segment = new HermiteSegment(start, k1, end, k);
+            var segment = HermiteSegment.OfTakenStep(start, k1, end, k);
             Span<FlightEvent> found = _found;
-            int count = _landingEvents.Scan(segment, found, _startsFlight[i], landings: true);
+            int count = _landingEvents.Scan(ref segment, found, _startsFlight[i], landings: true);
             FlightEventSet.CountUntil(found.Slice(0, count), FlightEventKinds.Landing, out int stop);
             if (stop >= 0)
             {

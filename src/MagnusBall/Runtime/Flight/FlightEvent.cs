@@ -189,7 +189,8 @@ namespace MagnusBall.Flight
                     $"events must hold at least MaximumEventsPerStep = {MaximumEventsPerStep} events; got {events.Length}.", nameof(events));
             }
 
-            return Scan(segment, events, startsFlight, landings: true);
+            HermiteSegment copy = segment;
+            return Scan(ref copy, events, startsFlight, landings: true);
         }
 
         /// <summary>
@@ -197,9 +198,9 @@ namespace MagnusBall.Flight
         /// landing optional (a flight with a contact surface reports bounces instead). The buffer must hold
         /// <see cref="MaximumEventsPerStep"/> events.
         /// </summary>
-        internal int Scan<TDense>(in TDense dense, Span<FlightEvent> events, bool startsFlight, bool landings)
+        internal int Scan<TDense>(ref TDense dense, Span<FlightEvent> events, bool startsFlight, bool landings)
             where TDense : struct, IDenseOutput =>
-            ScanPlanes(dense, Up, landings ? Ground : null, _planes, events, startsFlight);
+            ScanPlanes(ref dense, Up, landings ? Ground : null, _planes, events, startsFlight);
 
         /// <summary>
         /// Of one step's events in time order (as <see cref="Scan"/> writes them), how many happen when the flight
@@ -238,7 +239,7 @@ namespace MagnusBall.Flight
         /// hold 2 + planes.Length events.
         /// </summary>
         internal static int ScanPlanes<TDense>(
-            in TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+            ref TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
             where TDense : struct, IDenseOutput
         {
             int count = 0;

@@ -403,8 +403,8 @@ namespace MagnusBall.Flight
                 next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
             }
 
-            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative);
-            HandlePiece(segment, segment, next, nextDerivative, piece, stopAt);
+            var segment = HermiteSegment.OfTakenStep(_now.State, _now.Derivative, next, nextDerivative);
+            HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
             return true;
         }
 
@@ -438,8 +438,8 @@ namespace MagnusBall.Flight
             _now.NextAdaptiveStep = result.NextStep;
             endTime = result.End.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = new HermiteSegment(result.Start, result.StartDerivative, result.End, result.EndDerivative);
-            HandlePiece(result, hermite, result.End, result.EndDerivative, piece, stopAt);
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
+            HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
             return true;
         }
 
@@ -447,11 +447,11 @@ namespace MagnusBall.Flight
         // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
         // Hermite, kept for StateAt.
         private void HandlePiece<TDense>(
-            in TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
+            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
-            int count = EventSet == null ? 0 : EventSet.Scan(dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
+            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
             double contactTime = double.PositiveInfinity;
             // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
             if (Contact != null && piece < MaxPiecesPerStep - 1 &&
@@ -490,10 +490,10 @@ namespace MagnusBall.Flight
                 return;
             }
 
-            Bounce(dense, hermite, contactTime, piece);
+            Bounce(ref dense, hermite, contactTime, piece);
         }
 
-        private void Bounce<TDense>(in TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+        private void Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)
             where TDense : struct, IDenseOutput
         {
             GroundContact contact = Contact!;
