@@ -98,8 +98,8 @@ namespace MagnusBall.Presets
         /// <summary>
         /// Golf with the wind-tunnel law as fitted to Bearman &amp; Harvey (1976), uncalibrated: the <see cref="Golf"/>
         /// ball and spin decay with <see cref="GolfSpinReynoldsDrag.BearmanHarvey"/> and
-        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within a few
-        /// per cent, drivers 11-20 % short; on the tour averages it is within 1.8 % (median), docs/validation.md.
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within 1-3
+        /// per cent, drivers 9-11 % short; on the tour averages it is within 1.4 % (median; worst 6.8 %), docs/validation.md.
         /// </summary>
         public static SportPreset GolfBearmanHarvey { get; } = new SportPreset(
             "golf-bearman-harvey",
