@@ -153,7 +153,7 @@ namespace MagnusBall.Tests.Aerodynamics
                 Assert.That(lift.Evaluate(D(r[0])), Is.EqualTo(D(r[1])), $"S = {r[0]} ({r[2]})");
             }
 
-            // The wind-tunnel points cover S 0.05-0.27 only: what a free kick reaches (0.1-0.4) beyond 0.27
+            // The 2010 (Teamgeist) points cover S 0.05-0.27 only: what a free kick reaches (0.1-0.4) beyond 0.27
             // is bridged to the trajectory points, nearly flat (0.29 -> 0.285 at 0.49).
             Assert.That(lift.Evaluate(0.4), Is.InRange(0.285, 0.29));
         }
