@@ -141,7 +141,8 @@ namespace MagnusBall.Presets
         /// eqs. 23 and 47) fly their measured table-tennis lob with (Fig. 7), Goff &amp; Carre's logistic in speed and
         /// their spin power law (<see cref="GoffCarreSoccerDrag"/>): a trajectory fit, not a wind-tunnel measurement of
         /// a table-tennis ball. Stated assumptions: lift from Stepanek's saturating tennis curve C_L = S/(2.022 S + 0.981)
-        /// (no table-tennis lift data was available here); spin decay 2 % per 6.4 m as for tennis.
+        /// (no table-tennis lift numbers were available here; a flight measurement whose abstract reports a "lift crisis",
+        /// C_L nearly vanishing near S 0.5, is described in docs/presets.md); spin decay 2 % per 6.4 m as for tennis.
         /// </summary>
         public static SportPreset TableTennis { get; } = new SportPreset(
             "table-tennis",
