@@ -98,8 +98,8 @@ namespace MagnusBall.Tests.Validation
         /// model to a neural network", ISEA 2022 (Engineering of Sport 14), doi 10.5703/1288284317493: C_D = 0.1304 +
         /// 0.9287 S - 0.8259 S^2 and C_L = 0.0504 + 1.2031 S - 1.1490 S^2, fitted to the radar-measured carry and apex of
         /// 1040 shots of a 2021 Titleist Pro V1 (S 0.02-0.75). Constants as quoted by public code (open-flight/openflight,
-        /// src/openflight/ballistics.py, commit 6f482c87e9d33789cc7d82c25e32856dfea2e65a; the same six in a second,
-        /// independent copy), the paper itself not read here; S held at 0.75 beyond the fit and C_L kept &gt;= 0, as there.
+        /// src/openflight/ballistics.py, commit 6f482c87e9d33789cc7d82c25e32856dfea2e65a; the same six in a second
+        /// public copy), the paper itself not read here; S held at 0.75 beyond the fit and C_L kept &gt;= 0, as there.
         /// Spin decay stays the golf preset's 4 %/s.
         /// </summary>
         private sealed class FergusonQuadratic : MagnusBall.Aerodynamics.IDragModel, MagnusBall.Aerodynamics.ILiftModel
