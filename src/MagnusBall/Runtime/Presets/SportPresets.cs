@@ -78,7 +78,7 @@ namespace MagnusBall.Presets
 
         /// <summary>
         /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed); drag
-        /// rising with spin and a drag crisis in the Reynolds number, lift saturating in spin
+        /// rising with spin and a drag crisis in the Reynolds number, lift rising steeply with spin and flattening (a power of the spin parameter below 1)
         /// (<see cref="GolfSpinReynoldsDrag"/>, <see cref="GolfSpinReynoldsLift"/>), the form fitted to Bearman &amp;
         /// Harvey's (1976) wind-tunnel grid, then one constant, the drag floor, refitted once to all 24 shots of a
         /// TrackMan session (<see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>; the lift is
