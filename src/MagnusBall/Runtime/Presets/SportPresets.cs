@@ -78,7 +78,7 @@ namespace MagnusBall.Presets
 
         /// <summary>
         /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed); drag
-        /// rising with spin and a drag crisis in the Reynolds number, lift saturating in spin
+        /// rising with spin and a drag crisis in the Reynolds number, lift rising steeply with spin and flattening (a power of the spin parameter below 1)
         /// (<see cref="GolfSpinReynoldsDrag"/>, <see cref="GolfSpinReynoldsLift"/>), the form fitted to Bearman &amp;
         /// Harvey's (1976) wind-tunnel grid, then one constant, the drag floor, refitted once to all 24 shots of a
         /// TrackMan session (<see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>; the lift is
@@ -98,8 +98,8 @@ namespace MagnusBall.Presets
         /// <summary>
         /// Golf with the wind-tunnel law as fitted to Bearman &amp; Harvey (1976), uncalibrated: the <see cref="Golf"/>
         /// ball and spin decay with <see cref="GolfSpinReynoldsDrag.BearmanHarvey"/> and
-        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within a few
-        /// per cent, drivers 11-20 % short; on the tour averages it is within 1.8 % (median), docs/validation.md.
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within 1-3
+        /// per cent, drivers 9-11 % short; on the tour averages it is within 1.4 % (median; worst 6.8 %), docs/validation.md.
         /// </summary>
         public static SportPreset GolfBearmanHarvey { get; } = new SportPreset(
             "golf-bearman-harvey",
@@ -141,7 +141,8 @@ namespace MagnusBall.Presets
         /// eqs. 23 and 47) fly their measured table-tennis lob with (Fig. 7), Goff &amp; Carre's logistic in speed and
         /// their spin power law (<see cref="GoffCarreSoccerDrag"/>): a trajectory fit, not a wind-tunnel measurement of
         /// a table-tennis ball. Stated assumptions: lift from Stepanek's saturating tennis curve C_L = S/(2.022 S + 0.981)
-        /// (no table-tennis lift data was available here); spin decay 2 % per 6.4 m as for tennis.
+        /// (no table-tennis lift numbers were available here; a flight measurement whose abstract reports a "lift crisis",
+        /// C_L nearly vanishing near S 0.5, is described in docs/presets.md); spin decay 2 % per 6.4 m as for tennis.
         /// </summary>
         public static SportPreset TableTennis { get; } = new SportPreset(
             "table-tennis",
