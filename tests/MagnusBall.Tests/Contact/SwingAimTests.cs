@@ -81,7 +81,8 @@ namespace MagnusBall.Tests.Contact
             Assert.That(s.Iterations, Is.LessThanOrEqualTo(SwingAim.MaximumIterations));
             Assert.That(s.Swing.Speed, Is.EqualTo(known.Speed));
             Assert.That(s.Swing.PathElevationDegrees, Is.EqualTo(known.PathElevationDegrees));
-            AssertLands(Tennis, position, s.Swing.Hit(Tennis.Ball, ZUp, position, incoming, Vector3d.Zero), target, $"racket {s.Swing}");
+            TestContext.Out.WriteLine($"racket: {s.Swing}, {s.Iterations} iterations; target {target}");
+            AssertLands(Tennis, position, s.Swing.Hit(Tennis.Ball, ZUp, position, incoming, Vector3d.Zero), target, "racket");
         }
 
         [Test]
