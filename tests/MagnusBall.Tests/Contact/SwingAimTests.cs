@@ -151,6 +151,22 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void ReadmeSwingAimExample_Runs()
+        {
+            // README's "From a swing to a launch" inverse example, compiled and run, then checked like the goal-mouth test.
+            var soccer = SportPresets.Soccer;
+            FlightModel model = soccer.CreateModel(Air.SeaLevel, Gravity.YUp);
+            var aim = new SwingAim(new AimSolver(model, RungeKutta4.Instance, 1.0 / 240, Plane.Ground(model)), soccer.Ball);
+            var curler = new KickSwing(speed: 25, offset: 0.05, friction: 0.5);
+            var frameYUp = new LaunchFrame(Vector3d.UnitY, Vector3d.UnitZ);
+            SwingSolution<KickSwing> kick = aim.KickToReach(curler, frameYUp, new Vector3d(0, soccer.Ball.Radius, 0), target: new Vector3d(3, 2, 20));
+            TestContext.Out.WriteLine($"README: {kick}");
+            Assert.That(kick.IsSolved, Is.True);
+            Assert.That(kick.Aim.Miss, Is.LessThan(SwingAim.MissTolerance));
+            Assert.That(Math.Abs(kick.Launch.LaunchSpin.Sidespin), Is.GreaterThan(10), "it curls");
+        }
+
+        [Test]
         public void ATargetOutOfReach_IsUnreachable_NotAnException()
         {
             var position = new Vector3d(0, Soccer.Ball.Radius, 0);
