@@ -195,7 +195,7 @@ namespace MagnusBall.Cli
 
                 // The work cap: a step costs 1, a substepping integrator's step as many substeps as it will take
                 // (judged at the start of the step, as the integrator judges it).
-                long cost = stable is null || !(h > 0) ? 1 : StableStepping.SubstepCount(model, stepper.State, h, stable.StiffnessLimit);
+                long cost = stable is null || !(h > 0) ? 1 : stable.SubstepCount(model, stepper.State, h);
                 if (!budget.TrySpend(cost))
                 {
                     throw new InputError(stepPath,

@@ -507,6 +507,19 @@ namespace UnityEngine
         public TooltipAttribute(string tooltip) => this.tooltip = tooltip;
     }
 
+    [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = false)]
+    public sealed class RangeAttribute : PropertyAttribute
+    {
+        public readonly float min;
+        public readonly float max;
+
+        public RangeAttribute(float min, float max)
+        {
+            this.min = min;
+            this.max = max;
+        }
+    }
+
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
     public sealed class RequireComponent : Attribute
     {

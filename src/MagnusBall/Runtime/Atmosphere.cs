@@ -24,10 +24,10 @@ namespace MagnusBall
     public static class Atmosphere
     {
         /// <summary>Specific gas constant of dry air, 287.058 J/(kg K).</summary>
-        public const double DryAirGasConstant = 287.058;
+        internal const double DryAirGasConstant = 287.058;
 
         /// <summary>Specific gas constant of water vapour, 461.495 J/(kg K).</summary>
-        public const double WaterVapourGasConstant = 461.495;
+        internal const double WaterVapourGasConstant = 461.495;
 
         /// <summary>ISA sea-level pressure, 101325 Pa.</summary>
         public const double SeaLevelPressure = 101325.0;
@@ -36,13 +36,13 @@ namespace MagnusBall
         public const double SeaLevelTemperatureCelsius = 15.0;
 
         /// <summary>0 degC in kelvin, 273.15 K.</summary>
-        public const double ZeroCelsiusInKelvin = 273.15;
+        internal const double ZeroCelsiusInKelvin = 273.15;
 
         /// <summary>ISA tropospheric lapse rate, 0.0065 K/m.</summary>
-        public const double TroposphereLapseRate = 0.0065;
+        internal const double TroposphereLapseRate = 0.0065;
 
         /// <summary>Top of the ISA troposphere, 11000 m.</summary>
-        public const double TropopauseAltitude = 11000.0;
+        internal const double TropopauseAltitude = 11000.0;
 
         /// <summary>Lowest altitude accepted, -1000 m (the Dead Sea shore is at about -430 m).</summary>
         public const double MinimumAltitude = -1000.0;

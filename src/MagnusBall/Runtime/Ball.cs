@@ -55,7 +55,8 @@ namespace MagnusBall
         public double MomentOfInertia => InertiaFactor * Mass * Radius * Radius;
 
         /// <summary>
-        /// The tennis ball of the seed thesis and of Cross (2011): 0.057 kg, 0.033 m, alpha 0.55.
+        /// The library's one tennis ball: that of the seed thesis and of Cross (2011), 0.057 kg, 0.033 m, alpha 0.55
+        /// (inside the ITF's 56.0-59.4 g and 6.54-6.86 cm). The tennis presets fly this ball.
         /// </summary>
         public static Ball Tennis { get; } = new Ball(0.057, 0.033, 0.55);
 

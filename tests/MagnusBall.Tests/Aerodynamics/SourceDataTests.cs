@@ -69,12 +69,19 @@ namespace MagnusBall.Tests.Aerodynamics
             // differ by up to about 0.005 in C_D and C_L, and the figures' printed lines are about that thick;
             // 0.01 rms is twice that reading scatter.
             Assert.That(dragRms, Is.LessThan(0.01));
-            Assert.That(liftRms, Is.LessThan(0.015));
+            Assert.That(liftRms, Is.LessThan(0.01));
             // Whole grid: the laminar corner (13.7 m/s) is where the smooth form misses most; the bounds are the
             // fit's own documented largest residuals (XML docs of BearmanHarvey), so a change of form that
             // makes the fit worse fails here.
             Assert.That(dragMax, Is.LessThan(0.045));
-            Assert.That(liftMaxFlight, Is.LessThan(0.05));
+            Assert.That(liftMaxFlight, Is.LessThan(0.03));
+
+            // The drivers' corner (46.9 m/s and up, S below 0.1: a driver's launch): the reason the lift is a power of S.
+            // The earlier saturating form m S/(S + h) was up to 0.038 below the grid here (drivers flew low and short);
+            // 0.02 is four times the reading scatter above, and that form fails it.
+            double liftMaxDriver = flight.Where(p => p.Speed >= 46.9 && p.S < 0.1).Max(p => Math.Abs(lift.Evaluate(p.S, p.Re) - p.Cl));
+            TestContext.Out.WriteLine($"drivers' corner (>= 46.9 m/s, S < 0.1): C_L largest {liftMaxDriver:F4}");
+            Assert.That(liftMaxDriver, Is.LessThan(0.02));
 
             // The qualitative shape the issue asks for, on the source grid itself: drag rises with spin at
             // every speed; lift rises with spin and flattens (the second half of the spin range adds less).
@@ -115,7 +122,9 @@ namespace MagnusBall.Tests.Aerodynamics
             Assert.That(() => new GolfSpinReynoldsDrag(-0.1, 0, 0, 1e5, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("floor"));
             Assert.That(() => new GolfSpinReynoldsDrag(0.2, 0, 0, 1e5, 0), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("crisisWidth"));
             Assert.That(() => new GolfSpinReynoldsLift(0.6, 0.25, 1.5, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("reynoldsExponent"));
-            Assert.That(() => new GolfSpinReynoldsLift(0.6, double.NaN, 0.1, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("halfSpin"));
+            Assert.That(() => new GolfSpinReynoldsLift(0.6, double.NaN, 0.1, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("spinExponent"));
+            Assert.That(() => new GolfSpinReynoldsLift(0.6, 0, 0.1, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("spinExponent"));
+            Assert.That(() => new GolfSpinReynoldsLift(0.6, 1.5, 0.1, 1e4, 1e4), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("spinExponent"));
         }
 
         [Test]
@@ -144,7 +153,7 @@ namespace MagnusBall.Tests.Aerodynamics
                 Assert.That(lift.Evaluate(D(r[0])), Is.EqualTo(D(r[1])), $"S = {r[0]} ({r[2]})");
             }
 
-            // The wind-tunnel points cover S 0.05-0.27 only: what a free kick reaches (0.1-0.4) beyond 0.27
+            // The 2010 (Teamgeist) points cover S 0.05-0.27 only: what a free kick reaches (0.1-0.4) beyond 0.27
             // is bridged to the trajectory points, nearly flat (0.29 -> 0.285 at 0.49).
             Assert.That(lift.Evaluate(0.4), Is.InRange(0.285, 0.29));
         }

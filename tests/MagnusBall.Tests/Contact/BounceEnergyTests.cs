@@ -49,7 +49,7 @@ namespace MagnusBall.Tests.Contact
             }
 
             TestContext.Out.WriteLine($"{surface.Name}: {slides} slides, {grips} grips, largest relative change {worst:E3}");
-            if (surface.SlidingFriction > 0)
+            if (surface.Contact.Friction > 0)
             {
                 // Both regimes must have been exercised for the property to mean something.
                 Assert.That(slides, Is.GreaterThan(Cases / 20));

@@ -77,12 +77,12 @@ namespace MagnusBall.Tests.Contact
                     BounceOutcome o = Court.ZUp.Bounce(model, Tennis, 20, angle, rpm);
                     double vn = 20 * Math.Sin(angle * Math.PI / 180);
                     Assert.That(o.IncomingNormalSpeed, Is.EqualTo(vn).Within(1e-12));
-                    Assert.That(o.NormalRestitution, Is.EqualTo(surface.NormalRestitutionAt(angle)).Within(1e-12));
+                    Assert.That(o.NormalRestitution, Is.EqualTo(surface.Contact.NormalRestitutionAt(angle)).Within(1e-12));
                     Assert.That(Court.ZUp.Up(o.Velocity), Is.EqualTo(o.NormalRestitution * vn).Within(1e-12));
                 }
             }
 
-            Assert.That(Surface.Hard.NormalRestitutionAt(16), Is.EqualTo(0.87).Within(1e-15));
+            Assert.That(Surface.Hard.Contact.NormalRestitutionAt(16), Is.EqualTo(0.87).Within(1e-15));
         }
 
         [Test]
@@ -143,8 +143,8 @@ namespace MagnusBall.Tests.Contact
             Assert.That(vx2 - rw2, Is.EqualTo(0).Within(1e-9));
 
             // With e_x = 0 the two branches meet at the switch: the bounce is continuous across it.
-            var noRecoil = new CrossBounce(new Surface("no recoil", surface.NormalRestitution, surface.NormalRestitutionPerDegree,
-                surface.SlidingFriction, 0, surface.ForceOffset, surface.ForceOffsetPerSpeed));
+            var noRecoil = new CrossBounce(new Surface("no recoil", surface.Contact.NormalRestitution, surface.Contact.NormalRestitutionPerDegree,
+                surface.Contact.Friction, 0, surface.Contact.ForceOffset, surface.Contact.ForceOffsetPerSpeed));
             BounceOutcome a = Court.ZUp.Bounce(noRecoil, Tennis, 20, lo, 0);
             BounceOutcome b = Court.ZUp.Bounce(noRecoil, Tennis, 20, hi, 0);
             Assert.That(a.Regime, Is.EqualTo(BounceRegime.Slide));
@@ -357,10 +357,10 @@ namespace MagnusBall.Tests.Contact
                 Vector3d vt = v + n * vn, omega = Vector3d.Cross(n, w) * R;
                 Vector3d u = vt + omega, lambda = vt - omega * alpha, u1 = u;
                 double J = (1 + o.NormalRestitution) * vn;
-                double D = Math.Min(surface.ForceOffsetAt(v.Length), (1 + alpha) * surface.SlidingFriction * R / Math.Sqrt(2));
+                double D = Math.Min(surface.Contact.ForceOffsetAt(v.Length), (1 + alpha) * surface.Contact.Friction * R / Math.Sqrt(2));
                 double delta = Math.Min(D * J / R, lambda.Length);
                 Vector3d e1 = lambda / lambda.Length;
-                double a = delta / J, b = (1 + alpha) * surface.SlidingFriction, q = J / alpha;
+                double a = delta / J, b = (1 + alpha) * surface.Contact.Friction, q = J / alpha;
                 Func<Vector3d, Vector3d> f = x => e1 * a - x / x.Length * b;
                 const int steps = 4_000;
                 double h = q / steps;

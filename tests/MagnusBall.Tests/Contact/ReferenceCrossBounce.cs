@@ -102,13 +102,13 @@ namespace MagnusBall.Tests.Contact
 
             double tangentialSpeed = vt.Length;
             double incomingAngleDegrees = PortableMath.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
-            double ey = surface.NormalRestitutionAt(incomingAngleDegrees);
+            double ey = surface.Contact.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn; // |Delta v_n| = P_n / m
-            double mu = surface.SlidingFriction;
+            double mu = surface.Contact.Friction;
 
             // Normal-force offset: against the rolling direction, capped so it never outruns friction (energy)
             // and never reverses the rolling.
-            double offset = Math.Min(surface.ForceOffsetAt(velocity.Length), (1 + alpha) * mu * radius * InverseSqrt2);
+            double offset = Math.Min(surface.Contact.ForceOffsetAt(velocity.Length), (1 + alpha) * mu * radius * InverseSqrt2);
             double lambdaLength = lambda1.Length;
             double delta = Math.Min(offset * normalChange / radius, lambdaLength);
             Vector3d offsetImpulse = lambdaLength > 0 ? lambda1 * (delta / lambdaLength) : Vector3d.Zero;
@@ -126,7 +126,7 @@ namespace MagnusBall.Tests.Contact
             else
             {
                 // Gripped (or was rolling without slip from the start): the slip recoils to -e_x of its incoming value.
-                u2 = u1 * -surface.TangentialRestitution;
+                u2 = u1 * -surface.Contact.TangentialRestitution;
                 regime = BounceRegime.Grip;
             }
 

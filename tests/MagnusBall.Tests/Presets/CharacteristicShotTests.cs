@@ -66,6 +66,11 @@ namespace MagnusBall.Tests.Presets
             ShotOutcome seaLevel = GolfShot(SportPresets.Golf, Air.SeaLevel, 171, 10.4, 2545);
             Air mountain = Air.AtAltitude(1600, 25, 0, new Vector3d(0, 3, 0));
             ShotOutcome high = GolfShot(SportPresets.Golf, mountain, 171, 10.4, 2545);
+            ShotOutcome iron = GolfShot(SportPresets.Golf, Air.SeaLevel, 123, 16.1, 7124);
+            // For docs/presets.md (the golf preset's sample flights): the 2023 tour driver and 7-iron in ISA sea-level air.
+            TestContext.Out.WriteLine(
+                $"golf, ISA sea level: driver carry {seaLevel.Landing.X / ShotFlight.MetresPerYard:F1} yd, apex {seaLevel.Apex / ShotFlight.MetresPerYard:F1} yd, landing {ShotFlight.LandingAngleDegrees(seaLevel, Vector3d.UnitZ):F1} deg; " +
+                $"7-iron carry {iron.Landing.X / ShotFlight.MetresPerYard:F1} yd, apex {iron.Apex / ShotFlight.MetresPerYard:F1} yd, landing {ShotFlight.LandingAngleDegrees(iron, Vector3d.UnitZ):F1} deg");
             TestContext.Out.WriteLine($"driver at 1600 m, 25 degC, 3 m/s crosswind: carry {high.Landing.X / ShotFlight.MetresPerYard:F1} yd, drift {high.Landing.Y:F1} m");
             Assert.That(high.Landing.X, Is.GreaterThan(seaLevel.Landing.X));
             Assert.That(high.Landing.Y, Is.GreaterThan(0));

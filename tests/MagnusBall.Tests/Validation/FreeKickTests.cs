@@ -66,7 +66,7 @@ namespace MagnusBall.Tests.Validation
             // Soccer coefficients from the literature, not fitted to this case (docs/references.md
             // section 2): Goff & Carre (2010, Eur. J. Phys. 31:775) drag, the larger of their no-spin drag-crisis
             // curve and their spinning-ball fit 0.4127 S^0.3056 (here S ~ 0.25-0.4, so the spin fit, C_D ~ 0.27-0.30);
-            // lift interpolated in the Teamgeist wind-tunnel table and Goff & Carre (2009) (C_L ~ 0.29 here).
+            // lift interpolated in the Teamgeist trajectory-analysis table and Goff & Carre (2009) (C_L ~ 0.29 here).
             // Air 1.21 kg/m^3 as in the thesis's Cross case (J&I's density is not quoted); no spin decay.
             var model = new FlightModel(
                 ball, new Air(1.21), Gravity.Along(frame.Up), GoffCarreSoccerDrag.Instance, PiecewiseLinearLift.SoccerGoffCarre);

@@ -83,9 +83,10 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>
         /// Soccer (Goff &amp; Carre; secondary transcription): (0, 0) assumed here (no spin, no lift), the Adidas
-        /// Teamgeist wind-tunnel points S 0.05/0.11/0.16/0.20/0.27 -> C_L 0.05/0.22/0.24/0.29/0.29 (Goff &amp; Carre
-        /// 2010, Eur. J. Phys. 31:775) and the trajectory-analysis points S 0.49 -> 0.285, 0.71 -> 0.31 (Goff &amp;
-        /// Carre 2009, Am. J. Phys. 77:1020). Held at 0.31 beyond S = 0.71. The two sources meet with a slight
+        /// Teamgeist points S 0.05/0.11/0.16/0.20/0.27 -> C_L 0.05/0.22/0.24/0.29/0.29 (Goff &amp; Carre 2010, Eur. J.
+        /// Phys. 31:775: lift extracted from filmed machine launches with wind-tunnel drag, i.e. trajectory analysis,
+        /// not a wind-tunnel lift measurement) and the trajectory-analysis points S 0.49 -> 0.285, 0.71 -> 0.31 (Goff
+        /// &amp; Carre 2009, Am. J. Phys. 77:1020). Held at 0.31 beyond S = 0.71. The two sources meet with a slight
         /// dip (0.29 to 0.285), kept as published.
         /// </summary>
         public static PiecewiseLinearLift SoccerGoffCarre { get; } = new PiecewiseLinearLift(

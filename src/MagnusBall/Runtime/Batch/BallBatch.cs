@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Batch
@@ -38,6 +39,8 @@ namespace MagnusBall.Batch
         private readonly bool[] _diverged;
         private readonly FlightState[] _landing;
         private readonly VectorLaws _laws;
+        private readonly FlightEventSet _landingEvents;
+        private readonly FlightEvent[] _found;
         private int _count;
 
         /// <summary>Creates an empty batch.</summary>
@@ -54,6 +57,10 @@ namespace MagnusBall.Batch
             }
 
             Ground = ground ?? Plane.Ground(model);
+            // The landing is the flight core's event: a set with this ground and no apex, scanned as a FlightStepper scans
+            // a piece, ended by FlightEventSet.CountUntil's rule.
+            _landingEvents = new FlightEventSet(Vector3d.Zero, Ground);
+            _found = new FlightEvent[_landingEvents.MaximumEventsPerStep];
             _laws = VectorLaws.For(model);
             IsVectorized = Vector.IsHardwareAccelerated && _laws.Supported;
             _width = IsVectorized ? Vector<double>.Count : 1;
@@ -252,11 +259,12 @@ namespace MagnusBall.Batch
             Finish(i, start, k1, end, k);
         }
 
-        // After ball i's step from (start, k1) to (end, k): stores the end, or stops the ball at its landing or at the last
-        // finite state.
+        // After ball i's step from (start, k1) to (end, k), by the flight core's rules: a step the core refuses
+        // (FlightStepper.Takes) stops the ball at its last finite state; otherwise the core's event scan on the step's
+        // Hermite and its stop rule (FlightEventSet.CountUntil) find the landing, where the ball stops.
         private void Finish(int i, in FlightState start, in StateDerivative k1, in FlightState end, in StateDerivative k)
         {
-            if (!end.IsFinite || !IsFinite(k) || !(end.Time > start.Time))
+            if (!FlightStepper.Takes(start, end, k))
             {
                 _active[i] = 0;
                 _diverged[i] = true;
@@ -264,10 +272,13 @@ namespace MagnusBall.Batch
                 return;
             }
 
-            var segment = new HermiteSegment(start, k1, end, k);
-            if (segment.TryFindCrossing(Ground, CrossingDirection.AgainstNormal, _startsFlight[i], out double time))
+            var segment = HermiteSegment.OfTakenStep(start, k1, end, k);
+            Span<FlightEvent> found = _found;
+            int count = _landingEvents.Scan(ref segment, found, _startsFlight[i], landings: true);
+            FlightEventSet.CountUntil(found.Slice(0, count), FlightEventKinds.Landing, out int stop);
+            if (stop >= 0)
             {
-                FlightState landing = segment.StateAt(time);
+                FlightState landing = _found[stop].State;
                 _landing[i] = landing;
                 _active[i] = 0;
                 Store(i, landing, k);
@@ -299,8 +310,6 @@ namespace MagnusBall.Batch
             _sy[i] = d.AngularAcceleration.Y;
             _sz[i] = d.AngularAcceleration.Z;
         }
-
-        private static bool IsFinite(in StateDerivative d) => d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite && d.Velocity.IsFinite;
 
         // One RK4 step of the lanes [start, start + width): RungeKutta4's arithmetic lane by lane. Lanes that do not fly
         // (landed, diverged, padding) keep their values; lanes whose step may hold a landing, or that overflowed, are

@@ -47,12 +47,6 @@ namespace MagnusBall.Contact
             Require.NonNegative(forceOffset, nameof(forceOffset));
             Require.NonNegative(forceOffsetPerSpeed, nameof(forceOffsetPerSpeed));
             Name = name;
-            NormalRestitution = normalRestitution;
-            NormalRestitutionPerDegree = normalRestitutionPerDegree;
-            SlidingFriction = slidingFriction;
-            TangentialRestitution = tangentialRestitution;
-            ForceOffset = forceOffset;
-            ForceOffsetPerSpeed = forceOffsetPerSpeed;
             Contact = new ContactProperties(
                 normalRestitution, slidingFriction, tangentialRestitution, forceOffset, normalRestitutionPerDegree, forceOffsetPerSpeed);
         }
@@ -62,24 +56,6 @@ namespace MagnusBall.Contact
 
         /// <summary>A short name for reports.</summary>
         public string Name { get; }
-
-        /// <summary>e0: the normal coefficient of restitution at grazing incidence.</summary>
-        public double NormalRestitution { get; }
-
-        /// <summary>k in e_y = e0 - k theta1, per degree of incoming angle from the surface.</summary>
-        public double NormalRestitutionPerDegree { get; }
-
-        /// <summary>mu: the sliding friction coefficient.</summary>
-        public double SlidingFriction { get; }
-
-        /// <summary>e_x: the tangential coefficient of restitution of a ball that grips.</summary>
-        public double TangentialRestitution { get; }
-
-        /// <summary>D0: the speed-independent part of the normal-force offset, m.</summary>
-        public double ForceOffset { get; }
-
-        /// <summary>D1: the normal-force offset per unit incoming speed, s (D = D0 + D1 v1).</summary>
-        public double ForceOffsetPerSpeed { get; }
 
         /// <summary>
         /// Hard court after Cross (2020, Sports Eng. 23:9, as transcribed in docs/references.md section 5):
@@ -111,18 +87,6 @@ namespace MagnusBall.Contact
         /// <summary>Every preset, the courts and <see cref="Frictionless"/>.</summary>
         public static Surface[] All => new[] { Hard, Clay, Grass, Frictionless };
 
-        /// <summary>The normal COR e_y = e0 - k theta1 for an incoming angle, clamped to [0, 1].</summary>
-        /// <param name="incomingAngleDegrees">theta1: the incoming velocity's angle from the surface, degrees, in [0, 90].</param>
-        public double NormalRestitutionAt(double incomingAngleDegrees)
-        {
-            double e = NormalRestitution - NormalRestitutionPerDegree * incomingAngleDegrees;
-            return e < 0 ? 0 : e > 1 ? 1 : e;
-        }
-
-        /// <summary>The normal-force offset D = D0 + D1 v1 for an incoming speed, m.</summary>
-        /// <param name="incomingSpeed">v1: the ball's speed before the bounce, m/s.</param>
-        public double ForceOffsetAt(double incomingSpeed) => ForceOffset + ForceOffsetPerSpeed * incomingSpeed;
-
         /// <summary>The preset called <paramref name="name"/> (case-insensitive; surrounding spaces ignored): hard, clay, grass or frictionless.</summary>
         /// <param name="name">A preset name.</param>
         /// <exception cref="ArgumentException">The name is unknown; the message lists the known names.</exception>
@@ -141,7 +105,7 @@ namespace MagnusBall.Contact
 
         /// <inheritdoc />
         public override string ToString() =>
-            $"Surface({Name}: e_y={NormalRestitution:R}-{NormalRestitutionPerDegree:R}*theta, mu={SlidingFriction:R}, " +
-            $"e_x={TangentialRestitution:R}, D={ForceOffset:R}+{ForceOffsetPerSpeed:R}*v)";
+            $"Surface({Name}: e_y={Contact.NormalRestitution:R}-{Contact.NormalRestitutionPerDegree:R}*theta, mu={Contact.Friction:R}, " +
+            $"e_x={Contact.TangentialRestitution:R}, D={Contact.ForceOffset:R}+{Contact.ForceOffsetPerSpeed:R}*v)";
     }
 }

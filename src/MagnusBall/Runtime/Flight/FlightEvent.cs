@@ -63,7 +63,7 @@ namespace MagnusBall.Flight
         /// <param name="kind">What happened.</param>
         /// <param name="planeIndex">Index of the crossed plane, or -1.</param>
         /// <param name="state">The state at the event.</param>
-        public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state)
+        internal FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state)
             : this(kind, planeIndex, state, state, BounceRegime.None, false)
         {
         }
@@ -75,7 +75,7 @@ namespace MagnusBall.Flight
         /// <param name="after">The state just after it (for a bounce, leaving).</param>
         /// <param name="regime">For a bounce, its regime.</param>
         /// <param name="startsRolling">For a bounce, whether the ball rolls from here.</param>
-        public FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
+        internal FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
         {
             Kind = kind;
             PlaneIndex = planeIndex;
@@ -164,7 +164,7 @@ namespace MagnusBall.Flight
         public ReadOnlySpan<Plane> Planes => _planes;
 
         /// <summary>The most events one step can report: one landing, one apex and one crossing per plane.</summary>
-        public int MaximumEventsPerStep => 2 + _planes.Length;
+        internal int MaximumEventsPerStep => 2 + _planes.Length;
 
         /// <summary>
         /// Finds the events inside one step and writes them to <paramref name="events"/> in time order: the
@@ -181,7 +181,7 @@ namespace MagnusBall.Flight
         /// </param>
         /// <returns>How many events were written.</returns>
         /// <exception cref="ArgumentException">The buffer is shorter than <see cref="MaximumEventsPerStep"/>.</exception>
-        public int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
+        internal int Scan(in HermiteSegment segment, Span<FlightEvent> events, bool startsFlight = false)
         {
             if (events.Length < MaximumEventsPerStep)
             {
@@ -189,7 +189,8 @@ namespace MagnusBall.Flight
                     $"events must hold at least MaximumEventsPerStep = {MaximumEventsPerStep} events; got {events.Length}.", nameof(events));
             }
 
-            return Scan(segment, events, startsFlight, landings: true);
+            HermiteSegment copy = segment;
+            return Scan(ref copy, events, startsFlight, landings: true);
         }
 
         /// <summary>
@@ -197,9 +198,9 @@ namespace MagnusBall.Flight
         /// landing optional (a flight with a contact surface reports bounces instead). The buffer must hold
         /// <see cref="MaximumEventsPerStep"/> events.
         /// </summary>
-        internal int Scan<TDense>(in TDense dense, Span<FlightEvent> events, bool startsFlight, bool landings)
+        internal int Scan<TDense>(ref TDense dense, Span<FlightEvent> events, bool startsFlight, bool landings)
             where TDense : struct, IDenseOutput =>
-            ScanPlanes(dense, Up, landings ? Ground : null, _planes, events, startsFlight);
+            ScanPlanes(ref dense, Up, landings ? Ground : null, _planes, events, startsFlight);
 
         /// <summary>
         /// Of one step's events in time order (as <see cref="Scan"/> writes them), how many happen when the flight
@@ -238,7 +239,7 @@ namespace MagnusBall.Flight
         /// hold 2 + planes.Length events.
         /// </summary>
         internal static int ScanPlanes<TDense>(
-            in TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
+            ref TDense segment, in Vector3d up, Plane? ground, Span<Plane> planes, Span<FlightEvent> events, bool startsFlight)
             where TDense : struct, IDenseOutput
         {
             int count = 0;

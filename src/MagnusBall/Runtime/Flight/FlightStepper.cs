@@ -154,7 +154,7 @@ namespace MagnusBall.Flight
         public bool IsStopped => _now.Phase == FlightPhase.Stopped;
 
         /// <summary>The dense output of the last piece of flight of the last step (default before the first step).</summary>
-        public HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
+        internal HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
         /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
@@ -379,11 +379,19 @@ namespace MagnusBall.Flight
             return _now.Phase == FlightPhase.Stopped ? StepOutcome.Stopped : StepOutcome.Taken;
         }
 
+        /// <summary>
+        /// The one divergence policy: a step from <paramref name="start"/> is taken only when its end state and end
+        /// derivative are finite and its clock advanced; otherwise it is refused and nothing changes. Shared with the
+        /// ball batch.
+        /// </summary>
+        internal static bool Takes(in FlightState start, in FlightState end, in StateDerivative endDerivative) =>
+            end.IsFinite && endDerivative.IsFinite && end.Time > start.Time;
+
         // One piece of a fixed step: integrate to endTime, then handle the first event with an effect.
         private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
         {
             FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
-            if (!next.IsFinite || !nextDerivative.IsFinite)
+            if (!Takes(_now.State, next, nextDerivative))
             {
                 return false;
             }
@@ -395,8 +403,8 @@ namespace MagnusBall.Flight
                 next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
             }
 
-            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative);
-            HandlePiece(segment, segment, next, nextDerivative, piece, stopAt);
+            var segment = HermiteSegment.OfTakenStep(_now.State, _now.Derivative, next, nextDerivative);
+            HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
             return true;
         }
 
@@ -422,7 +430,7 @@ namespace MagnusBall.Flight
                 trial = Math.Min(result.NextStep, h);
             }
 
-            if (!result.End.IsFinite || !result.EndDerivative.IsFinite)
+            if (!Takes(_now.State, result.End, result.EndDerivative))
             {
                 return false;
             }
@@ -430,8 +438,8 @@ namespace MagnusBall.Flight
             _now.NextAdaptiveStep = result.NextStep;
             endTime = result.End.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = new HermiteSegment(result.Start, result.StartDerivative, result.End, result.EndDerivative);
-            HandlePiece(result, hermite, result.End, result.EndDerivative, piece, stopAt);
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
+            HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
             return true;
         }
 
@@ -439,11 +447,11 @@ namespace MagnusBall.Flight
         // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
         // Hermite, kept for StateAt.
         private void HandlePiece<TDense>(
-            in TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
+            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
-            int count = EventSet == null ? 0 : EventSet.Scan(dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
+            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
             double contactTime = double.PositiveInfinity;
             // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
             if (Contact != null && piece < MaxPiecesPerStep - 1 &&
@@ -482,10 +490,10 @@ namespace MagnusBall.Flight
                 return;
             }
 
-            Bounce(dense, hermite, contactTime, piece);
+            Bounce(ref dense, hermite, contactTime, piece);
         }
 
-        private void Bounce<TDense>(in TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+        private void Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)
             where TDense : struct, IDenseOutput
         {
             GroundContact contact = Contact!;

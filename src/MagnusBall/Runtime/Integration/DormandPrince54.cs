@@ -114,7 +114,7 @@ namespace MagnusBall.Integration
         /// <param name="result">The outcome (see above).</param>
         /// <returns>True when the estimated error is within the tolerances and the step was taken.</returns>
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
-        public bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
+        internal bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
             StepArguments.Check(model, state, step);
             Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
@@ -156,7 +156,7 @@ namespace MagnusBall.Integration
         /// <param name="maximumStep">The largest step to return, s; finite and &gt; 0.</param>
         /// <returns>A step in (0, maximumStep].</returns>
         /// <exception cref="ArgumentException">The state is not finite or maximumStep is out of range.</exception>
-        public double InitialStep(FlightModel model, in FlightState state, in StateDerivative derivative, double maximumStep)
+        internal double InitialStep(FlightModel model, in FlightState state, in StateDerivative derivative, double maximumStep)
         {
             StepArguments.Check(model, state, maximumStep);
             double d0 = 0, d1 = 0;

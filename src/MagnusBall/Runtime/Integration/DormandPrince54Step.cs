@@ -14,7 +14,7 @@ namespace MagnusBall.Integration
     /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.5 kB): pass it by
     /// reference (<c>in</c>) where it matters.
     /// </remarks>
-    public readonly struct DormandPrince54Step : IDenseOutput
+    internal readonly struct DormandPrince54Step : IDenseOutput
     {
         private readonly StateDerivative _slopeDefect; // h k1 - dy
         private readonly StateDerivative _r4;

@@ -7,7 +7,7 @@ namespace MagnusBall.Integration
     /// an adaptive Dormand-Prince step's own fourth-order interpolant (<see cref="DormandPrince54Step"/>).
     /// Implementations are readonly structs; the core takes them as type parameters, so nothing is boxed.
     /// </summary>
-    public interface IDenseOutput
+    internal interface IDenseOutput
     {
         /// <summary>The time at the start of the step, s.</summary>
         double StartTime { get; }

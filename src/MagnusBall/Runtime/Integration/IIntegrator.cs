@@ -48,7 +48,7 @@ namespace MagnusBall.Integration
     }
 
     /// <summary>Conveniences over <see cref="IIntegrator"/> for a single step outside a stepping loop.</summary>
-    public static class IntegratorExtensions
+    internal static class IntegratorExtensions
     {
         /// <summary>
         /// Advances <paramref name="state"/> by <paramref name="step"/> seconds, evaluating the start derivative

@@ -4,42 +4,14 @@ using MagnusBall.Aerodynamics;
 namespace MagnusBall.Integration
 {
     /// <summary>
-    /// Stability-safe stepping: splits a step into substeps short enough that explicit integration of
-    /// quadratic drag (and Magnus lift) cannot blow up, whatever the ball, its speed or the step the caller asks for.
+    /// Stability-safe stepping, the work of <see cref="StableIntegrator"/> (whose remarks give the criterion): splits
+    /// a step into substeps short enough that explicit integration of quadratic drag (and Magnus lift) cannot blow up.
     /// </summary>
-    /// <remarks>
-    /// <para><b>Why.</b> Drag decelerates at k C_D s^2 (k = rho A / 2m, see <see cref="FlightModel.AerodynamicFactor"/>).
-    /// Linearised about the flight, its Jacobian has the eigenvalue -2 k C_D s along the velocity and -k C_D s
-    /// across it; Magnus lift adds a rotation of rate about k |C_L| s. An explicit method is stable only while
-    /// h |lambda| stays inside its stability region: 2 for explicit and semi-implicit Euler and Heun, 2.785 for
-    /// RK4, 3.3 for Dormand-Prince; so a step beyond about 1/(k C_D s) makes the speed oscillate and, past it,
-    /// grow without bound (measured in docs/integrators.md). A light ball at high speed (a table-tennis ball or a
-    /// beach ball at 100 m/s) reaches that limit at steps of 1-70 ms, shorter than a frame hitch.</para>
-    /// <para><b>The criterion.</b> The stiffness rate is sigma = max over x in {s, s_max} of
-    /// 2 k x (C_D(x) + |C_L(x)|) + |dw/dt|(x) / |w| (when s_max &lt;= 1.1 s, 1.1 times its value at s_max alone), where s is the air-relative speed, s_max = s + |g| h the fastest
-    /// the ball can go within the step, the coefficients are the model's own laws evaluated with the whole spin taken
-    /// as transverse (the most lift the spin can give, whichever way the flight turns within the step), and the last
-    /// term is the spin-decay rate. 2 k C_D s is the largest drag eigenvalue, 2 k |C_L| s bounds the Magnus rotation
-    /// and its rank-one part. Substeps are chosen so that h_sub sigma &lt;= <see cref="DefaultStiffnessLimit"/> (1):
-    /// h k C_D s &lt;= 1/2, half the measured oscillation limit of the Euler methods (h k C_D s = 1), a quarter or less of
-    /// the measured divergence limits (2 for Euler and Heun, 2.45 for RK4, 1.41 for Dormand-Prince), and accurate:
-    /// RK4's decay factor at h lambda = -1 is 0.375 against the exact 0.368. The rate is re-evaluated at the start of
-    /// every substep, so substeps lengthen as the ball slows; a ball that sheds its speed from s0 to s1 takes about
-    /// 2 ln(s0 / s1) / limit substeps beyond the ones the step itself needs.</para>
-    /// <para><b>Limits.</b> Explicit and semi-implicit Euler and Heun amplify rotations (|1 + i x| &gt; 1): with Magnus
-    /// lift much stronger than drag they gain speed however short the substep. The criterion makes them safe against
-    /// drag, not against such lift; RK4 and Dormand-Prince, whose stability regions hold part of the imaginary axis,
-    /// are safe against both. Hence <see cref="StableIntegrator.RungeKutta4"/> is the default.</para>
-    /// <para>In the common case (a tennis ball at 1/240 s: h sigma ~ 0.003) a step is one substep and costs
-    /// exactly what the integrator costs.</para>
-    /// </remarks>
-    public static class StableStepping
+    internal static class StableStepping
     {
-        /// <summary>The default bound on h_sub sigma (see the remarks): 1.</summary>
-        public const double DefaultStiffnessLimit = 1.0;
+        public const double DefaultStiffnessLimit = StableIntegrator.DefaultStiffnessLimit;
 
-        /// <summary>The most substeps one call takes before it gives up subdividing (a guard, never reached by physical input).</summary>
-        public const int MaximumSubsteps = 10_000;
+        public const int MaximumSubsteps = StableIntegrator.MaximumSubsteps;
 
         /// <summary>
         /// The stiffness rate sigma, 1/s (see the class remarks): an upper estimate of the largest decay or rotation
@@ -175,17 +147,45 @@ namespace MagnusBall.Integration
     }
 
     /// <summary>
-    /// An <see cref="IIntegrator"/> that steps another one through <see cref="StableStepping"/>: same results as the
+    /// An <see cref="IIntegrator"/> that steps another one in as many substeps as stability needs: same results as the
     /// inner method where its step is already stable, substeps where it would not be. Drop it in wherever an
-    /// <see cref="IIntegrator"/> is taken (a fixed-step driver, a predictor) to make large steps and light, fast balls safe.
+    /// <see cref="IIntegrator"/> is taken (a fixed-step driver, a predictor) to make large steps and light, fast balls
+    /// safe: explicit integration of quadratic drag (and Magnus lift) then cannot blow up, whatever the ball, its speed
+    /// or the step the caller asks for.
     /// </summary>
+    /// <remarks>
+    /// <para><b>Why.</b> Drag decelerates at k C_D s^2 (k = rho A / 2m, see <see cref="FlightModel.AerodynamicFactor"/>).
+    /// Linearised about the flight, its Jacobian has the eigenvalue -2 k C_D s along the velocity and -k C_D s
+    /// across it; Magnus lift adds a rotation of rate about k |C_L| s. An explicit method is stable only while
+    /// h |lambda| stays inside its stability region: 2 for explicit and semi-implicit Euler and Heun, 2.785 for
+    /// RK4, 3.3 for Dormand-Prince; so a step beyond about 1/(k C_D s) makes the speed oscillate and, past it,
+    /// grow without bound (measured in docs/integrators.md). A light ball at high speed (a table-tennis ball or a
+    /// beach ball at 100 m/s) reaches that limit at steps of 1-70 ms, shorter than a frame hitch.</para>
+    /// <para><b>The criterion.</b> The stiffness rate is sigma = max over x in {s, s_max} of
+    /// 2 k x (C_D(x) + |C_L(x)|) + |dw/dt|(x) / |w| (when s_max &lt;= 1.1 s, 1.1 times its value at s_max alone), where s is the air-relative speed, s_max = s + |g| h the fastest
+    /// the ball can go within the step, the coefficients are the model's own laws evaluated with the whole spin taken
+    /// as transverse (the most lift the spin can give, whichever way the flight turns within the step), and the last
+    /// term is the spin-decay rate. 2 k C_D s is the largest drag eigenvalue, 2 k |C_L| s bounds the Magnus rotation
+    /// and its rank-one part. Substeps are chosen so that h_sub sigma &lt;= <see cref="StableIntegrator.DefaultStiffnessLimit"/> (1):
+    /// h k C_D s &lt;= 1/2, half the measured oscillation limit of the Euler methods (h k C_D s = 1), a quarter or less of
+    /// the measured divergence limits (2 for Euler and Heun, 2.45 for RK4, 1.41 for Dormand-Prince), and accurate:
+    /// RK4's decay factor at h lambda = -1 is 0.375 against the exact 0.368. The rate is re-evaluated at the start of
+    /// every substep, so substeps lengthen as the ball slows; a ball that sheds its speed from s0 to s1 takes about
+    /// 2 ln(s0 / s1) / limit substeps beyond the ones the step itself needs.</para>
+    /// <para><b>Limits.</b> Explicit and semi-implicit Euler and Heun amplify rotations (|1 + i x| &gt; 1): with Magnus
+    /// lift much stronger than drag they gain speed however short the substep. The criterion makes them safe against
+    /// drag, not against such lift; RK4 and Dormand-Prince, whose stability regions hold part of the imaginary axis,
+    /// are safe against both. Hence <see cref="StableIntegrator.RungeKutta4"/> is the default.</para>
+    /// <para>In the common case (a tennis ball at 1/240 s: h sigma ~ 0.003) a step is one substep and costs
+    /// exactly what the integrator costs.</para>
+    /// </remarks>
     public sealed class StableIntegrator : IIntegrator
     {
         /// <summary>Wraps <paramref name="inner"/>.</summary>
         /// <param name="inner">The method to substep.</param>
-        /// <param name="stiffnessLimit">The bound on h_sub sigma; finite, in (0, 2.5] (see <see cref="StableStepping"/>).</param>
+        /// <param name="stiffnessLimit">The bound on h_sub sigma; finite, in (0, 2.5] (see the remarks).</param>
         /// <exception cref="ArgumentException">inner is null or the limit is out of range.</exception>
-        public StableIntegrator(IIntegrator inner, double stiffnessLimit = StableStepping.DefaultStiffnessLimit)
+        public StableIntegrator(IIntegrator inner, double stiffnessLimit = DefaultStiffnessLimit)
         {
             Inner = Require.NotNull(inner, nameof(inner));
             if (!double.IsFinite(stiffnessLimit) || stiffnessLimit <= 0 || stiffnessLimit > 2.5)
@@ -197,6 +197,13 @@ namespace MagnusBall.Integration
             StiffnessLimit = stiffnessLimit;
             Name = "stable-" + inner.Name;
         }
+
+        /// <summary>The default bound on h_sub sigma (see the remarks): 1.</summary>
+        public const double DefaultStiffnessLimit = 1.0;
+
+        /// <summary>The most substeps one step takes before it gives up subdividing (a guard, never reached by physical
+        /// input): such a step may come out non-finite, and the flight core then refuses it as diverged.</summary>
+        public const int MaximumSubsteps = 10_000;
 
         /// <summary>RK4 made stability-safe: the recommended default for a game's fixed step.</summary>
         public static StableIntegrator RungeKutta4 { get; } = new StableIntegrator(Integration.RungeKutta4.Instance);
@@ -215,6 +222,19 @@ namespace MagnusBall.Integration
 
         /// <summary>The inner method's count: the cost of a step that needs no substeps (each substep costs as much).</summary>
         public int DerivativeEvaluationsPerStep => Inner.DerivativeEvaluationsPerStep;
+
+        /// <summary>
+        /// The number of equal substeps that keeps h_sub sigma within <see cref="StiffnessLimit"/> over a step of
+        /// <paramref name="step"/> seconds from <paramref name="state"/>, judged at the start of the step:
+        /// ceil(step sigma / limit), at least 1, at most <see cref="MaximumSubsteps"/>. <see cref="Step"/> re-judges at
+        /// every substep and may take fewer. Costs no derivative evaluation (one or two evaluations of each coefficient law).
+        /// </summary>
+        /// <param name="model">The flight model.</param>
+        /// <param name="state">The state; every component finite.</param>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <exception cref="ArgumentException">An argument is out of range (the message names it).</exception>
+        public int SubstepCount(FlightModel model, in FlightState state, double step) =>
+            StableStepping.SubstepCount(model, state, step, StiffnessLimit);
 
         /// <inheritdoc />
         public FlightState Step(

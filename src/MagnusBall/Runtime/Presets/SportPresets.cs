@@ -14,18 +14,19 @@ namespace MagnusBall.Presets
     public static class SportPresets
     {
         /// <summary>
-        /// Tennis: an ITF ball (mass 56.0-59.4 g, diameter 6.54-6.86 cm; the middle, 57.7 g and 67.0 mm, is used),
+        /// Tennis: the library's one tennis ball, <see cref="MagnusBall.Ball.Tennis"/> (57 g, 66 mm diameter, the
+        /// ball of Cross (2011) and the seed thesis, inside the ITF's 56.0-59.4 g and 6.54-6.86 cm),
         /// inertia factor 0.55 (Cross 2002, hollow shell of finite thickness); Stepanek's (1988, Am. J. Phys.
         /// 56:138) spin-dependent C_D and C_L; spin decay 2 % per 6.4 m of flight (Cross &amp; Lindsey 2014); bounce: Cross's slide/grip model on a hard
         /// court (<see cref="MagnusBall.Contact.CrossBounce.Hard"/>, Cross 2020).
         /// </summary>
         public static SportPreset Tennis { get; } = new SportPreset(
             "tennis",
-            new Ball(0.0577, 0.0335, 0.55),
+            Ball.Tennis,
             StepanekDrag.Instance,
             StepanekLift.Instance,
             SpeedProportionalSpinDecay.TennisCrossLindsey,
-            "ITF Rules of Tennis, appendix I (ball 56.0-59.4 g, 6.54-6.86 cm; middle used); inertia factor 0.55 (Cross 2002); " +
+            "ball 57 g, 66 mm (Cross 2011; inside ITF Rules of Tennis, appendix I: 56.0-59.4 g, 6.54-6.86 cm); inertia factor 0.55 (Cross 2002); " +
             "Stepanek 1988, Am. J. Phys. 56:138 (C_D, C_L); spin decay 2 % per 6.4 m (Cross & Lindsey 2014); " +
             "bounce: Cross's slide/grip model on a hard court (Cross 2020).",
             CrossBounce.Hard);
@@ -77,7 +78,7 @@ namespace MagnusBall.Presets
 
         /// <summary>
         /// Golf: a USGA ball (at most 45.93 g, at least 42.67 mm; those limits used), inertia 0.4 (assumed); drag
-        /// rising with spin and a drag crisis in the Reynolds number, lift saturating in spin
+        /// rising with spin and a drag crisis in the Reynolds number, lift rising steeply with spin and flattening (a power of the spin parameter below 1)
         /// (<see cref="GolfSpinReynoldsDrag"/>, <see cref="GolfSpinReynoldsLift"/>), the form fitted to Bearman &amp;
         /// Harvey's (1976) wind-tunnel grid, then one constant, the drag floor, refitted once to all 24 shots of a
         /// TrackMan session (<see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>; the lift is
@@ -97,8 +98,8 @@ namespace MagnusBall.Presets
         /// <summary>
         /// Golf with the wind-tunnel law as fitted to Bearman &amp; Harvey (1976), uncalibrated: the <see cref="Golf"/>
         /// ball and spin decay with <see cref="GolfSpinReynoldsDrag.BearmanHarvey"/> and
-        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within a few
-        /// per cent, drivers 11-20 % short; on the tour averages it is within 1.8 % (median), docs/validation.md.
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>. On the TrackMan session irons and wedges come within 1-3
+        /// per cent, drivers 9-11 % short; on the tour averages it is within 1.4 % (median; worst 6.8 %), docs/validation.md.
         /// </summary>
         public static SportPreset GolfBearmanHarvey { get; } = new SportPreset(
             "golf-bearman-harvey",
@@ -140,7 +141,8 @@ namespace MagnusBall.Presets
         /// eqs. 23 and 47) fly their measured table-tennis lob with (Fig. 7), Goff &amp; Carre's logistic in speed and
         /// their spin power law (<see cref="GoffCarreSoccerDrag"/>): a trajectory fit, not a wind-tunnel measurement of
         /// a table-tennis ball. Stated assumptions: lift from Stepanek's saturating tennis curve C_L = S/(2.022 S + 0.981)
-        /// (no table-tennis lift data was available here); spin decay 2 % per 6.4 m as for tennis.
+        /// (no table-tennis lift numbers were available here; a flight measurement whose abstract reports a "lift crisis",
+        /// C_L nearly vanishing near S 0.5, is described in docs/presets.md); spin decay 2 % per 6.4 m as for tennis.
         /// </summary>
         public static SportPreset TableTennis { get; } = new SportPreset(
             "table-tennis",

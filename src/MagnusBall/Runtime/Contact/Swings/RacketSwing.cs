@@ -25,7 +25,9 @@ namespace MagnusBall.Contact.Swings
     /// effective mass acts along the face: string snap-back and the racket's rotation about its long axis are not
     /// modelled. A clamped racket (<see cref="Clamped"/>) has infinite effective mass; Cross &amp; Lindsey (2011) report
     /// that a hand-held racket gives about 30 % less spin than a clamped one (a number not traced to the paper here);
-    /// this model gives 9 % less for a gripping impact at the centre (docs/impacts.md).</para>
+    /// this model gives 8.9 % less for a gripping impact at the centre and 21.6 % less for a sliding one (19.5 % and
+    /// 40.5 % near the tip): the racket's twist about its long axis, which Lindsey (2011) found changes the spin with the
+    /// impact point, is not modelled (docs/impacts.md).</para>
     /// <para><b>Geometry.</b> In a <see cref="LaunchFrame"/> (up, forward toward the target, side = up x forward): the
     /// racket head moves along Direction(pathElevation, azimuth) and the face normal points along
     /// Direction(faceTilt, azimuth + faceTurn). A path that rises more steeply than the face is tilted (low to high)

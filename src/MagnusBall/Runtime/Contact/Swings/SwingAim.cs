@@ -3,8 +3,14 @@ using MagnusBall.Queries;
 
 namespace MagnusBall.Contact.Swings
 {
-    /// <summary>The result of <see cref="SwingAim.RacketFaceToReach"/>: the swing found and the launch it gives.</summary>
-    public readonly struct RacketAim
+    /// <summary>
+    /// The result of a <see cref="SwingAim"/> solve: the swing found (<typeparamref name="TSwing"/>: a
+    /// <see cref="RacketSwing"/>, <see cref="ClubSwing"/>, <see cref="BatSwing"/> or <see cref="KickSwing"/>) and the
+    /// launch it gives.
+    /// </summary>
+    /// <typeparam name="TSwing">The swing helper.</typeparam>
+    public readonly struct SwingSolution<TSwing>
+        where TSwing : struct
     {
         /// <summary>Creates a result.</summary>
         /// <param name="status">Solved or unreachable.</param>
@@ -12,7 +18,7 @@ namespace MagnusBall.Contact.Swings
         /// <param name="launch">Its launch.</param>
         /// <param name="aim">The aim solver's launch for that swing's speed and spin.</param>
         /// <param name="iterations">Outer iterations used.</param>
-        public RacketAim(AimStatus status, in RacketSwing swing, in SwingLaunch launch, in AimSolution aim, int iterations)
+        public SwingSolution(AimStatus status, in TSwing swing, in SwingLaunch launch, in AimSolution aim, int iterations)
         {
             Status = status;
             Swing = swing;
@@ -27,8 +33,8 @@ namespace MagnusBall.Contact.Swings
         /// <summary>True when solved.</summary>
         public bool IsSolved => Status == AimStatus.Solved;
 
-        /// <summary>The swing: the input's speed, path, impact point and face turn, with the face tilt and azimuth solved.</summary>
-        public RacketSwing Swing { get; }
+        /// <summary>The swing: the input's own parameters with the two the solve adjusts replaced (see each <see cref="SwingAim"/> method).</summary>
+        public TSwing Swing { get; }
 
         /// <summary>The launch the swing gives, with its angles measured in the aim solver's frame (up, forward toward the target).</summary>
         public SwingLaunch Launch { get; }
@@ -40,23 +46,25 @@ namespace MagnusBall.Contact.Swings
         public int Iterations { get; }
 
         /// <inheritdoc />
-        public override string ToString() => $"RacketAim({Status}, {Swing}, {Launch}, {Iterations} iterations)";
+        public override string ToString() => $"SwingSolution({Status}, {Swing}, {Launch}, {Iterations} iterations)";
     }
 
     /// <summary>
     /// The inverse of the swing helpers, for AI players: the swing that sends the ball to a target. Built on
     /// <see cref="AimSolver"/>: the aim solver finds the launch direction that reaches the target for the launch's speed
-    /// and spin, and the swing's face is turned until the swing launches the ball in that direction.
+    /// and spin, and two of the swing's angles are turned until the swing launches the ball in that direction.
     /// </summary>
     /// <remarks>
-    /// <para>A racket swing's speed, path and impact point are the player's; the face tilt (which sets the launch
-    /// elevation) and the swing's azimuth (which sets the direction) are solved. The residual is the difference between
-    /// the direction the aim solver finds for the launch's speed and spin (by effect) and the direction the swing
-    /// launches in. It is driven to zero by Broyden's method, started from the 2 x 2 Jacobian of the launch angles by
-    /// central differences of the swing alone (four impacts, no flights); the updates learn how the aim solver's answer
-    /// moves with the launch speed and spin, and a step that makes the residual worse or the target unreachable is
-    /// halved (up to 12 times). Each residual costs one aim solve; it stops when the directions agree to
-    /// <see cref="AngleTolerance"/>, after at most <see cref="MaximumIterations"/> steps.</para>
+    /// <para>The player's speed (and the rest of the swing) is kept; two angles that set the launch's elevation and
+    /// direction are solved: a racket's face tilt and azimuth, a club's dynamic loft and face angle (the path turned with
+    /// the face), a bat's and a foot's path elevation and azimuth. The residual is the difference between the direction
+    /// the aim solver finds for the launch's speed and spin (by effect) and the direction the swing launches in. It is
+    /// driven to zero by Broyden's method, started from the 2 x 2 Jacobian of the launch angles by central differences
+    /// of the swing alone (four impacts, no flights); the updates learn how the aim solver's answer moves with the
+    /// launch speed and spin, and a step that makes the residual worse, leaves the swing's ranges or makes the target
+    /// unreachable is halved (up to 12 times). Each residual costs one aim solve; it stops when the directions agree
+    /// to <see cref="AngleTolerance"/>, after at most <see cref="MaximumIterations"/> steps. A target the swing cannot
+    /// reach with its speed (too far, or only by leaving the angles' ranges) gives <see cref="AimStatus.Unreachable"/>.</para>
     /// <para>Holds its <see cref="AimSolver"/>, which is not thread-safe: one <see cref="SwingAim"/> per thread.</para>
     /// </remarks>
     public sealed class SwingAim
@@ -74,6 +82,7 @@ namespace MagnusBall.Contact.Swings
         public const double MissTolerance = 1e-4;
 
         private const double DifferenceDegrees = 1e-4;
+        private const int MaximumHalvings = 12;
 
         /// <summary>Creates the inverse on an aim solver.</summary>
         /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
@@ -105,22 +114,95 @@ namespace MagnusBall.Contact.Swings
         /// <param name="target">The target point, m; finite, not straight above or below the position.</param>
         /// <param name="maximumAzimuthDegrees">The largest launch azimuth from the target direction the aim solver tries, degrees; in (0, 89].</param>
         /// <returns>The solved swing, or <see cref="AimStatus.Unreachable"/> when the swing cannot reach the target (never an exception for finite input).</returns>
-        /// <exception cref="ArgumentException">An argument is not finite, or the target is straight above or below the position; the message names it.</exception>
-        public RacketAim RacketFaceToReach(
+        /// <exception cref="ArgumentException">An argument is not finite, the swing or frame is the default value, or the target is straight above or below the position; the message names it.</exception>
+        public SwingSolution<RacketSwing> RacketFaceToReach(
             in RacketSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d incomingVelocity, in Vector3d incomingSpin, in Vector3d target,
             double maximumAzimuthDegrees = 45)
         {
-            SwingGeometry.RequireFrame(frame, nameof(frame));
-            Require.Finite(position, nameof(position));
+            Check(frame, position, target, maximumAzimuthDegrees);
             Require.Finite(incomingVelocity, nameof(incomingVelocity));
             Require.Finite(incomingSpin, nameof(incomingSpin));
+            RequireBuilt(swing.Speed, nameof(swing), nameof(RacketSwing));
+            var family = new RacketFamily(swing, frame, position, incomingVelocity, incomingSpin, Ball);
+            return Solve<RacketSwing, RacketFamily>(ref family, swing.FaceTiltDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+        }
+
+        /// <summary>
+        /// The dynamic loft and face angle with which the club delivery <paramref name="swing"/> (its speed, attack angle,
+        /// face-to-path angle, head and face kept; the club path turns with the face) sends a ball at rest at
+        /// <paramref name="position"/> through <paramref name="target"/> (for a target on the ground: carries there).
+        /// The loft is the player's club choice and the face his aim: for a fixed club, aim with <see cref="AimSolver"/>
+        /// on the speed instead.
+        /// </summary>
+        /// <param name="swing">The delivery; its dynamic loft and face angle are the starting guess.</param>
+        /// <param name="frame">The frame the delivery's angles are given in (forward: the target line); not the default frame.</param>
+        /// <param name="position">The ball's centre, m; finite.</param>
+        /// <param name="target">The target point, m; finite, not straight above or below the position.</param>
+        /// <param name="maximumAzimuthDegrees">The largest launch azimuth from the target direction the aim solver tries, degrees; in (0, 89].</param>
+        /// <returns>The solved delivery, or <see cref="AimStatus.Unreachable"/> (loft within [-10, 80] deg, face and path within +-45 deg).</returns>
+        /// <exception cref="ArgumentException">An argument is not finite, the swing or frame is the default value, or the target is straight above or below the position; the message names it.</exception>
+        public SwingSolution<ClubSwing> ClubFaceToReach(
+            in ClubSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees = 45)
+        {
+            Check(frame, position, target, maximumAzimuthDegrees);
+            RequireBuilt(swing.Speed, nameof(swing), nameof(ClubSwing));
+            var family = new ClubFamily(swing, frame, position, Ball);
+            return Solve<ClubSwing, ClubFamily>(ref family, swing.DynamicLoftDegrees, swing.FaceAngleDegrees, position, target, maximumAzimuthDegrees);
+        }
+
+        /// <summary>
+        /// The swing elevation and azimuth with which <paramref name="swing"/> (its speed, undercut, collision efficiency,
+        /// COR and friction kept) sends a pitch arriving at <paramref name="position"/> through <paramref name="target"/>
+        /// (a point in the field: lands there).
+        /// </summary>
+        /// <param name="swing">The bat swing; its elevation and azimuth are the starting guess.</param>
+        /// <param name="frame">The frame the swing's angles are given in (forward: toward the field); not the default frame.</param>
+        /// <param name="position">The ball's centre at impact, m; finite.</param>
+        /// <param name="pitchVelocity">The pitch's velocity at impact, m/s; finite.</param>
+        /// <param name="pitchSpin">The pitch's angular velocity, rad/s; finite.</param>
+        /// <param name="target">The target point, m; finite, not straight above or below the position.</param>
+        /// <param name="maximumAzimuthDegrees">The largest launch azimuth from the target direction the aim solver tries, degrees; in (0, 89].</param>
+        /// <returns>The solved swing, or <see cref="AimStatus.Unreachable"/> (elevation within +-45 deg, azimuth within +-90 deg).</returns>
+        /// <exception cref="ArgumentException">An argument is not finite, the swing or frame is the default value, the undercut does not reach the ball, or the target is straight above or below the position; the message names it.</exception>
+        public SwingSolution<BatSwing> BatPathToReach(
+            in BatSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d pitchVelocity, in Vector3d pitchSpin, in Vector3d target,
+            double maximumAzimuthDegrees = 45)
+        {
+            Check(frame, position, target, maximumAzimuthDegrees);
+            Require.Finite(pitchVelocity, nameof(pitchVelocity));
+            Require.Finite(pitchSpin, nameof(pitchSpin));
+            RequireBuilt(swing.Speed, nameof(swing), nameof(BatSwing));
+            var family = new BatFamily(swing, frame, position, pitchVelocity, pitchSpin, Ball);
+            return Solve<BatSwing, BatFamily>(ref family, swing.SwingElevationDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+        }
+
+        /// <summary>
+        /// The foot's path elevation and azimuth with which <paramref name="kick"/> (its speed, offset, friction, foot mass
+        /// and COR kept: the curl is the player's) sends a ball at rest at <paramref name="position"/> through
+        /// <paramref name="target"/> (a point in the goal mouth, or on the pitch: lands there).
+        /// </summary>
+        /// <param name="kick">The kick; its elevation and azimuth are the starting guess.</param>
+        /// <param name="frame">The frame the kick's angles are given in; not the default frame.</param>
+        /// <param name="position">The ball's centre, m; finite.</param>
+        /// <param name="target">The target point, m; finite, not straight above or below the position.</param>
+        /// <param name="maximumAzimuthDegrees">The largest launch azimuth from the target direction the aim solver tries, degrees; in (0, 89].</param>
+        /// <returns>The solved kick, or <see cref="AimStatus.Unreachable"/> (elevation within [-45, 60] deg, azimuth within +-90 deg).</returns>
+        /// <exception cref="ArgumentException">An argument is not finite, the kick or frame is the default value, the offset is not within the ball's radius, or the target is straight above or below the position; the message names it.</exception>
+        public SwingSolution<KickSwing> KickToReach(
+            in KickSwing kick, in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees = 45)
+        {
+            Check(frame, position, target, maximumAzimuthDegrees);
+            RequireBuilt(kick.Speed, nameof(kick), nameof(KickSwing));
+            var family = new KickFamily(kick, frame, position, Ball);
+            return Solve<KickSwing, KickFamily>(ref family, kick.ElevationDegrees, kick.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+        }
+
+        private void Check(in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
+        {
+            SwingGeometry.RequireFrame(frame, nameof(frame));
+            Require.Finite(position, nameof(position));
             Require.Finite(target, nameof(target));
             Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
-            if (swing.Speed == 0)
-            {
-                throw new ArgumentException("swing must be built by a RacketSwing constructor; got the default value.", nameof(swing));
-            }
-
             Vector3d up = Solver.Model.Up;
             Vector3d toTarget = target - position;
             Vector3d horizontal = toTarget - up * Vector3d.Dot(toTarget, up);
@@ -128,21 +210,48 @@ namespace MagnusBall.Contact.Swings
             {
                 throw new ArgumentException("target must not be straight above or below position.", nameof(target));
             }
+        }
 
-            var aimFrame = new LaunchFrame(up, horizontal);
-            RacketSwing current = swing;
-            if (!Residual(current, frame, aimFrame, position, incomingVelocity, incomingSpin, target, maximumAzimuthDegrees,
+        private static void RequireBuilt(double speed, string name, string type)
+        {
+            if (speed == 0)
+            {
+                throw new ArgumentException($"{name} must be built by a {type} constructor; got the default value.", name);
+            }
+        }
+
+        /// <summary>The two adjustable angles of a swing, in degrees, and the launch they give.</summary>
+        private interface IFamily<TSwing>
+            where TSwing : struct
+        {
+            bool InRange(double x1, double x2);
+
+            TSwing With(double x1, double x2);
+
+            SwingLaunch Hit(in TSwing swing);
+        }
+
+        private SwingSolution<TSwing> Solve<TSwing, TFamily>(
+            ref TFamily family, double x1, double x2, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
+            where TSwing : struct
+            where TFamily : struct, IFamily<TSwing>
+        {
+            Vector3d up = Solver.Model.Up;
+            Vector3d toTarget = target - position;
+            var aimFrame = new LaunchFrame(up, toTarget - up * Vector3d.Dot(toTarget, up));
+            TSwing current = family.With(x1, x2);
+            if (!Residual<TSwing, TFamily>(ref family, current, aimFrame, position, target, maximumAzimuthDegrees,
                     out SwingLaunch launch, out AimSolution aim, out double r1, out double r2))
             {
-                return new RacketAim(AimStatus.Unreachable, current, launch, aim, 1);
+                return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, 1);
             }
 
-            // Broyden's method on r(x) = aim angles - launch angles, x = (face tilt, azimuth) in degrees, started from
-            // the Jacobian of -launch angles (central differences of the swing alone: the aim's own response to speed
-            // and spin is learnt by the updates), with backtracking when a step makes the residual worse or unreachable.
-            if (!LaunchJacobian(current, frame, aimFrame, position, incomingVelocity, incomingSpin, out double j11, out double j12, out double j21, out double j22))
+            // Broyden's method on r(x) = aim angles - launch angles, x = the two angles in degrees, started from the
+            // Jacobian of -launch angles (central differences of the swing alone: the aim's own response to speed and
+            // spin is learnt by the updates), with backtracking when a step makes the residual worse or unreachable.
+            if (!LaunchJacobian<TSwing, TFamily>(ref family, x1, x2, aimFrame, out double j11, out double j12, out double j21, out double j22))
             {
-                return new RacketAim(AimStatus.Unreachable, current, launch, aim, 1);
+                return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, 1);
             }
 
             j11 = -j11; j12 = -j12; j21 = -j21; j22 = -j22;
@@ -150,7 +259,7 @@ namespace MagnusBall.Contact.Swings
             {
                 if (Math.Abs(r1) <= AngleTolerance && Math.Abs(r2) <= AngleTolerance)
                 {
-                    return new RacketAim(AimStatus.Solved, current, launch, aim, iteration);
+                    return new SwingSolution<TSwing>(AimStatus.Solved, current, launch, aim, iteration);
                 }
 
                 double determinant = j11 * j22 - j12 * j21;
@@ -165,22 +274,22 @@ namespace MagnusBall.Contact.Swings
                 double norm = Math.Sqrt(r1 * r1 + r2 * r2);
                 bool accepted = false;
                 double scale = 1;
-                for (int halving = 0; halving < 12 && !accepted; halving++, scale *= 0.5)
+                for (int halving = 0; halving < MaximumHalvings && !accepted; halving++, scale *= 0.5)
                 {
-                    double tilt = current.FaceTiltDegrees + scale * dx1, azimuth = current.AzimuthDegrees + scale * dx2;
-                    if (!(tilt >= -80 && tilt <= 80 && azimuth >= -90 && azimuth <= 90))
+                    double t1 = x1 + scale * dx1, t2 = x2 + scale * dx2;
+                    if (!family.InRange(t1, t2))
                     {
                         continue;
                     }
 
-                    RacketSwing trial = current.WithFace(tilt, azimuth);
-                    if (!Residual(trial, frame, aimFrame, position, incomingVelocity, incomingSpin, target, maximumAzimuthDegrees,
+                    TSwing trial = family.With(t1, t2);
+                    if (!Residual<TSwing, TFamily>(ref family, trial, aimFrame, position, target, maximumAzimuthDegrees,
                             out SwingLaunch trialLaunch, out AimSolution trialAim, out double s1, out double s2))
                     {
                         continue;
                     }
 
-                    if (Math.Sqrt(s1 * s1 + s2 * s2) >= norm && halving < 11)
+                    if (Math.Sqrt(s1 * s1 + s2 * s2) >= norm && halving < MaximumHalvings - 1)
                     {
                         continue;
                     }
@@ -193,6 +302,8 @@ namespace MagnusBall.Contact.Swings
                         j11 += y1 * h1 / hh; j12 += y1 * h2 / hh; j21 += y2 * h1 / hh; j22 += y2 * h2 / hh;
                     }
 
+                    x1 = t1;
+                    x2 = t2;
                     current = trial;
                     launch = trialLaunch;
                     aim = trialAim;
@@ -207,16 +318,18 @@ namespace MagnusBall.Contact.Swings
                 }
             }
 
-            return new RacketAim(AimStatus.Unreachable, current, launch, aim, MaximumIterations);
+            return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, MaximumIterations);
         }
 
-        private bool Residual(
-            in RacketSwing swing, in LaunchFrame frame, in LaunchFrame aimFrame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
-            in Vector3d target, double maximumAzimuthDegrees, out SwingLaunch launch, out AimSolution aim, out double elevationError, out double azimuthError)
+        private bool Residual<TSwing, TFamily>(
+            ref TFamily family, in TSwing swing, in LaunchFrame aimFrame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees,
+            out SwingLaunch launch, out AimSolution aim, out double elevationError, out double azimuthError)
+            where TSwing : struct
+            where TFamily : struct, IFamily<TSwing>
         {
             elevationError = azimuthError = double.NaN;
             aim = default;
-            launch = new SwingLaunch(swing.Hit(Ball, frame, position, velocity, spin).Impact, aimFrame);
+            launch = new SwingLaunch(family.Hit(swing).Impact, aimFrame);
             if (!launch.IsHit || !(launch.Speed > 0))
             {
                 return false;
@@ -233,16 +346,16 @@ namespace MagnusBall.Contact.Swings
             return true;
         }
 
-        private bool LaunchJacobian(
-            in RacketSwing current, in LaunchFrame frame, in LaunchFrame aimFrame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
-            out double j11, out double j12, out double j21, out double j22)
+        private static bool LaunchJacobian<TSwing, TFamily>(
+            ref TFamily family, double x1, double x2, in LaunchFrame aimFrame, out double j11, out double j12, out double j21, out double j22)
+            where TSwing : struct
+            where TFamily : struct, IFamily<TSwing>
         {
             j11 = j12 = j21 = j22 = 0;
-            double tilt = current.FaceTiltDegrees, azimuth = current.AzimuthDegrees;
-            if (!TryAngles(current, tilt + DifferenceDegrees, azimuth, frame, position, velocity, spin, out double e1, out double a1, aimFrame) ||
-                !TryAngles(current, tilt - DifferenceDegrees, azimuth, frame, position, velocity, spin, out double e2, out double a2, aimFrame) ||
-                !TryAngles(current, tilt, azimuth + DifferenceDegrees, frame, position, velocity, spin, out double e3, out double a3, aimFrame) ||
-                !TryAngles(current, tilt, azimuth - DifferenceDegrees, frame, position, velocity, spin, out double e4, out double a4, aimFrame))
+            if (!TryAngles<TSwing, TFamily>(ref family, x1 + DifferenceDegrees, x2, aimFrame, out double e1, out double a1) ||
+                !TryAngles<TSwing, TFamily>(ref family, x1 - DifferenceDegrees, x2, aimFrame, out double e2, out double a2) ||
+                !TryAngles<TSwing, TFamily>(ref family, x1, x2 + DifferenceDegrees, aimFrame, out double e3, out double a3) ||
+                !TryAngles<TSwing, TFamily>(ref family, x1, x2 - DifferenceDegrees, aimFrame, out double e4, out double a4))
             {
                 return false;
             }
@@ -255,17 +368,18 @@ namespace MagnusBall.Contact.Swings
             return true;
         }
 
-        private bool TryAngles(
-            in RacketSwing swing, double tilt, double azimuth, in LaunchFrame frame, in Vector3d position, in Vector3d velocity, in Vector3d spin,
-            out double elevation, out double launchAzimuth, in LaunchFrame aimFrame)
+        private static bool TryAngles<TSwing, TFamily>(
+            ref TFamily family, double x1, double x2, in LaunchFrame aimFrame, out double elevation, out double launchAzimuth)
+            where TSwing : struct
+            where TFamily : struct, IFamily<TSwing>
         {
             elevation = launchAzimuth = 0;
-            if (!(tilt >= -80 && tilt <= 80 && azimuth >= -90 && azimuth <= 90))
+            if (!family.InRange(x1, x2))
             {
                 return false;
             }
 
-            var launch = new SwingLaunch(swing.WithFace(tilt, azimuth).Hit(Ball, frame, position, velocity, spin).Impact, aimFrame);
+            var launch = new SwingLaunch(family.Hit(family.With(x1, x2)).Impact, aimFrame);
             if (!launch.IsHit)
             {
                 return false;
@@ -278,5 +392,108 @@ namespace MagnusBall.Contact.Swings
 
         private static double Wrap(double angle) =>
             angle > Math.PI ? angle - 2 * Math.PI : angle < -Math.PI ? angle + 2 * Math.PI : angle;
+
+        private static bool Within(double value, double low, double high) => value >= low && value <= high;
+
+        /// <summary>A racket swing's face tilt (x1) and azimuth (x2).</summary>
+        private readonly struct RacketFamily : IFamily<RacketSwing>
+        {
+            private readonly RacketSwing _swing;
+            private readonly LaunchFrame _frame;
+            private readonly Vector3d _position, _velocity, _spin;
+            private readonly Ball _ball;
+
+            public RacketFamily(in RacketSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d velocity, in Vector3d spin, Ball ball)
+            {
+                _swing = swing;
+                _frame = frame;
+                _position = position;
+                _velocity = velocity;
+                _spin = spin;
+                _ball = ball;
+            }
+
+            public bool InRange(double x1, double x2) => Within(x1, -80, 80) && Within(x2, -90, 90);
+
+            public RacketSwing With(double x1, double x2) => _swing.WithFace(x1, x2);
+
+            public SwingLaunch Hit(in RacketSwing swing) => swing.Hit(_ball, _frame, _position, _velocity, _spin);
+        }
+
+        /// <summary>A club delivery's dynamic loft (x1) and face angle (x2), the path turned with the face.</summary>
+        private readonly struct ClubFamily : IFamily<ClubSwing>
+        {
+            private readonly ClubSwing _swing;
+            private readonly LaunchFrame _frame;
+            private readonly Vector3d _position;
+            private readonly Ball _ball;
+            private readonly double _pathFromFace;
+
+            public ClubFamily(in ClubSwing swing, in LaunchFrame frame, in Vector3d position, Ball ball)
+            {
+                _swing = swing;
+                _frame = frame;
+                _position = position;
+                _ball = ball;
+                _pathFromFace = swing.ClubPathDegrees - swing.FaceAngleDegrees;
+            }
+
+            public bool InRange(double x1, double x2) => Within(x1, -10, 80) && Within(x2, -45, 45) && Within(x2 + _pathFromFace, -45, 45);
+
+            public ClubSwing With(double x1, double x2) => new ClubSwing(
+                _swing.Speed, x1, _swing.AttackAngleDegrees, x2, x2 + _pathFromFace, _swing.HeadMass, _swing.Restitution, _swing.Friction);
+
+            public SwingLaunch Hit(in ClubSwing swing) => swing.Hit(_ball, _frame, _position);
+        }
+
+        /// <summary>A bat swing's path elevation (x1) and azimuth (x2).</summary>
+        private readonly struct BatFamily : IFamily<BatSwing>
+        {
+            private readonly BatSwing _swing;
+            private readonly LaunchFrame _frame;
+            private readonly Vector3d _position, _velocity, _spin;
+            private readonly Ball _ball;
+
+            public BatFamily(in BatSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d velocity, in Vector3d spin, Ball ball)
+            {
+                _swing = swing;
+                _frame = frame;
+                _position = position;
+                _velocity = velocity;
+                _spin = spin;
+                _ball = ball;
+            }
+
+            public bool InRange(double x1, double x2) => Within(x1, -45, 45) && Within(x2, -90, 90);
+
+            public BatSwing With(double x1, double x2) => new BatSwing(
+                _swing.Speed, _swing.Undercut, x1, x2, _swing.CollisionEfficiency, _swing.Restitution, _swing.Friction);
+
+            public SwingLaunch Hit(in BatSwing swing) => swing.Hit(_ball, _frame, _position, _velocity, _spin);
+        }
+
+        /// <summary>A kick's foot path elevation (x1) and azimuth (x2).</summary>
+        private readonly struct KickFamily : IFamily<KickSwing>
+        {
+            private readonly KickSwing _kick;
+            private readonly LaunchFrame _frame;
+            private readonly Vector3d _position;
+            private readonly Ball _ball;
+
+            public KickFamily(in KickSwing kick, in LaunchFrame frame, in Vector3d position, Ball ball)
+            {
+                _kick = kick;
+                _frame = frame;
+                _position = position;
+                _ball = ball;
+            }
+
+            public bool InRange(double x1, double x2) => Within(x1, -45, 60) && Within(x2, -90, 90);
+
+            public KickSwing With(double x1, double x2) => new KickSwing(
+                _kick.Speed, _kick.Offset, _kick.Friction, x1, x2, _kick.FootMass, _kick.Restitution);
+
+            public SwingLaunch Hit(in KickSwing kick) => kick.Hit(_ball, _frame, _position);
+        }
     }
 }

@@ -1,6 +1,7 @@
 using System;
-using MagnusBall.Flight;
 using MagnusBall.Components;
+using MagnusBall.Contact.Swings;
+using MagnusBall.Flight;
 using MagnusBall.Stepping;
 using UnityEngine;
 
@@ -32,6 +33,29 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         Components,
     }
 
+    /// <summary>What the inspector sets: the racket swing that hits the ball (the default), or the launch itself.</summary>
+    public enum LaunchInput
+    {
+        /// <summary>The swing: racket speed, path, face tilt and turn, azimuth, impact point; the launch is what the library's impact law makes of it.</summary>
+        Swing,
+
+        /// <summary>The launch velocity and spin directly (the thesis's start screen).</summary>
+        Launch,
+    }
+
+    /// <summary>Where on the strings the ball is hit, through the apparent COR measured there (RacketSwing's constants).</summary>
+    public enum StringBedPoint
+    {
+        /// <summary>The centre of the strings: ACOR 0.45.</summary>
+        Centre,
+
+        /// <summary>Near the tip: ACOR 0.10.</summary>
+        Tip,
+
+        /// <summary>Near the throat: ACOR 0.50.</summary>
+        Throat,
+    }
+
     /// <summary>
     /// The tennis ball: the scene's settings (ball, air, coefficients, court, integrator, fixed step, from the
     /// inspector) handed to the package's <see cref="MagnusBallFlight"/> component, which flies the transform
@@ -42,11 +66,43 @@ namespace MagnusBall.Samples.TennisScene.Scripts
     /// World axes are the thesis's scene: +x into the screen (down the court), +y up, +z to the left (see
     /// <see cref="TennisCourt"/>). The library works in these coordinates unchanged (<see cref="UnityFrame"/>).
     /// Space launches, R puts the ball back at the serving position (keys through <see cref="SceneInput"/>).
+    /// By default the inspector sets the racket swing (<see cref="LaunchInput.Swing"/>): the ball, arriving with the
+    /// incoming velocity and topspin (at rest for a serve's toss), is hit at the serving position by a
+    /// <see cref="RacketSwing"/> built from the swing fields, and the launch is the library's impact law's result
+    /// (logged next to the swing). The defaults are the scene's flat serve (<see cref="StandardSwings.FlatServe"/>).
     /// </remarks>
     [RequireComponent(typeof(MagnusBallFlight))]
     public class TennisBall : MonoBehaviour
     {
-        [Header("Initial velocity, m/s (thesis start screen: front = +x, top = +y, left = +z)")]
+        [Header("What the inspector sets")]
+        [Tooltip("Swing: the racket swing below hits the ball and the library's impact law gives the launch. Launch: the launch velocity and spin below.")]
+        public LaunchInput launchBy = LaunchInput.Swing;
+
+        [Header("Swing (the racket at impact; angles in the court frame: up +y, forward +x)")]
+        // Defaults: the scene's flat serve made by a swing (StandardSwings.FlatServe).
+        [Tooltip("Racket speed at the impact point, m/s.")]
+        [Range(1f, 60f)]
+        public float racketSpeed = 34f;
+        [Tooltip("The racket head's path above the horizontal, degrees (+ low to high: topspin).")]
+        [Range(-80f, 80f)]
+        public float pathElevation = 0f;
+        [Tooltip("The face normal's tilt above the horizontal, degrees (+ open: slice; - closed).")]
+        [Range(-80f, 80f)]
+        public float faceTilt = -6.845f;
+        [Tooltip("The face normal's turn from the path, degrees, + toward the hitter's right (-z): sidespin.")]
+        [Range(-60f, 60f)]
+        public float faceTurn = 0f;
+        [Tooltip("The path's azimuth from +x, degrees, + toward the hitter's right (-z).")]
+        [Range(-90f, 90f)]
+        public float swingAzimuth = -9f;
+        [Tooltip("Where on the strings the ball is hit (the apparent COR there: centre 0.45, tip 0.10, throat 0.50).")]
+        public StringBedPoint impactPoint = StringBedPoint.Centre;
+        [Tooltip("The ball's velocity just before the hit, m/s (zero: a serve's toss at its apex; a rally ball: about (-14, -1, 0)).")]
+        public Vector3 incomingVelocity = Vector3.zero;
+        [Tooltip("The incoming ball's topspin, rev/min (negative: backspin); ignored when it is at rest.")]
+        public float incomingTopspinRpm = 0f;
+
+        [Header("Launch, used when launchBy = Launch (thesis start screen: front = +x, top = +y, left = +z), m/s")]
         // Defaults: the headless runner's flat serve (50 m/s, -5.3 deg, 9 deg to the left, 800 rpm topspin).
         public float front = 49.17f;
         public float top = -4.62f;
@@ -134,6 +190,9 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         /// <summary>True while the ball is in the air.</summary>
         public bool IsFlying => Flight.IsFlying;
 
+        /// <summary>The launch the swing gave at the last launch by swing (default before the first one, or when launching by launch).</summary>
+        public SwingLaunch LastSwingLaunch { get; private set; }
+
         /// <summary>Raised at every touch of the court: each bounce (or, with no surface, the landing that ends the flight).</summary>
         public event Action<FlightEvent> Touched;
 
@@ -159,20 +218,65 @@ namespace MagnusBall.Samples.TennisScene.Scripts
             }
         }
 
-        /// <summary>Builds the scene's model from the inspector, hands it to the flight component and launches the ball from the serving position.</summary>
-        public void Launch()
+        /// <summary>
+        /// Builds the scene's model from the inspector, hands it to the flight component and launches the ball from the
+        /// serving position: hit by the inspector's swing (the default), or with the inspector's launch.
+        /// </summary>
+        /// <returns>False when the swing misses the ball (the ball was not moving into the racket face); nothing is launched then.</returns>
+        /// <exception cref="ArgumentException">An inspector value is outside its range (the message names it); nothing changes.</exception>
+        public bool Launch()
         {
-            _settings = new SceneSettings(
+            var settings = new SceneSettings(
                 mass, radius, airDensity, useStepanekCoefficients, dragCoefficient, magnusCoefficient,
                 IntegratorName(integrator), fixedStep, surface.ToString().ToLowerInvariant());
-            _simulation = new ShotSimulation(_settings);
+            FlightState start;
+            SwingLaunch swingLaunch = default;
+            if (launchBy == LaunchInput.Swing)
+            {
+                TennisSwing swing = Swing();
+                swingLaunch = swing.Launch(settings.Ball);
+                if (!swingLaunch.IsHit)
+                {
+                    Debug.Log($"the racket misses the ball ({swing.Swing}): the ball is not moving into its face. Nothing launched.");
+                    return false;
+                }
+
+                start = new FlightState(swing.Start, swingLaunch.Velocity, swingLaunch.AngularVelocity);
+                Debug.Log($"swing: {swing.Describe()} -> launch {swingLaunch.Speed:F1} m/s, elevation {swingLaunch.ElevationDegrees:F1} deg, " +
+                          $"topspin {Spin.ToRpm(swingLaunch.LaunchSpin.Topspin):F0} rpm, sidespin {Spin.ToRpm(swingLaunch.LaunchSpin.Sidespin):F0} rpm ({swingLaunch.Impact.Regime})");
+            }
+            else
+            {
+                start = LaunchState();
+            }
+
+            _settings = settings;
+            _simulation = new ShotSimulation(settings);
+            LastSwingLaunch = swingLaunch;
             MagnusBallFlight flight = Flight;
             flight.stepIn = stepInFixedUpdate ? StepIn.FixedUpdate : StepIn.Update;
-            flight.Configure(_settings.Model, _settings.Integrator, _settings.FixedStep, _simulation.Events, _settings.Bounce, maxFrameDelta);
-            flight.Launch(LaunchState());
+            flight.Configure(settings.Model, settings.Integrator, settings.FixedStep, _simulation.Events, settings.Bounce, maxFrameDelta);
+            flight.Launch(start);
+            return true;
         }
 
-        /// <summary>The launch state from the inspector fields, in Unity's (= the library's) coordinates.</summary>
+        /// <summary>
+        /// The swing from the inspector's swing fields: a <see cref="RacketSwing"/> meeting the ball at the serving
+        /// position, the ball arriving with the incoming velocity and topspin.
+        /// </summary>
+        /// <exception cref="ArgumentException">A swing field is outside its range or not finite; the message names it.</exception>
+        public TennisSwing Swing()
+        {
+            double acor = impactPoint == StringBedPoint.Tip ? RacketSwing.TipRestitution
+                : impactPoint == StringBedPoint.Throat ? RacketSwing.ThroatRestitution
+                : RacketSwing.CentreRestitution;
+            var racket = new RacketSwing(racketSpeed, pathElevation, faceTilt, acor, swingAzimuth, faceTurn);
+            return new TennisSwing(
+                "inspector swing", UnityFrame.ToLibrary(servePosition), UnityFrame.ToLibrary(incomingVelocity), incomingTopspinRpm,
+                racket, TargetArea.FarDeuceServiceBox);
+        }
+
+        /// <summary>The launch state from the inspector's launch fields (used when launchBy = Launch), in Unity's (= the library's) coordinates.</summary>
         public FlightState LaunchState()
         {
             Vector3d velocity = new Vector3d(front, top, left);

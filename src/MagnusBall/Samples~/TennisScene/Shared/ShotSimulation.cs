@@ -278,7 +278,7 @@ namespace MagnusBall.Samples.TennisScene
                 Settings.Model, Settings.Integrator, Settings.FixedStep, Events.Ground!.Value, MaxFlightSeconds, minimumElevationDegrees);
             var aim = new SwingAim(solver, Settings.Ball);
             var target = new Vector3d(x, 0, z) + TennisCourt.Up * Settings.Ball.Radius;
-            RacketAim result = aim.RacketFaceToReach(swing.Swing, TennisSwing.Frame, swing.Start, swing.IncomingVelocity, swing.IncomingSpin, target);
+            SwingSolution<RacketSwing> result = aim.RacketFaceToReach(swing.Swing, TennisSwing.Frame, swing.Start, swing.IncomingVelocity, swing.IncomingSpin, target);
             return result.IsSolved ? swing.WithSwing(result.Swing) : null;
         }
 

@@ -1,0 +1,171 @@
+using System;
+using MagnusBall.Contact;
+using MagnusBall.Contact.Swings;
+using MagnusBall.Queries;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Contact
+{
+    /// <summary>
+    /// The published checks of docs/impacts.md that the first version of the helpers did not meet: the 7-iron's
+    /// ball speed (now a two-sided check with a sourced iron head mass and COR), the driver's tour spin (out of
+    /// reach of the rigid contact: shown, not tuned), and the hand-held racket's spin loss (which case the model is,
+    /// and what it gives in each regime).
+    /// </summary>
+    [TestFixture]
+    public class PublishedImpactChecksTests
+    {
+        private const double Mph = 0.44704;
+
+        // The golf ball of the golf preset (src/MagnusBall/Runtime/Presets/SportPresets.cs).
+        private static readonly Ball Golf = new Ball(0.04593, 0.021335, Ball.SolidSphereInertiaFactor);
+        private static readonly LaunchFrame ZUp = new LaunchFrame(Vector3d.UnitZ, Vector3d.UnitX);
+
+        /// <summary>A 7-iron head, kg: Maltby's standard 5-iron head of 254 g plus 7 g per club (ralphmaltby.com, "weight parameters for club head").</summary>
+        private const double SevenIronHeadMass = 0.268;
+
+        [TestCase(0.76)]
+        [TestCase(0.77)]
+        public void SevenIron_TourAverage_BallSpeed(double restitution)
+        {
+            // TrackMan PGA Tour averages (older table, docs/references.md 5a): 7-iron, 90 mph club, attack -4.3 deg,
+            // 120 mph ball, 16.3 deg launch, 7097 rpm. Iron COR: "about .760" for most irons (Langmead 2007, PGA
+            // professional) and "in the area of 0.77" for cast irons (Wishon, via bobsailergolf 2011): both ends tested.
+            // The dynamic loft is not published: it is the loft that gives the published launch angle.
+            double loft = LoftForLaunch(90 * Mph, -4.3, SevenIronHeadMass, restitution, 16.3);
+            SwingLaunch l = new ClubSwing(90 * Mph, loft, -4.3, headMass: SevenIronHeadMass, restitution: restitution).Hit(Golf, ZUp, Vector3d.Zero);
+            TestContext.Out.WriteLine($"7-iron e {restitution}: loft {loft:F2} deg -> {l.Speed / Mph:F2} mph, launch {l.ElevationDegrees:F2} deg, {l.SpinRpm:F0} rpm");
+            // Tolerance, an error budget of the inputs: the head 261-275 g (one club's 7 g either way: 0.8 %), the COR
+            // 0.76 vs 0.77 (0.6 %), the 120 mph rounded to the mph (0.4 %), and the tangential restitution the helper
+            // leaves at 0: the published spin (7097 rpm) is matched with e_x = 0.26 at the published launch, which takes
+            // the ball speed 1.2 % lower (SevenIron_PublishedLaunchAndSpin_AreMatchedWithATangentialRestitution). 3 % in all.
+            Assert.That(l.Speed / Mph, Is.EqualTo(120).Within(0.03 * 120));
+        }
+
+        [Test]
+        public void SevenIron_PublishedLaunchAndSpin_AreMatchedWithATangentialRestitution()
+        {
+            // The rigid contact with e_x = 0 (the ball leaves rolling on the face) gives 5286 rpm at the published 16.3 deg
+            // launch, 26 % under the 7097 rpm measured. Cross's grip recoil e_x > 0 raises the spin at a given launch: solve
+            // e_x and the loft for both published numbers at once and report them (docs/impacts.md); e_x must come out in
+            // Cross's range [0, 1] for the law to explain the iron's spin.
+            const double e = 0.765;
+            double lo = 0, hi = 1;
+            for (int i = 0; i < 100 && hi - lo > 1e-9; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (HitWithRecoil(90 * Mph, LoftForLaunch(90 * Mph, -4.3, SevenIronHeadMass, e, 16.3, mid), -4.3, SevenIronHeadMass, e, mid).SpinRpm < 7097)
+                {
+                    lo = mid;
+                }
+                else
+                {
+                    hi = mid;
+                }
+            }
+
+            double ex = 0.5 * (lo + hi);
+            double loft = LoftForLaunch(90 * Mph, -4.3, SevenIronHeadMass, e, 16.3, ex);
+            SwingLaunch l = HitWithRecoil(90 * Mph, loft, -4.3, SevenIronHeadMass, e, ex);
+            TestContext.Out.WriteLine($"7-iron: e_x {ex:F3}, loft {loft:F2} deg -> {l.Speed / Mph:F2} mph, {l.ElevationDegrees:F2} deg, {l.SpinRpm:F0} rpm");
+            Assert.That(ex, Is.GreaterThan(0.05).And.LessThan(1)); // inside Cross's range, not at its edge
+            Assert.That(l.SpinRpm, Is.EqualTo(7097).Within(1));   // the bisection's resolution
+            // With the spin matched, the speed is a check again: the same 3 % budget without its e_x share (1.8 %).
+            Assert.That(l.Speed / Mph, Is.EqualTo(120).Within(0.018 * 120));
+        }
+
+        [Test]
+        public void Driver_TourSpin_IsOutOfReachOfTheRigidContact_AtThePublishedLaunch()
+        {
+            // USGA/R&A 2015 PGA Tour drives: 113.2 mph club, 10.8 deg launch, 2599 rpm (attack -1.3 deg, TrackMan). At the
+            // published launch the rigid contact gives 3886 rpm (+50 %). Neither contact parameter brings it down:
+            // friction above the grip threshold changes nothing (the ball grips and leaves rolling), and the grip
+            // recoil e_x in Cross's range [0, 1] only raises the spin at a given launch. So the gap is not a coefficient
+            // to tune: docs/impacts.md names what the point-mass head leaves out.
+            double previous = 0;
+            foreach (double ex in new[] { 0.0, 0.25, 0.5, 0.75, 1.0 })
+            {
+                double loft = LoftForLaunch(113.2 * Mph, -1.3, ClubSwing.DriverHeadMass, ClubSwing.UsgaLimitRestitution, 10.8, ex);
+                double rpm = HitWithRecoil(113.2 * Mph, loft, -1.3, ClubSwing.DriverHeadMass, ClubSwing.UsgaLimitRestitution, ex).SpinRpm;
+                TestContext.Out.WriteLine($"driver e_x {ex}: loft {loft:F2} deg, {rpm:F0} rpm");
+                Assert.That(rpm, Is.GreaterThan(previous));
+                Assert.That(rpm, Is.GreaterThan(1.4 * 2599), "at least 40 % over the tour average whatever e_x");
+                previous = rpm;
+            }
+
+            double gripLoft = LoftForLaunch(113.2 * Mph, -1.3, ClubSwing.DriverHeadMass, ClubSwing.UsgaLimitRestitution, 10.8);
+            SwingLaunch reference = new ClubSwing(113.2 * Mph, gripLoft, -1.3).Hit(Golf, ZUp, Vector3d.Zero);
+            foreach (double mu in new[] { 0.05, 0.1, 0.4, 1.0 })
+            {
+                SwingLaunch l = new ClubSwing(113.2 * Mph, gripLoft, -1.3, friction: mu).Hit(Golf, ZUp, Vector3d.Zero);
+                Assert.That(l.Impact.Regime, Is.EqualTo(BounceRegime.Grip), $"mu {mu}");
+                Assert.That(l.SpinRpm, Is.EqualTo(reference.SpinRpm).Within(1e-9 * reference.SpinRpm), $"mu {mu}");
+            }
+
+            // Only a friction below the grip threshold (about 0.048 here, a sliding ball) would lower it, and 2599 rpm
+            // needs mu about 0.032: far under any measured ball-face friction.
+            SwingLaunch slipping = new ClubSwing(113.2 * Mph, gripLoft, -1.3, friction: 0.032).Hit(Golf, ZUp, Vector3d.Zero);
+            TestContext.Out.WriteLine($"driver mu 0.032: {slipping.SpinRpm:F0} rpm, {slipping.Impact.Regime}");
+            Assert.That(slipping.Impact.Regime, Is.EqualTo(BounceRegime.Slide));
+            Assert.That(slipping.SpinRpm, Is.EqualTo(2599).Within(150));
+        }
+
+        [TestCase(RacketSwing.CentreRestitution, 0.911, 0.784)]
+        [TestCase(RacketSwing.TipRestitution, 0.805, 0.595)]
+        [TestCase(RacketSwing.ThroatRestitution, 0.924, 0.811)]
+        public void HandHeldRacket_SpinLoss_DependsOnTheRegime_AndTheImpactPoint(double acor, double gripRatio, double slideRatio)
+        {
+            // Which case the model is: a hand-held racket is a free body (M = m (1 + ACOR)/(e - ACOR) at the impact point,
+            // the same along the face), a clamped one is immovable. A ball thrown at a racket at rest (as in the
+            // laboratory): gripping impacts (20-40 deg from the normal) lose spin by the closed form
+            // 1 - (1 + alpha)/(1 + alpha (1 + m/M)); sliding ones (70-80 deg) by the share of the normal impulse the
+            // free racket takes, 1 - 1/(1 + m/M). The ratios are printed to 3 digits in docs/impacts.md.
+            double kappa = Ball.Tennis.Mass / new RacketSwing(1, 0, 0, acor).EffectiveMass(Ball.Tennis);
+            double alpha = Ball.Tennis.InertiaFactor;
+            foreach ((double angle, bool grips) in new[] { (20.0, true), (40.0, true), (70.0, false), (80.0, false) })
+            {
+                double a = angle * Math.PI / 180;
+                var v = new Vector3d(-20 * Math.Cos(a), 0, -20 * Math.Sin(a));
+                SwingLaunch held = new RacketSwing(1e-9, 0, 0, acor).Hit(Ball.Tennis, ZUp, Vector3d.Zero, v, Vector3d.Zero);
+                SwingLaunch clamped = new RacketSwing(1e-9, 0, 0, acor, clamped: true).Hit(Ball.Tennis, ZUp, Vector3d.Zero, v, Vector3d.Zero);
+                BounceRegime regime = grips ? BounceRegime.Grip : BounceRegime.Slide;
+                Assert.That(held.Impact.Regime, Is.EqualTo(regime), $"{angle} deg");
+                Assert.That(clamped.Impact.Regime, Is.EqualTo(regime), $"{angle} deg");
+                double ratio = held.SpinRate / clamped.SpinRate;
+                double expected = grips ? (1 + alpha) / (1 + alpha * (1 + kappa)) : 1 / (1 + kappa);
+                // The closed forms, to rounding (the racket's 1e-9 m/s speed enters at 1e-10 of the ball's 20 m/s).
+                Assert.That(ratio, Is.EqualTo(expected).Within(1e-8), $"{angle} deg");
+                Assert.That(ratio, Is.EqualTo(grips ? gripRatio : slideRatio).Within(5e-4), $"{angle} deg: the ratio docs/impacts.md prints");
+            }
+        }
+
+        private static SwingLaunch HitWithRecoil(double speed, double loft, double attack, double headMass, double e, double tangentialRestitution)
+        {
+            // ClubSwing's impact with Cross's grip recoil e_x added (the helper itself has e_x = 0).
+            var club = new ClubSwing(speed, loft, attack, headMass: headMass, restitution: e);
+            var body = ImpactBody.Moving(club.PathDirection(ZUp) * speed, club.FaceNormal(ZUp), headMass);
+            var contact = new ContactProperties(e, club.Friction, tangentialRestitution);
+            return new SwingLaunch(Impact.Resolve(Golf, Vector3d.Zero, Vector3d.Zero, Vector3d.Zero, body, contact), ZUp);
+        }
+
+        private static double LoftForLaunch(double speed, double attack, double headMass, double e, double launchDegrees, double tangentialRestitution = 0)
+        {
+            // The launch angle rises with the loft: bisection to 1e-10 deg (at most 40 halvings of 65 deg).
+            double lo = -5, hi = 60;
+            for (int i = 0; i < 60 && hi - lo > 1e-10; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (HitWithRecoil(speed, mid, attack, headMass, e, tangentialRestitution).ElevationDegrees < launchDegrees)
+                {
+                    lo = mid;
+                }
+                else
+                {
+                    hi = mid;
+                }
+            }
+
+            return 0.5 * (lo + hi);
+        }
+    }
+}
