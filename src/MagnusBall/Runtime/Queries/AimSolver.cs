@@ -12,6 +12,13 @@ namespace MagnusBall.Queries
 
         /// <summary>No launch within the solver's limits does it; nothing was thrown and nothing diverged.</summary>
         Unreachable = 1,
+
+        /// <summary>
+        /// The solve stopped at its work cap (<see cref="AimSolver.MaxEvaluationsPerSolve"/> model evaluations plus steps) before it
+        /// could decide; the launch fields hold where it was. Fly shorter trials (a smaller maximumFlightTime), a larger
+        /// step or a coarser scan.
+        /// </summary>
+        WorkLimitReached = 2,
     }
 
     /// <summary>
@@ -127,9 +134,20 @@ namespace MagnusBall.Queries
         /// <summary>Speed is refined to this tolerance, m/s.</summary>
         public const double SpeedTolerance = 1e-8;
 
+        /// <summary>
+        /// The work cap of one solve: 4,000,000 model evaluations plus steps over all its trial flights (a step's own work,
+        /// its dense output and event scan, costs about one evaluation; a default solve of a tennis shot makes about 10^5;
+        /// 1-4 s on one core). Past it the remaining trials are not flown and the solve returns
+        /// <see cref="AimStatus.WorkLimitReached"/>: it bounds a huge maximumFlightTime against a small step, the finest
+        /// scans and trials that <see cref="StableIntegrator"/> splits into thousands of substeps.
+        /// </summary>
+        public const long MaxEvaluationsPerSolve = 4_000_000;
+
         private readonly FlightStepper _stepper;
         private readonly Plane[] _trialPlane = new Plane[1]; // the plane of the current trial, watched by _stepper's event set
         private int _simulations;
+        private long _evaluations;       // model evaluations plus steps of the solve so far (the finished trials)
+        private bool _workLimitReached;  // the solve reached MaxEvaluationsPerSolve
 
         /// <summary>Creates a solver.</summary>
         /// <param name="model">The flight model; its gravity must be non-zero (it defines up).</param>
@@ -237,8 +255,10 @@ namespace MagnusBall.Queries
         /// <param name="height">Height above the ground the ball's centre must pass at, m; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
-        public AimSolution MinimumElevationToClear(
-            in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
+        public AimSolution MinimumElevationToClear(in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height) =>
+            Finish(MinimumElevationToClearCore(position, speed, azimuthRadians, spin, plane, height));
+
+        private AimSolution MinimumElevationToClearCore(in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
         {
             Require.Finite(position, nameof(position));
             Require.Positive(speed, nameof(speed));
@@ -264,7 +284,7 @@ namespace MagnusBall.Queries
             }
 
             var frame = new LaunchFrame(up, plane.Normal);
-            _simulations = 0;
+            BeginSolve();
             var margin = new ElevationMargin(this, position, frame, speed, azimuthRadians, spin, plane, Ground.Point + Ground.Normal * height, false);
             return SolveElevation(ref margin, position, frame, speed, azimuthRadians, spin, double.NaN, out _);
         }
@@ -282,13 +302,16 @@ namespace MagnusBall.Queries
         /// <param name="azimuthRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0)
+        public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0) =>
+            Finish(ElevationToReachCore(position, speed, spin, target, azimuthRadians));
+
+        private AimSolution ElevationToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
+            BeginSolve();
             var margin = new ElevationMargin(this, position, frame, speed, azimuthRadians, spin, plane, target, true);
             return SolveElevation(ref margin, position, frame, speed, azimuthRadians, spin, double.NaN, out _);
         }
@@ -305,14 +328,17 @@ namespace MagnusBall.Queries
         /// <param name="maximumAzimuthDegrees">The largest azimuth turn tried either way, degrees; in (0, 89].</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45)
+        public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45) =>
+            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees));
+
+        private AimSolution AnglesToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
             Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
             TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
+            BeginSolve();
 
             var lateral = new AzimuthMargin(this, position, frame, speed, spin, plane, target);
             double a0 = 0;
@@ -392,13 +418,16 @@ namespace MagnusBall.Queries
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
+        public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target) =>
+            Finish(SpeedToReachCore(position, elevationRadians, azimuthRadians, spin, target));
+
+        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
         {
             CheckTarget(position, target);
             Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             TargetFrame(position, target, out LaunchFrame frame, out Plane plane);
-            _simulations = 0;
+            BeginSolve();
             var margin = new SpeedMargin(this, position, frame, elevationRadians, azimuthRadians, spin, plane, target);
 
             // Scan upward in speed: 1% of the maximum, then 1% steps.
@@ -436,6 +465,19 @@ namespace MagnusBall.Queries
             return new AimSolution(
                 AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _simulations);
         }
+
+        private void BeginSolve()
+        {
+            _simulations = 0;
+            _evaluations = 0;
+            _workLimitReached = false;
+        }
+
+        // A solve that reached its work cap says so, whatever its search ended on.
+        private AimSolution Finish(in AimSolution s) =>
+            _workLimitReached
+                ? new AimSolution(AimStatus.WorkLimitReached, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, s.Simulations)
+                : s;
 
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _simulations);
@@ -599,15 +641,36 @@ namespace MagnusBall.Queries
         /// </summary>
         private bool Shoot(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
         {
+            if (_workLimitReached)
+            {
+                // Past the work cap: no more trials are flown (each fails), so the solve ends quickly.
+                arrival = launch;
+                landed = false;
+                return false;
+            }
+
+            bool arrived = Fly(launch, plane, out arrival, out landed);
+            _evaluations += _stepper.DerivativeEvaluations + _stepper.StepCount;
+            return arrived;
+        }
+
+        private bool Fly(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        {
             _simulations++;
             FlightStepper stepper = _stepper;
             _trialPlane[0] = plane;
             stepper.Reset(launch);
             double endTime = launch.Time + MaximumFlightTime;
-            // Bounded: each pass advances the clock by a step, at most MaximumFlightTime / Step + 1 passes; the last
-            // step is trimmed to the time limit (the one end-time rule).
+            // Bounded: each pass advances the clock by a step, at most MaximumFlightTime / Step + 1 passes, and none past
+            // the solve's work cap; the last step is trimmed to the time limit (the one end-time rule).
             while (true)
             {
+                if (_evaluations + stepper.DerivativeEvaluations + stepper.StepCount >= MaxEvaluationsPerSolve)
+                {
+                    _workLimitReached = true; // this trial fails; the solve returns WorkLimitReached
+                    break;
+                }
+
                 double h = FlightStepper.StepToward(stepper.State.Time, endTime, Step, out bool last);
                 StepOutcome outcome = stepper.TryStep(h, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)

@@ -1,0 +1,121 @@
+using System;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Contact;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+using MagnusBall.Presets;
+using MagnusBall.Queries;
+using MagnusBall.Stepping;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Fuzz
+{
+    /// <summary>
+    /// The defects the stateful fuzz (StatefulFuzz) found, one reproduction each (every one failed on the code before
+    /// its fix): calls that ran unbounded, threw from inside a step and left the object changed, or left NaN behind.
+    /// </summary>
+    [TestFixture]
+    public class StatefulFuzzFindingsTests
+    {
+        private static FlightModel Tennis => SportPresets.Tennis.CreateModel(Air.SeaLevel, Gravity.ZUp);
+
+        [Test]
+        public void Driver_WithATinyFixedStep_StopsAtTheWorkCap_InsteadOfRunningForMinutes()
+        {
+            // Fixed step 1e-9 s: the default step cap is ceil(0.25 / 1e-9) + 1 = 250,000,001 steps per clamped frame
+            // (minutes of work in one Advance). The work cap stops the call and drops the rest of the frame time.
+            FlightModel model = Tennis;
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 5), Vector3d.Zero);
+            var driver = new FixedStepDriver(model, RungeKutta4.Instance, 1e-9, start);
+            AdvanceResult r = driver.Advance(0.25);
+            long work = driver.DerivativeEvaluations + driver.TotalSteps;
+            Assert.That(work, Is.GreaterThanOrEqualTo(FixedStepDriver.MaxEvaluationsPerAdvance));
+            // One RK4 step (4 evaluations and the step itself) past the cap at most.
+            Assert.That(work, Is.LessThanOrEqualTo(FixedStepDriver.MaxEvaluationsPerAdvance + 1 + 5));
+            Assert.That(r.StepsTaken, Is.EqualTo(driver.TotalSteps));
+            Assert.That(r.DroppedSeconds, Is.GreaterThan(0.2), "the frame time not simulated is reported");
+            Assert.That(driver.Accumulator, Is.LessThan(driver.FixedStep));
+        }
+
+        [Test]
+        public void Predictor_WithAHugeDuration_StopsAtTheWorkCap()
+        {
+            // No gravity, so nothing lands: maxDuration 1e300 s at 1/240 s used to loop for ever.
+            FlightModel model = Tennis.WithGravity(Vector3d.Zero);
+            var predictor = new TrajectoryPredictor(model, ExplicitEuler.Instance, 1.0 / 240, new FlightEventSet(Vector3d.UnitZ));
+            var start = new FlightState(Vector3d.Zero, new Vector3d(10, 0, 0), Vector3d.Zero);
+            Prediction p = predictor.Predict(start, 1e300, Span<Vector3d>.Empty);
+            Assert.That(p.WorkLimitReached, Is.True);
+            Assert.That(p.Stopped || p.Diverged || p.TimeCannotAdvance, Is.False);
+            // Euler: one evaluation and one step a step, after the start's evaluation; so the cap is passed by one at most.
+            Assert.That(p.DerivativeEvaluations + p.Steps, Is.InRange(TrajectoryPredictor.MaxEvaluationsPerPrediction, TrajectoryPredictor.MaxEvaluationsPerPrediction + 1));
+            Assert.That(p.EndState.IsFinite, Is.True);
+        }
+
+        [Test]
+        public void Predictor_WhoseDurationCannotAdvanceTheStartTime_SaysSo_InsteadOfThrowing()
+        {
+            // start 1e143 s, maxDuration 5e-324 s: endTime == start time, so the last step was 0 and TryStep threw
+            // "step must be > 0; got 0" after the buffer had been written.
+            var predictor = new TrajectoryPredictor(Tennis, RungeKutta4.Instance, 1.0 / 240);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 5), Vector3d.Zero, 1.21e143);
+            Prediction p = predictor.Predict(start, double.Epsilon, Span<Vector3d>.Empty);
+            Assert.That(p.TimeCannotAdvance, Is.True);
+            Assert.That(p.EndState, Is.EqualTo(start));
+        }
+
+        [Test]
+        public void Aim_WithAHugeTrialTime_StopsAtTheWorkCap()
+        {
+            // maximumFlightTime 1e300 s and a launch from 1e12 m up toward a target 1 km away, which drag keeps it from
+            // reaching: each trial falls at the terminal speed for about 5e10 s (1e13 steps); the solve never returned.
+            var aim = new AimSolver(Tennis, SemiImplicitEuler.Instance, 1.0 / 240, Plane.Ground(Tennis), maximumFlightTime: 1e300);
+            AimSolution s = aim.ElevationToReach(new Vector3d(0, 0, 1e12), 30, default, new Vector3d(1000, 0, 0));
+            Assert.That(s.Status, Is.EqualTo(AimStatus.WorkLimitReached));
+            Assert.That(s.IsSolved, Is.False);
+        }
+
+        [Test]
+        public void Stepper_RollThatOverflows_IsRefused_AndChangesNothing()
+        {
+            // Air of 1e300 kg/m^3: a ball rolling at 1 m/s decelerates at 1e298 m/s^2 (finite), so the reset is accepted, but
+            // the roll's predicted speed of 4e295 m/s overflows the drag. The step threw ArgumentException from inside (the
+            // Hermite of the roll) and left the stepper half-stepped; now it is refused as a divergence.
+            // On a slope without rolling resistance, so the ball cannot come to rest inside the step.
+            FlightModel model = SportPresets.Soccer.CreateModel(new Air(1e300), Gravity.ZUp);
+            Vector3d normal = new Vector3d(0.5, 0, 1).NormalizedOrZero(), downhill = new Vector3d(1, 0, -0.5).NormalizedOrZero();
+            var contact = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, normal), rollingResistance: 0);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, contact);
+            stepper.Reset(new FlightState(normal * model.Ball.Radius, downhill, Vector3d.Zero));
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+            FlightState before = stepper.State;
+            StateDerivative derivative = stepper.Derivative;
+            long evaluations = stepper.DerivativeEvaluations;
+
+            StepOutcome outcome = stepper.TryStep(1.0 / 240);
+            Assert.That(outcome, Is.EqualTo(StepOutcome.Diverged));
+            Assert.That(stepper.State, Is.EqualTo(before));
+            Assert.That(stepper.Derivative.Acceleration, Is.EqualTo(derivative.Acceleration));
+            Assert.That(stepper.DerivativeEvaluations, Is.EqualTo(evaluations));
+            Assert.That(stepper.StepCount, Is.Zero);
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+        }
+
+        [Test]
+        public void Reset_RefusedOnTheSurface_KeepsTheCounters()
+        {
+            // Reset zeroed the counters before it found the roll it starts non-finite, so a refused Reset changed them.
+            var air = new Air(1e300);
+            FlightModel model = SportPresets.Soccer.CreateModel(air, Gravity.ZUp);
+            var contact = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ));
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, contact);
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(1, 0, 0), Vector3d.Zero));
+            long evaluations = stepper.DerivativeEvaluations;
+            var onTheSurface = new FlightState(new Vector3d(0, 0, model.Ball.Radius), new Vector3d(1e200, 0, 0), new Vector3d(0, 1e300, 0));
+            Assert.Throws<ArgumentException>(() => stepper.Reset(onTheSurface));
+            Assert.That(stepper.DerivativeEvaluations, Is.EqualTo(evaluations));
+            Assert.That(stepper.State.Position, Is.EqualTo(new Vector3d(0, 0, 1)));
+        }
+
+    }
+}
