@@ -796,7 +796,16 @@ namespace MagnusBall.Fuzz
         {
             bool moderate = _random.Next(2) == 0;
             Vector3d normal = _random.Next(3) == 0 ? Vector(moderate) : (_random.Next(2) == 0 ? Vector3d.UnitZ : Vector3d.UnitY);
-            return new Plane(_random.Next(2) == 0 ? Vector3d.Zero : Vector(moderate), normal);
+            Vector3d point = _random.Next(2) == 0 ? Vector3d.Zero : Vector(moderate);
+            try
+            {
+                return new Plane(point, normal);
+            }
+            catch (ArgumentException e) when (!string.IsNullOrEmpty(e.ParamName))
+            {
+                // A zero (or vanishing) random normal, refused by Plane's own check: use up instead.
+                return new Plane(point, Vector3d.UnitZ);
+            }
         }
 
         private FlightState State(bool moderate)

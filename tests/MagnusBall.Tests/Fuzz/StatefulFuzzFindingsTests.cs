@@ -102,6 +102,34 @@ namespace MagnusBall.Tests.Fuzz
         }
 
         [Test]
+        public void Driver_WhoseDenseOutputOverflowsAtAnEvent_RefusesTheStep_InsteadOfThrowing()
+        {
+            // From the stateful fuzz (seed 15): a ball at y = 1.8e308 m whose step's cubic Hermite overflows at the apex
+            // inside it. Cutting the step at the event threw ArgumentException ("endDerivative must have finite ...") from
+            // inside Advance, after the accumulator had changed.
+            SportPreset golf = null!;
+            foreach (SportPreset p in SportPresets.All)
+            {
+                if (p.Drag is GolfSpinReynoldsDrag && p.Ball.Mass == 0.04593 && p.Ball.Radius == 0.021335)
+                {
+                    golf = p;
+                }
+            }
+
+            Assert.That(golf, Is.Not.Null);
+            FlightModel model = golf.CreateModel(new Air(0, new Vector3d(0, 4.9774135023774194E+269, -3.9118532669986097E+198)), Gravity.ZUp);
+            var start = new FlightState(
+                new Vector3d(-0.0, 1.7976931348623157E+308, 5E-324),
+                new Vector3d(-3.3255943605219184E+198, 63524072356754.03, -1.167117268247713E-107),
+                new Vector3d(-0.0, 1.5913362432127908E+49, -5.033950095892513E+300));
+            var driver = new FixedStepDriver(model, RungeKutta4.Instance, 2.1360412232872894E-146, start);
+            AdvanceResult r = default;
+            Assert.DoesNotThrow(() => r = driver.Advance(0.019795278841534297));
+            Assert.That(driver.State.IsFinite, Is.True);
+            TestContext.Out.WriteLine($"{r}; state {driver.State}");
+        }
+
+        [Test]
         public void Reset_RefusedOnTheSurface_KeepsTheCounters()
         {
             // Reset zeroed the counters before it found the roll it starts non-finite, so a refused Reset changed them.

@@ -421,8 +421,7 @@ namespace MagnusBall.Flight
             }
 
             var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative);
-            HandlePiece(segment, segment, next, nextDerivative, piece, stopAt);
-            return true;
+            return HandlePiece(segment, segment, next, nextDerivative, piece, stopAt);
         }
 
         // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end.
@@ -464,19 +463,27 @@ namespace MagnusBall.Flight
             endTime = result.End.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
             var hermite = new HermiteSegment(result.Start, result.StartDerivative, result.End, result.EndDerivative);
-            HandlePiece(result, hermite, result.End, result.EndDerivative, piece, stopAt);
-            return true;
+            return HandlePiece(result, hermite, result.End, result.EndDerivative, piece, stopAt);
         }
 
         // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an
         // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
-        // Hermite, kept for StateAt.
-        private void HandlePiece<TDense>(
+        // Hermite, kept for StateAt. False (the step is refused) when the dense output overflows at an event: an extreme but
+        // finite step whose interpolant is not finite between its ends.
+        private bool HandlePiece<TDense>(
             in TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
             int count = EventSet == null ? 0 : EventSet.Scan(dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
+            for (int i = 0; i < count; i++)
+            {
+                if (!found[i].State.IsFinite)
+                {
+                    return false;
+                }
+            }
+
             double contactTime = double.PositiveInfinity;
             // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
             if (Contact != null && piece < MaxPiecesPerStep - 1 &&
@@ -497,12 +504,16 @@ namespace MagnusBall.Flight
             if (stopIndex >= 0)
             {
                 FlightEvent stop = found[stopIndex];
+                if (!hermite.TryUntil(stop.Time, out HermiteSegment cut))
+                {
+                    return false;
+                }
+
                 Record(found.Slice(0, happen));
-                HermiteSegment cut = hermite.Until(stop.Time);
                 PushSegment(cut);
                 // The flight is over: its last derivative is the dense output's slope at the stop (no evaluation).
                 Stop(stop, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
-                return;
+                return true;
             }
 
             count = before;
@@ -512,20 +523,30 @@ namespace MagnusBall.Flight
                 PushSegment(hermite);
                 _now.State = end;
                 _now.Derivative = endDerivative;
-                return;
+                return true;
             }
 
-            Bounce(dense, hermite, contactTime, piece);
+            return Bounce(dense, hermite, contactTime, piece);
         }
 
-        private void Bounce<TDense>(in TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+        private bool Bounce<TDense>(in TDense dense, in HermiteSegment hermite, double contactTime, int piece)
             where TDense : struct, IDenseOutput
         {
             GroundContact contact = Contact!;
             FlightState touching = dense.StateAt(contactTime);
             Vector3d centre = _contactPlane.Project(touching.Position);
-            PushSegment(hermite.Until(contactTime));
+            if (!touching.IsFinite || !centre.IsFinite || !hermite.TryUntil(contactTime, out HermiteSegment cut))
+            {
+                return false;
+            }
+
             BounceOutcome outcome = contact.Bounce.Bounce(Model.Ball, _normal, touching.Velocity, touching.AngularVelocity);
+            if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
+            {
+                return false; // the bounce law overflowed on an extreme impact
+            }
+
+            PushSegment(cut);
             double outgoingNormalSpeed = Vector3d.Dot(outcome.Velocity, _normal);
             // Rest only where gravity holds the ball on the surface (a floor or a slope, not a wall or a ceiling).
             bool roll = _gravityHolds &&
@@ -537,12 +558,13 @@ namespace MagnusBall.Flight
             if (roll)
             {
                 StartRolling(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
-                return;
+                return true;
             }
 
             _now.State = leaving;
             _now.Derivative = Model.Derivative(leaving);
             _now.Evaluations++;
+            return true;
         }
 
         private void Stop(in FlightEvent stop, in StateDerivative slope)

@@ -135,13 +135,13 @@ namespace MagnusBall.Queries
         public const double SpeedTolerance = 1e-8;
 
         /// <summary>
-        /// The work cap of one solve: 4,000,000 model evaluations plus steps over all its trial flights (a step's own work,
+        /// The work cap of one solve: 1,000,000 model evaluations plus steps over all its trial flights (a step's own work,
         /// its dense output and event scan, costs about one evaluation; a default solve of a tennis shot makes about 10^5;
-        /// 1-4 s on one core). Past it the remaining trials are not flown and the solve returns
+        /// up to 4 s on a loaded core, docs/robustness.md). Past it the remaining trials are not flown and the solve returns
         /// <see cref="AimStatus.WorkLimitReached"/>: it bounds a huge maximumFlightTime against a small step, the finest
         /// scans and trials that <see cref="StableIntegrator"/> splits into thousands of substeps.
         /// </summary>
-        public const long MaxEvaluationsPerSolve = 4_000_000;
+        public const long MaxEvaluationsPerSolve = 1_000_000;
 
         private readonly FlightStepper _stepper;
         private readonly Plane[] _trialPlane = new Plane[1]; // the plane of the current trial, watched by _stepper's event set

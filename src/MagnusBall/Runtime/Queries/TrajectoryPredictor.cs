@@ -103,12 +103,13 @@ namespace MagnusBall.Queries
     {
         /// <summary>
         /// The work cap of one prediction: after the step that brings its model evaluations plus its steps to this many
-        /// (4,000,000; a step's own work, its dense output and event scan, costs about one evaluation: 800,000 RK4 steps,
-        /// nearly an hour of flight at 1/240 s, or 2,000,000 Euler steps; 1-4 s on one core), the run ends with
+        /// (1,000,000; a step's own work, its dense output and event scan, costs about one evaluation: 200,000 RK4 steps,
+        /// 14 minutes of flight at 1/240 s, or 500,000 Euler steps; measured up to 4 s on a loaded core with the golf laws,
+        /// docs/robustness.md), the run ends with
         /// <see cref="Prediction.WorkLimitReached"/>. It bounds a huge maxDuration against a small step, and a step that
         /// <see cref="StableIntegrator"/> splits into thousands of substeps.
         /// </summary>
-        public const long MaxEvaluationsPerPrediction = 4_000_000;
+        public const long MaxEvaluationsPerPrediction = 1_000_000;
 
         private readonly FlightStepper _stepper;
 

@@ -43,14 +43,14 @@ namespace MagnusBall.Stepping
 
         /// <summary>
         /// The work cap of one <see cref="Advance(double, Span{FlightEvent})"/> call: once its steps have made this many
-        /// model evaluations plus steps (1,000,000; a step's own work, its dense output and event scan, costs about one
-        /// evaluation; about 0.2-1 s on one core), it takes no more steps and drops the frame time left, as at
+        /// model evaluations plus steps (250,000; a step's own work, its dense output and event scan, costs about one
+        /// evaluation; up to 1 s on a loaded core), it takes no more steps and drops the frame time left, as at
         /// <see cref="MaxStepsPerAdvance"/>. A game never meets it (RK4 at 1/240 s through a 0.25 s hitch makes 305); it bounds a tiny fixed step (1e-9 s: 2.5e8 steps in one clamped frame) and a step that
         /// <see cref="StableIntegrator"/> splits into thousands of substeps. A step in progress is finished, so a call can
         /// exceed it by one step's work (at most <see cref="FlightStepper.MaxPiecesPerStep"/> pieces of
         /// <see cref="StableStepping.MaximumSubsteps"/> substeps).
         /// </summary>
-        public const long MaxEvaluationsPerAdvance = 1_000_000;
+        public const long MaxEvaluationsPerAdvance = 250_000;
 
         private readonly FlightStepper _stepper;
         private readonly FlightEventKinds _stopAt;
