@@ -130,6 +130,36 @@ namespace MagnusBall.Tests.Fuzz
         }
 
         [Test]
+        public void GolfLift_AtAnOverflowingSpinParameter_IsItsLimit_NotNaN()
+        {
+            // From the stateful fuzz (seed 2026): the golf preset at |w| = 1.8e308 rad/s and a speed of 1e-109 m/s: the spin
+            // parameter |w| r / s overflows to +infinity, S / (S + 0.2539) was inf / inf = NaN, and the model's acceleration
+            // was NaN. The saturating factor's limit is 1.
+            FlightModel model = null!;
+            GolfSpinReynoldsLift lift = null!;
+            foreach (SportPreset p in SportPresets.All)
+            {
+                if (p.Lift is GolfSpinReynoldsLift golf)
+                {
+                    lift = golf;
+                    model = p.CreateModel(new Air(6.240362714510825), Vector3d.Zero);
+                }
+            }
+
+            Assert.That(lift, Is.Not.Null);
+            double atInfinity = lift.Evaluate(double.PositiveInfinity, 2e5);
+            Assert.That(atInfinity, Is.EqualTo(lift.Evaluate(double.MaxValue, 2e5)), "the limit, as at the largest finite S (S / (S + 0.2539) rounds to 1 there)");
+
+            var state = new FlightState(
+                new Vector3d(3.997233631240321E+282, 5.35699559137975E-259, 1.451156793303762E+243),
+                new Vector3d(-2.241030004338823E-110, 7.711936117884922E-109, 2.5149674322293E-120),
+                new Vector3d(-1.1588574467734387, 1.7976931348623157E+308, 2.3865263664784297E+36),
+                4.8182166465760504E-141);
+            Vector3d a = model.Derivative(state).Acceleration;
+            Assert.That(double.IsNaN(a.X) || double.IsNaN(a.Y) || double.IsNaN(a.Z), Is.False, a.ToString());
+        }
+
+        [Test]
         public void Reset_RefusedOnTheSurface_KeepsTheCounters()
         {
             // Reset zeroed the counters before it found the roll it starts non-finite, so a refused Reset changed them.

@@ -152,7 +152,9 @@ namespace MagnusBall.Aerodynamics
                 return 0.0;
             }
 
-            double spin = Saturation * spinParameter / (spinParameter + HalfSpin);
+            // S is +infinity when |w| r / s overflows (a finite spin at a vanishing speed): inf / inf would be NaN, and the
+            // limit of the saturating S / (S + S_half) is 1.
+            double spin = double.IsPositiveInfinity(spinParameter) ? Saturation : Saturation * spinParameter / (spinParameter + HalfSpin);
             // Re is held at 1 or more inside the power so a near-zero speed cannot make it overflow (q <= 1).
             double reynolds = PortableMath.Pow(ReferenceReynolds / Math.Max(reynoldsNumber, 1.0), ReynoldsExponent);
             double onset = 1.0 / (1.0 + PortableMath.Exp(-(reynoldsNumber - OnsetReynolds) / OnsetWidth));
