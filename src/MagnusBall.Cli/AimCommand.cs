@@ -203,7 +203,7 @@ namespace MagnusBall.Cli
                 {
                     w.WriteStartObject();
                     w.WriteString("name", request.Name);
-                    w.WriteString("status", s.IsSolved ? "solved" : "unreachable");
+                    w.WriteString("status", s.Status switch { AimStatus.Solved => "solved", AimStatus.WorkLimitReached => "work-limit-reached", _ => "unreachable" });
                     if (s.IsSolved)
                     {
                         w.WriteNumber("speed", s.Speed);

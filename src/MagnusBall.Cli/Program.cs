@@ -170,7 +170,7 @@ namespace MagnusBall.Cli
             }
 
             var recording = new Recording(csv && samples is null, counts);
-            var budget = new WorkBudget(ScenarioFlight.StepsPerFileLimit);
+            var budget = new WorkBudget(ScenarioFlight.EvaluationsPerFileLimit);
             var results = new List<FlightResult>();
             foreach (Scenario scenario in scenarios)
             {

@@ -67,12 +67,15 @@ namespace MagnusBall.Cli
     }
 
     /// <summary>
-    /// The work one scenario file may cost: integrator steps, with every substep of a substepping integrator
-    /// (stable-rk4) counted as a step. Shared by all the scenarios of a file, so no file can run unbounded.
+    /// The work one scenario file may cost, in model evaluations (calls of <see cref="FlightModel.Derivative"/>), shared
+    /// by all the scenarios of a file and by a second flight for the samples, so no file can run unbounded. A step is
+    /// charged before it is taken, at the integrator's evaluations per step times the substeps a substepping integrator
+    /// (stable-rk4) will take (as <see cref="StableIntegrator.SubstepCount"/> judges it at the start of the step: an upper
+    /// estimate), and each flight's start costs one.
     /// </summary>
     internal sealed class WorkBudget
     {
-        public WorkBudget(long steps) => Remaining = steps;
+        public WorkBudget(long evaluations) => Remaining = evaluations;
 
         public long Limit => Total + Remaining;
 
@@ -80,15 +83,15 @@ namespace MagnusBall.Cli
 
         public long Total { get; private set; }
 
-        public bool TrySpend(long steps)
+        public bool TrySpend(long evaluations)
         {
-            if (steps > Remaining)
+            if (evaluations > Remaining)
             {
                 return false;
             }
 
-            Remaining -= steps;
-            Total += steps;
+            Remaining -= evaluations;
+            Total += evaluations;
             return true;
         }
     }
@@ -110,14 +113,18 @@ namespace MagnusBall.Cli
         /// <summary>Most rows --csv without --samples prints for one scenario (one per step): 1,000,000.</summary>
         public const int MaxCsvRows = 1_000_000;
 
-        /// <summary>Most integrator steps (stable-rk4 substeps included) the flights of one file may take: 1e7.</summary>
-        public const long MaxStepsPerFile = 10_000_000;
+        /// <summary>
+        /// Most model evaluations the flights of one file may cost: 4e6 (1e6 RK4 steps, 4e6 Euler steps, 666,666
+        /// Dormand-Prince steps; 2 s to 4 s on a loaded 2.1 GHz core, docs/cli.md). Work, not steps, is what takes time:
+        /// a step of dp54 costs 6 evaluations and one of Euler 1.
+        /// </summary>
+        public const long MaxEvaluationsPerFile = 4_000_000;
 
-        /// <summary>The budget <see cref="Program"/> gives a file: <see cref="MaxStepsPerFile"/> (lowered by the fuzz test to keep it short).</summary>
-        internal static long StepsPerFileLimit { get; set; } = MaxStepsPerFile;
+        /// <summary>The budget <see cref="Program"/> gives a file: <see cref="MaxEvaluationsPerFile"/> (lowered by the fuzz test to keep it short).</summary>
+        internal static long EvaluationsPerFileLimit { get; set; } = MaxEvaluationsPerFile;
 
         public static FlightResult Simulate(Scenario scenario, bool recordSteps) =>
-            Simulate(scenario, recordSteps ? new Recording(true, Array.Empty<int>()) : Recording.None, new WorkBudget(MaxStepsPerFile));
+            Simulate(scenario, recordSteps ? new Recording(true, Array.Empty<int>()) : Recording.None, new WorkBudget(MaxEvaluationsPerFile));
 
         public static FlightResult Simulate(Scenario scenario, Recording recording, WorkBudget budget)
         {
@@ -158,6 +165,13 @@ namespace MagnusBall.Cli
             }
         }
 
+        private static InputError OverBudget(Scenario scenario, WorkBudget budget, double reached) =>
+            new InputError($"scenarios[{scenario.Index}].step",
+                $"the file's flights need more than {budget.Limit} model evaluations ({scenario.Integrator.Name} makes " +
+                $"{scenario.Integrator.DerivativeEvaluationsPerStep} per step{(scenario.Integrator is StableIntegrator ? ", times its substeps" : string.Empty)}; " +
+                $"this flight reached t = {JsonFields.Format(reached)} s); at most {budget.Limit} are allowed per file so that no file runs unbounded: " +
+                "use a larger step, a shorter maxTime or a cheaper integrator");
+
         // keepAll > 0: keep every step point up to that many (beyond: csvRows fails, else the points are dropped).
         // keep != null: keep only the steps [a, b) that contain one of these sorted times (both ends).
         private static FlightResult Fly(Scenario scenario, WorkBudget budget, int keepAll, List<double>? keep, bool csvRows)
@@ -171,7 +185,12 @@ namespace MagnusBall.Cli
             Plane? ground = scenario.Ground is NamedPlane g ? new Plane(g.Point, g.Normal) : null;
             var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
             var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
-            stepper.Reset(scenario.Initial);
+            if (!budget.TrySpend(1))
+            {
+                throw OverBudget(scenario, budget, scenario.Initial.Time);
+            }
+
+            stepper.Reset(scenario.Initial); // one evaluation, at the start state
             var stable = scenario.Integrator as StableIntegrator;
 
             List<StepPoint>? points = keepAll > 0 || keep != null ? new List<StepPoint>() : null;
@@ -193,14 +212,12 @@ namespace MagnusBall.Cli
                 var start = new StepPoint(stepper.State, stepper.Derivative);
                 double h = FlightStepper.StepToward(before, endTime, scenario.Step, out bool last);
 
-                // The work cap: a step costs 1, a substepping integrator's step as many substeps as it will take
-                // (judged at the start of the step, as the integrator judges it).
-                long cost = stable is null || !(h > 0) ? 1 : stable.SubstepCount(model, stepper.State, h);
-                if (!budget.TrySpend(cost))
+                // The work cap: a step costs the integrator's evaluations per step, a substepping integrator's step that
+                // times the substeps it will take (judged at the start of the step, as the integrator judges it).
+                long substeps = stable is null || !(h > 0) ? 1 : stable.SubstepCount(model, stepper.State, h);
+                if (!budget.TrySpend(substeps * scenario.Integrator.DerivativeEvaluationsPerStep))
                 {
-                    throw new InputError(stepPath,
-                        $"the file's flights need more than {budget.Limit} integrator steps (substeps of {scenario.Integrator.Name} included; " +
-                        $"this one reached t = {JsonFields.Format(before)} s); the CLI stops there so that no file runs unbounded: use a larger step or a shorter maxTime");
+                    throw OverBudget(scenario, budget, before);
                 }
 
                 StepOutcome outcome;

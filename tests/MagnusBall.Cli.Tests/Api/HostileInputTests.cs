@@ -125,12 +125,12 @@ namespace MagnusBall.Cli.Tests.Api
             S(root)["maxTime"] = 2;
             Scenario scenario = ScenarioReader.Read(root.ToJsonString()).Single();
 
-            FlightResult sparse = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10 }), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
+            FlightResult sparse = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10 }), new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile));
             Assert.That(sparse.Steps, Is.EqualTo(200_000));
             Assert.That(sparse.Points!.Count, Is.LessThanOrEqualTo(2 * 10), "two step ends per sample at most");
 
             // The samples are the ones the full recording gives, bit for bit (the same steps, flown again).
-            FlightResult full = ScenarioFlight.Simulate(scenario, new Recording(true, Array.Empty<int>()), new WorkBudget(ScenarioFlight.MaxStepsPerFile));
+            FlightResult full = ScenarioFlight.Simulate(scenario, new Recording(true, Array.Empty<int>()), new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile));
             Assert.That(full.Points!.Count, Is.EqualTo(200_001));
             FlightState[] a = ResultWriter.Sample(sparse, 10).ToArray();
             FlightState[] b = ResultWriter.Sample(full, 10).ToArray();
@@ -146,20 +146,65 @@ namespace MagnusBall.Cli.Tests.Api
         public void Samples_OfAShortFlight_AreFlownOnce()
         {
             Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single();
-            var budget = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            var budget = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
             FlightResult r = ScenarioFlight.Simulate(scenario, new Recording(false, new[] { 10, TrajectorySvg.SamplesPerFlight }), budget);
             Assert.That(r.Points!.Count, Is.EqualTo(r.Steps + 1), "every step kept: below ScenarioFlight.MaxKeptPoints");
-            Assert.That(budget.Total, Is.EqualTo(r.Steps), "one flight's steps spent, not two");
+            Assert.That(budget.Total, Is.EqualTo(r.DerivativeEvaluations), "one flight's evaluations spent, not two");
         }
 
         [Test]
         public void WorkBudget_StopsAFileWithAClearError()
         {
-            Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single(); // 183 steps to the landing
-            var budget = new WorkBudget(100);
+            Scenario scenario = ScenarioReader.Read(CliRun.DriveJson).Single(); // rk4, 183 steps to the landing
+            // 1 evaluation at the start and 4 a step: 401 pays for exactly 100 steps, and the 101st is refused.
+            var budget = new WorkBudget(401);
             var error = Assert.Throws<InputError>(() => ScenarioFlight.Simulate(scenario, Recording.None, budget))!;
-            Assert.That(error.Message, Does.StartWith("scenarios[0].step: the file's flights need more than 100 integrator steps"));
-            Assert.That(budget.Total, Is.EqualTo(100));
+            Assert.That(error.Message, Does.StartWith(
+                "scenarios[0].step: the file's flights need more than 401 model evaluations (rk4 makes 4 per step; this flight reached t = 0.41666"));
+            Assert.That(error.Message, Does.Contain("at most 401 are allowed per file"));
+            Assert.That(budget.Total, Is.EqualTo(401));
+        }
+
+        [Test]
+        public void WorkBudget_CountsTheModelsRealCalls()
+        {
+            // The budget is charged before each step; for a fixed-step method it must equal the model's real calls,
+            // counted here by a drag law that counts them (every evaluation asks the drag law once).
+            Scenario drive = ScenarioReader.Read(CliRun.DriveJson).Single();
+            foreach (string name in new[] { "euler", "heun", "rk4", "dp54" })
+            {
+                var counting = new CountingDrag();
+                Scenario scenario = drive with { Model = drive.Model.WithDrag(counting), Integrator = MagnusBall.Integration.Integrators.FromName(name) };
+                var budget = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
+                FlightResult r = ScenarioFlight.Simulate(scenario, Recording.None, budget);
+                Assert.That(r.Landing, Is.Not.Null, name);
+                Assert.That(budget.Total, Is.EqualTo(counting.Calls), name);
+                Assert.That(budget.Total, Is.EqualTo(r.DerivativeEvaluations), name);
+            }
+        }
+
+        [Test]
+        public void TinyDormandPrinceStep_IsRefusedWithinTheBudget_NotRunFor12Seconds()
+        {
+            // The slowest of 10,000 hostile files (issue 15): dp54 at a 1e-6 s step, 760,000 steps of 6 evaluations (the
+            // old cap counted steps, 1e7 a file, so it ran 11.9 s). Here with the budget lowered to keep the suite fast (1 + 6 x 100,000
+            // steps: t = 0.1 s); the default is ScenarioFlight.MaxEvaluationsPerFile.
+            JsonObject root = CliRun.Drive();
+            S(root)["integrator"] = "dp54";
+            S(root)["step"] = 1e-6;
+            S(root)["maxTime"] = 0.76;
+            long saved = ScenarioFlight.EvaluationsPerFileLimit;
+            ScenarioFlight.EvaluationsPerFileLimit = 600_001;
+            try
+            {
+                CliRun run = CliRun.Simulate(root);
+                AssertInputError(run, "scenarios[0].step: the file's flights need more than 600001 model evaluations (dp54 makes 6 per step; this flight reached t = 0.10000000000");
+                Assert.That(run.Stderr, Does.Contain("use a larger step, a shorter maxTime or a cheaper integrator"));
+            }
+            finally
+            {
+                ScenarioFlight.EvaluationsPerFileLimit = saved;
+            }
         }
 
         [Test]
@@ -171,15 +216,27 @@ namespace MagnusBall.Cli.Tests.Api
             S(root)["ball"] = new JsonObject { ["mass"] = 1e-6, ["radius"] = 0.033 };
             S(root)["initial"]!["velocity"] = new JsonArray(300, 0, 10);
             S(root)["maxTime"] = 1;
-            var rk4 = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            var rk4 = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
             FlightResult plain = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4);
-            Assert.That(rk4.Total, Is.EqualTo(plain.Steps), "one unit a step");
+            Assert.That(rk4.Total, Is.EqualTo(1 + 4 * plain.Steps), "one evaluation at the start, four a step");
 
             S(root)["integrator"] = "stable-rk4";
-            var stable = new WorkBudget(ScenarioFlight.MaxStepsPerFile);
+            var stable = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
             FlightResult r = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, stable);
-            TestContext.Out.WriteLine($"stable-rk4: {r.Steps} steps, {stable.Total} substeps counted");
-            Assert.That(stable.Total, Is.GreaterThan(r.Steps + 1000), "substeps counted, not steps");
+            TestContext.Out.WriteLine($"stable-rk4: {r.Steps} steps, {stable.Total} evaluations charged, {r.DerivativeEvaluations} made");
+            Assert.That(stable.Total, Is.GreaterThan(4 * r.Steps + 4000), "substeps charged, not steps");
+            Assert.That(stable.Total, Is.GreaterThanOrEqualTo(r.DerivativeEvaluations), "the charge is an upper estimate of the work done");
+        }
+
+        private sealed class CountingDrag : MagnusBall.Aerodynamics.IDragModel
+        {
+            public long Calls;
+
+            public double DragCoefficient(in MagnusBall.Aerodynamics.AeroConditions conditions)
+            {
+                Calls++;
+                return 0.55;
+            }
         }
 
         [TestCase(1e15)]

@@ -20,8 +20,8 @@ namespace MagnusBall.Cli.Tests.Fuzz
             var generator = new HostileJson(seed: 15);
             int[] counts = new int[Enum.GetValues<CliOutcome>().Length];
             TimeSpan slowest = TimeSpan.Zero;
-            long saved = ScenarioFlight.StepsPerFileLimit;
-            ScenarioFlight.StepsPerFileLimit = 200_000; // the cap's own path, at a size that keeps the suite fast
+            long saved = ScenarioFlight.EvaluationsPerFileLimit;
+            ScenarioFlight.EvaluationsPerFileLimit = 800_000; // the cap's own path, at a size that keeps the suite fast
             try
             {
                 for (int i = 0; i < Files; i++)
@@ -31,13 +31,13 @@ namespace MagnusBall.Cli.Tests.Fuzz
                     counts[(int)outcome]++;
                     slowest = time > slowest ? time : slowest;
                     Assert.That(outcome, Is.EqualTo(CliOutcome.Success).Or.EqualTo(CliOutcome.InputError), $"file {i}: {detail}\n{json}");
-                    // 10 s: the hang threshold; files here take milliseconds (at most 1e5 steps, 2e5 with substeps).
+                    // 10 s: the hang threshold; files here take milliseconds (at most 1e5 steps kept, 8e5 model evaluations a file).
                     Assert.That(time.TotalSeconds, Is.LessThan(10), $"file {i} ran {time.TotalSeconds:F1} s\n{json}");
                 }
             }
             finally
             {
-                ScenarioFlight.StepsPerFileLimit = saved;
+                ScenarioFlight.EvaluationsPerFileLimit = saved;
             }
 
             TestContext.Out.WriteLine($"{Files} files: " + string.Join(", ", Enum.GetValues<CliOutcome>().Select(o => $"{o} {counts[(int)o]}")) +

@@ -133,6 +133,31 @@ namespace MagnusBall.Tests.Portability
         }
 
         [Test]
+        public void Atan_IsWithinOneUlp_OverItsRange()
+        {
+            // Atan is reached directly (Atan2 of x > 0 calls Atan(y / x)), so it is checked on its own over every double:
+            // random bit patterns (every exponent and sign, subnormals included), [-10, 10], and fdlibm's reduction
+            // breakpoints 7/16, 11/16, 19/16, 39/16 and the 2^66 saturation, where its argument reduction switches.
+            var random = new Random(1506);
+            var inputs = new List<double> { 0, -0.0, 1, -1, double.Epsilon, double.MaxValue, -double.MaxValue, 1e-300, 7.0 / 16, 11.0 / 16, 19.0 / 16, 39.0 / 16, Math.Pow(2, 66), -Math.Pow(2, 66), Math.Pow(2, -27) };
+            foreach (double b in new[] { 7.0 / 16, 11.0 / 16, 19.0 / 16, 39.0 / 16, Math.Pow(2, 66), Math.Pow(2, -27) })
+            {
+                // The neighbours by bits (not Math.BitIncrement, which Mono 6.8's corlib lacks).
+                inputs.Add(BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(b) - 1));
+                inputs.Add(BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(b) + 1));
+            }
+
+            for (int i = 0; i < Samples; i++)
+            {
+                inputs.Add(RandomBits(random));
+                inputs.Add(-10 + 20 * random.NextDouble());
+                inputs.Add((random.NextDouble() - 0.5) * 6);
+            }
+
+            AssertWithin(inputs, PortableMath.Atan, Math.Atan, "Atan");
+        }
+
+        [Test]
         public void Atan2_IsWithinOneUlp_OverItsRange()
         {
             var random = new Random(1505);

@@ -163,7 +163,9 @@ namespace MagnusBall.Aerodynamics
                 return 0.0;
             }
 
-            double spin = Scale * PortableMath.Pow(spinParameter, SpinExponent);
+            // S is +infinity when |w| r / s overflows (a finite spin at a vanishing speed): the law is taken at the largest
+            // finite S there (the power has no finite limit; this keeps C_L finite, so the model stays free of NaN).
+            double spin = Scale * PortableMath.Pow(double.IsPositiveInfinity(spinParameter) ? double.MaxValue : spinParameter, SpinExponent);
             // Re is held at 1 or more inside the power so a near-zero speed cannot make it overflow (q <= 1).
             double reynolds = PortableMath.Pow(ReferenceReynolds / Math.Max(reynoldsNumber, 1.0), ReynoldsExponent);
             double onset = 1.0 / (1.0 + PortableMath.Exp(-(reynoldsNumber - OnsetReynolds) / OnsetWidth));

@@ -94,6 +94,7 @@ namespace MagnusBall.Flight
         private int _pendingEventCount;
         private int _pendingSegmentCount;
         private bool _started;
+        private StepOutcome _refusal; // why the last piece that returned false refused the step
 
         /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
         /// <param name="model">The flight model.</param>
@@ -180,12 +181,12 @@ namespace MagnusBall.Flight
         /// start of the next step; with a contact, a ball placed on the surface and not leaving it rolls (or rests).
         /// </summary>
         /// <param name="state">The start state; every component finite.</param>
-        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
+        /// <exception cref="ArgumentException">The state is not finite, or it lies on the contact surface and the roll it
+        /// starts would not be finite (nothing changes).</exception>
         public void Reset(in FlightState state)
         {
             Require.FiniteState(state, nameof(state));
-            _now = default;
-            Restart(state);
+            Restart(state, zeroCounters: true);
         }
 
         /// <summary>
@@ -194,15 +195,24 @@ namespace MagnusBall.Flight
         /// the next step.
         /// </summary>
         /// <param name="state">The new state; every component finite.</param>
-        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
+        /// <exception cref="ArgumentException">The state is not finite, or it lies on the contact surface and the roll it
+        /// starts would not be finite (nothing changes).</exception>
         public void SetState(in FlightState state)
         {
             Require.FiniteState(state, nameof(state));
-            Restart(state);
+            Restart(state, zeroCounters: false);
         }
 
-        private void Restart(in FlightState state)
+        private void Restart(in FlightState state, bool zeroCounters)
         {
+            Snapshot saved = _now;
+            int events = _eventCount, segments = _segmentCount;
+            bool started = _started;
+            if (zeroCounters)
+            {
+                _now = default;
+            }
+
             _now.State = state;
             _now.Previous = state;
             _now.Derivative = Model.Derivative(state);
@@ -217,6 +227,17 @@ namespace MagnusBall.Flight
             {
                 // Placed on the surface (or in it) and not leaving it: it rolls from there, or rests.
                 StartRolling(_contactPlane.Project(state.Position), state.Velocity, state.AngularVelocity, state.Time);
+                if (!_now.State.IsFinite || !_now.Derivative.IsFinite)
+                {
+                    // The roll it starts overflows: refused, and everything is put back.
+                    _now = saved;
+                    _eventCount = events;
+                    _segmentCount = segments;
+                    _started = started;
+                    throw new ArgumentException(
+                        $"state is on the contact surface, and the roll it starts would not be finite (its speed, spin or rolling acceleration exceeds double); got {state}.",
+                        nameof(state));
+                }
             }
         }
 
@@ -356,7 +377,7 @@ namespace MagnusBall.Flight
                 if (!ok)
                 {
                     _now = before;
-                    return StepOutcome.Diverged;
+                    return _refusal;
                 }
 
                 if (_now.State.Time >= endTime)
@@ -365,9 +386,12 @@ namespace MagnusBall.Flight
                 }
             }
 
-            if (_now.Phase == FlightPhase.Rolling)
+            if ((_now.Phase == FlightPhase.Rolling && !Roll(endTime)) || !_now.State.IsFinite)
             {
-                Roll(endTime);
+                // The roll would leave the state or its derivative non-finite (forces beyond double on the surface), or a
+                // bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
+                _now = before;
+                return StepOutcome.Diverged;
             }
 
             _now.Steps++;
@@ -391,6 +415,7 @@ namespace MagnusBall.Flight
         private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
         {
             FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
+            _refusal = StepOutcome.Diverged;
             if (!Takes(_now.State, next, nextDerivative))
             {
                 return false;
@@ -404,8 +429,7 @@ namespace MagnusBall.Flight
             }
 
             var segment = HermiteSegment.OfTakenStep(_now.State, _now.Derivative, next, nextDerivative);
-            HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
-            return true;
+            return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
         }
 
         // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end.
@@ -430,8 +454,12 @@ namespace MagnusBall.Flight
                 trial = Math.Min(result.NextStep, h);
             }
 
+            _refusal = StepOutcome.Diverged;
             if (!Takes(_now.State, result.End, result.EndDerivative))
             {
+                // Not finite: diverged. Finite, but the accepted step is below the resolution of the time (a huge time, a
+                // tiny step): the clock cannot advance.
+                _refusal = result.End.IsFinite && result.EndDerivative.IsFinite ? StepOutcome.TimeCannotAdvance : StepOutcome.Diverged;
                 return false;
             }
 
@@ -439,19 +467,27 @@ namespace MagnusBall.Flight
             endTime = result.End.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
             var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
-            HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
-            return true;
+            return HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
         }
 
         // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an
         // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
-        // Hermite, kept for StateAt.
-        private void HandlePiece<TDense>(
+        // Hermite, kept for StateAt. False (the step is refused) when the dense output overflows at an event: an extreme but
+        // finite step whose interpolant is not finite between its ends.
+        private bool HandlePiece<TDense>(
             ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
             int count = EventSet == null ? 0 : EventSet.Scan(ref dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
+            for (int i = 0; i < count; i++)
+            {
+                if (!found[i].State.IsFinite)
+                {
+                    return false;
+                }
+            }
+
             double contactTime = double.PositiveInfinity;
             // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
             if (Contact != null && piece < MaxPiecesPerStep - 1 &&
@@ -472,12 +508,16 @@ namespace MagnusBall.Flight
             if (stopIndex >= 0)
             {
                 FlightEvent stop = found[stopIndex];
+                if (!hermite.TryUntil(stop.Time, out HermiteSegment cut))
+                {
+                    return false;
+                }
+
                 Record(found.Slice(0, happen));
-                HermiteSegment cut = hermite.Until(stop.Time);
                 PushSegment(cut);
                 // The flight is over: its last derivative is the dense output's slope at the stop (no evaluation).
                 Stop(stop, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
-                return;
+                return true;
             }
 
             count = before;
@@ -487,20 +527,30 @@ namespace MagnusBall.Flight
                 PushSegment(hermite);
                 _now.State = end;
                 _now.Derivative = endDerivative;
-                return;
+                return true;
             }
 
-            Bounce(ref dense, hermite, contactTime, piece);
+            return Bounce(ref dense, hermite, contactTime, piece);
         }
 
-        private void Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+        private bool Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)
             where TDense : struct, IDenseOutput
         {
             GroundContact contact = Contact!;
             FlightState touching = dense.StateAt(contactTime);
             Vector3d centre = _contactPlane.Project(touching.Position);
-            PushSegment(hermite.Until(contactTime));
+            if (!touching.IsFinite || !centre.IsFinite || !hermite.TryUntil(contactTime, out HermiteSegment cut))
+            {
+                return false;
+            }
+
             BounceOutcome outcome = contact.Bounce.Bounce(Model.Ball, _normal, touching.Velocity, touching.AngularVelocity);
+            if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
+            {
+                return false; // the bounce law overflowed on an extreme impact
+            }
+
+            PushSegment(cut);
             double outgoingNormalSpeed = Vector3d.Dot(outcome.Velocity, _normal);
             // Rest only where gravity holds the ball on the surface (a floor or a slope, not a wall or a ceiling).
             bool roll = _gravityHolds &&
@@ -512,12 +562,13 @@ namespace MagnusBall.Flight
             if (roll)
             {
                 StartRolling(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
-                return;
+                return true;
             }
 
             _now.State = leaving;
             _now.Derivative = Model.Derivative(leaving);
             _now.Evaluations++;
+            return true;
         }
 
         private void Stop(in FlightEvent stop, in StateDerivative slope)
@@ -543,12 +594,13 @@ namespace MagnusBall.Flight
         }
 
         // The roll to endTime: Heun's method (exact for a constant acceleration, so exact on level ground in still air),
-        // with the stop located inside the step where the speed along the motion reaches zero.
-        private void Roll(double endTime)
+        // with the stop located inside the step where the speed along the motion reaches zero. False, with nothing
+        // committed to the segments, when a state or derivative of the roll would not be finite (the caller refuses the step).
+        private bool Roll(double endTime)
         {
             if (!(_now.State.Time < endTime))
             {
-                return;
+                return true;
             }
 
             double h = endTime - _now.State.Time;
@@ -556,31 +608,50 @@ namespace MagnusBall.Flight
             Vector3d v0 = s0.Velocity;
             Vector3d spinNormal = _normal * Vector3d.Dot(s0.AngularVelocity, _normal);
             Vector3d a0 = _now.Derivative.Acceleration;
+            if (!s0.IsFinite || !_now.Derivative.IsFinite)
+            {
+                return false;
+            }
+
             Vector3d vPredicted = v0 + a0 * h;
             if (_canRest && (v0.LengthSquared == 0 || Vector3d.Dot(vPredicted, v0) <= 0))
             {
-                StopWithin(s0, a0, vPredicted, h, spinNormal);
-                return;
+                return StopWithin(s0, a0, vPredicted, h, spinNormal);
             }
 
             var predicted = new FlightState(s0.Position + v0 * h, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
+            if (!predicted.IsFinite)
+            {
+                return false;
+            }
+
             Vector3d a1 = RollingAcceleration(predicted);
             Vector3d average = (a0 + a1) * 0.5;
             Vector3d v1 = v0 + average * h;
             if (_canRest && Vector3d.Dot(v1, v0) <= 0)
             {
-                StopWithin(s0, average, v1, h, spinNormal);
-                return;
+                return StopWithin(s0, average, v1, h, spinNormal);
             }
 
             var next = new FlightState(_contactPlane.Project(s0.Position + (v0 + v1) * (0.5 * h)), v1, RollingSpin(v1, spinNormal), endTime);
+            if (!next.IsFinite)
+            {
+                return false;
+            }
+
             var nextDerivative = new StateDerivative(v1, RollingAcceleration(next), Vector3d.Zero);
+            if (!nextDerivative.IsFinite)
+            {
+                return false;
+            }
+
             PushSegment(new HermiteSegment(s0, _now.Derivative, next, nextDerivative));
             _now.State = next;
             _now.Derivative = nextDerivative;
+            return true;
         }
 
-        private void StopWithin(in FlightState s0, in Vector3d a, in Vector3d v1, double h, in Vector3d spinNormal)
+        private bool StopWithin(in FlightState s0, in Vector3d a, in Vector3d v1, double h, in Vector3d spinNormal)
         {
             Vector3d v0 = s0.Velocity;
             double speed = v0.Length;
@@ -588,9 +659,15 @@ namespace MagnusBall.Flight
             double stopAfter = speed > 0 ? h * speed / (speed - along) : 0;
             Vector3d position = _contactPlane.Project(s0.Position + v0 * stopAfter + a * (0.5 * stopAfter * stopAfter));
             var rest = new FlightState(position, Vector3d.Zero, spinNormal, s0.Time + stopAfter);
+            var restDerivative = new StateDerivative(Vector3d.Zero, a, Vector3d.Zero);
+            if (!rest.IsFinite || !restDerivative.IsFinite || !(stopAfter >= 0))
+            {
+                return false;
+            }
+
             if (rest.Time > s0.Time)
             {
-                PushSegment(new HermiteSegment(s0, _now.Derivative, rest, new StateDerivative(Vector3d.Zero, a, Vector3d.Zero)));
+                PushSegment(new HermiteSegment(s0, _now.Derivative, rest, restDerivative));
             }
 
             var stop = new FlightEvent(FlightEventKinds.Rest, -1, rest);
@@ -599,6 +676,7 @@ namespace MagnusBall.Flight
             _now.Derivative = default;
             _now.Phase = FlightPhase.Stopped;
             _now.StopEvent = stop;
+            return true;
         }
 
         private Vector3d RollingAcceleration(in FlightState state)

@@ -241,6 +241,40 @@ namespace MagnusBall.Integration
         /// Hermite with the interpolant's own end value and slope there (slopes by differentiating the cubic, exact; no
         /// evaluation). Default (zero duration) when the time is not after the start.
         /// </summary>
+        /// <summary>
+        /// <see cref="Until"/>, or false when the cut's end state or slope is not finite (the cubic of an extreme but finite
+        /// step can overflow between its ends; the stepper then refuses the step instead of throwing from inside it).
+        /// </summary>
+        internal bool TryUntil(double time, out HermiteSegment cut)
+        {
+            cut = default;
+            double h = Duration;
+            if (!(time > StartTime) || !(h > 0))
+            {
+                return true;
+            }
+
+            if (time >= EndTime)
+            {
+                cut = this;
+                return true;
+            }
+
+            double s = (time - StartTime) / h;
+            FlightState end = StateAt(time);
+            var endDerivative = new StateDerivative(
+                CubicSlope(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, s) / h,
+                CubicSlope(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, s) / h,
+                CubicSlope(Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h, s) / h);
+            if (!end.IsFinite || !endDerivative.IsFinite || !(end.Time > Start.Time))
+            {
+                return false;
+            }
+
+            cut = new HermiteSegment(Start, StartDerivative, end, endDerivative);
+            return true;
+        }
+
         internal HermiteSegment Until(double time)
         {
             double h = Duration;

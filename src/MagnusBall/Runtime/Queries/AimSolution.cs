@@ -10,6 +10,13 @@ namespace MagnusBall.Queries
 
         /// <summary>No launch within the solver's limits does it; nothing was thrown and nothing diverged.</summary>
         Unreachable = 1,
+
+        /// <summary>
+        /// The solve stopped at its work cap (<see cref="AimSolver.MaxEvaluationsPerSolve"/> model evaluations plus steps) before it
+        /// could decide; the launch fields hold where it was. Fly shorter trials (a smaller maximumFlightTime), a larger
+        /// step or a coarser scan.
+        /// </summary>
+        WorkLimitReached = 2,
     }
 
     /// <summary>

@@ -48,6 +48,15 @@ namespace MagnusBall.Queries
         public const double SpeedTolerance = 1e-8;
 
         /// <summary>
+        /// The work cap of one solve: 1,000,000 model evaluations plus steps over all its trial flights (a step's own work,
+        /// its dense output and event scan, costs about one evaluation; a fixed-step RK4 solve of a tennis shot makes a few
+        /// thousand, an adaptive one a few hundred; docs/robustness.md). Past it the remaining trials are not flown and the
+        /// solve returns <see cref="AimStatus.WorkLimitReached"/>: it bounds a huge maximumFlightTime against a small step,
+        /// the finest scans and trials that <see cref="StableIntegrator"/> splits into thousands of substeps.
+        /// </summary>
+        public const long MaxEvaluationsPerSolve = 1_000_000;
+
+        /// <summary>
         /// The relative and absolute tolerance (m, m/s, rad/s per component) of adaptive trials' Dormand-Prince steps: a 24 m
         /// tennis shot's arrival is then within about 1e-8 m of RK4 at 1/240 s, which moves an elevation root by less than
         /// 1e-9 rad and a speed root by about 5e-8 m/s (the arrival height changes by only 0.2 m per m/s there).
@@ -232,6 +241,10 @@ namespace MagnusBall.Queries
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
         public AimSolution MinimumElevationToClear(
+            in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height) =>
+            Finish(MinimumElevationToClearCore(position, speed, azimuthRadians, spin, plane, height));
+
+        private AimSolution MinimumElevationToClearCore(
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
         {
             Require.Finite(position, nameof(position));
@@ -279,7 +292,10 @@ namespace MagnusBall.Queries
         /// <param name="azimuthRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0)
+        public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0) =>
+            Finish(ElevationToReachCore(position, speed, spin, target, azimuthRadians));
+
+        private AimSolution ElevationToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
@@ -306,7 +322,10 @@ namespace MagnusBall.Queries
         /// <param name="maximumAzimuthDegrees">The largest azimuth turn tried either way, degrees; in (0, 89].</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45)
+        public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45) =>
+            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees));
+
+        private AimSolution AnglesToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
@@ -333,7 +352,10 @@ namespace MagnusBall.Queries
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
         /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
+        public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target) =>
+            Finish(SpeedToReachCore(position, elevationRadians, azimuthRadians, spin, target));
+
+        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
         {
             CheckTarget(position, target);
             Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
@@ -388,6 +410,12 @@ namespace MagnusBall.Queries
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
 
         // A solution with the solve's flights so far (a solution kept from an earlier trial counts only the flights until then).
+        // A solve that reached its work cap says so, whatever its search ended on.
+        private AimSolution Finish(in AimSolution s) =>
+            _trials.WorkLimitReached
+                ? new AimSolution(AimStatus.WorkLimitReached, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, s.Simulations)
+                : s;
+
         private AimSolution WithFlights(in AimSolution s, AimStatus? status = null) =>
             new AimSolution(status ?? s.Status, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, _trials.Flights);
 

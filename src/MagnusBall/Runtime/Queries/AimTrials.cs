@@ -84,8 +84,19 @@ namespace MagnusBall.Queries
         /// <summary>Flights since <see cref="StartSolve"/>.</summary>
         public int Flights { get; private set; }
 
-        /// <summary>Starts counting a new solve's flights.</summary>
-        public void StartSolve() => Flights = 0;
+        /// <summary>Model evaluations plus steps of the solve's finished trials.</summary>
+        public long Work { get; private set; }
+
+        /// <summary>True once the solve reached <see cref="AimSolver.MaxEvaluationsPerSolve"/>: later trials are not flown.</summary>
+        public bool WorkLimitReached { get; private set; }
+
+        /// <summary>Starts counting a new solve's flights and work.</summary>
+        public void StartSolve()
+        {
+            Flights = 0;
+            Work = 0;
+            WorkLimitReached = false;
+        }
 
         /// <summary>
         /// One trial launch at the given speed, elevation and azimuth: its signed margin (&gt;= 0 when it arrives at or
@@ -140,6 +151,21 @@ namespace MagnusBall.Queries
         /// </summary>
         private bool Fly(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
         {
+            if (WorkLimitReached)
+            {
+                // Past the work cap: no more trials are flown (each fails), so the solve ends quickly.
+                arrival = launch;
+                landed = false;
+                return false;
+            }
+
+            bool arrived = FlyTrial(launch, plane, out arrival, out landed);
+            Work += _stepper.DerivativeEvaluations + _stepper.StepCount;
+            return arrived;
+        }
+
+        private bool FlyTrial(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        {
             Flights++;
             FlightStepper stepper = _stepper;
             _plane[0] = plane;
@@ -148,9 +174,15 @@ namespace MagnusBall.Queries
             const FlightEventKinds stopAt = FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing;
             // Bounded: fixed trials advance the clock by a step per pass (at most maximumFlightTime / step + 1 passes, the
             // last step trimmed to the time limit by the one end-time rule); adaptive trials take at most
-            // MaximumAdaptiveSteps steps.
+            // MaximumAdaptiveSteps steps; no trial goes past the solve's work cap.
             for (int pass = 0; ; pass++)
             {
+                if (Work + stepper.DerivativeEvaluations + stepper.StepCount >= AimSolver.MaxEvaluationsPerSolve)
+                {
+                    WorkLimitReached = true; // this trial fails; the solve returns WorkLimitReached
+                    break;
+                }
+
                 bool last;
                 StepOutcome outcome;
                 if (_adaptive != null)

@@ -22,10 +22,13 @@ namespace MagnusBall.Queries
         /// <param name="derivativeEvaluations">Derivative evaluations made (including the start state's).</param>
         /// <param name="diverged">True when the run ended because a step diverged (see <see cref="FlightStepper.TryStep"/>).</param>
         /// <param name="timeCannotAdvance">True when the run ended because the clock could not advance (see <see cref="StepOutcome.TimeCannotAdvance"/>).</param>
+        /// <param name="workLimitReached">True when the run ended at <see cref="TrajectoryPredictor.MaxEvaluationsPerPrediction"/>.</param>
         internal Prediction(
             in FlightState endState, bool stopped, in FlightEvent stopEvent, int sampleCount, bool samplesTruncated,
-            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations, bool diverged = false, bool timeCannotAdvance = false)
+            int eventCount, bool eventsTruncated, long steps, long derivativeEvaluations, bool diverged = false, bool timeCannotAdvance = false,
+            bool workLimitReached = false)
         {
+            WorkLimitReached = workLimitReached;
             Diverged = diverged;
             TimeCannotAdvance = timeCannotAdvance;
             EndState = endState;
@@ -77,6 +80,13 @@ namespace MagnusBall.Queries
         /// (the state is finite; start the flight at a smaller time). <see cref="EndState"/> is the last state.
         /// </summary>
         public readonly bool TimeCannotAdvance;
+
+        /// <summary>
+        /// True when the run ended early, before its time limit and without a stop event, because it had made
+        /// <see cref="TrajectoryPredictor.MaxEvaluationsPerPrediction"/> model evaluations plus steps (a tiny step or a huge maxDuration;
+        /// the bounded work of one call). <see cref="EndState"/> is the state reached, a true state of the flight.
+        /// </summary>
+        public readonly bool WorkLimitReached;
     }
 
     /// <summary>
@@ -91,6 +101,16 @@ namespace MagnusBall.Queries
     /// </remarks>
     public sealed class TrajectoryPredictor
     {
+        /// <summary>
+        /// The work cap of one prediction: after the step that brings its model evaluations plus its steps to this many
+        /// (1,000,000; a step's own work, its dense output and event scan, costs about one evaluation: 200,000 RK4 steps,
+        /// 14 minutes of flight at 1/240 s, or 500,000 Euler steps; measured up to 4 s on a loaded core with the golf laws,
+        /// docs/robustness.md), the run ends with
+        /// <see cref="Prediction.WorkLimitReached"/>. It bounds a huge maxDuration against a small step, and a step that
+        /// <see cref="StableIntegrator"/> splits into thousands of substeps.
+        /// </summary>
+        public const long MaxEvaluationsPerPrediction = 1_000_000;
+
         private readonly FlightStepper _stepper;
 
         /// <summary>Creates a predictor.</summary>
@@ -128,7 +148,8 @@ namespace MagnusBall.Queries
         /// <param name="maxDuration">How long to fly at most, s; finite and &gt; 0.</param>
         /// <param name="positions">Where to write the sampled positions (may be empty).</param>
         /// <param name="stopAt">Which event kinds end the run (default: the landing; None flies to the time limit).</param>
-        /// <returns>Where it ended, why, and how many samples were written.</returns>
+        /// <returns>Where it ended, why (a stop event, the time limit, a divergence, or the work cap
+        /// <see cref="MaxEvaluationsPerPrediction"/>), and how many samples were written.</returns>
         /// <exception cref="ArgumentException">The state is not finite or maxDuration is out of range.</exception>
         public Prediction Predict(in FlightState start, double maxDuration, Span<Vector3d> positions, FlightEventKinds stopAt = FlightEventKinds.Landing) =>
             Run(start, maxDuration, positions, Span<FlightState>.Empty, Span<FlightEvent>.Empty, stopAt);
@@ -162,11 +183,20 @@ namespace MagnusBall.Queries
 
             double endTime = start.Time + maxDuration;
             // Bounded: each pass advances the clock by a step (or refuses and returns), so at most
-            // maxDuration / Step + 1 passes.
+            // maxDuration / Step + 1 passes, and the work cap ends the run after MaxEvaluationsPerPrediction evaluations.
             while (true)
             {
+                if (stepper.DerivativeEvaluations + stepper.StepCount >= MaxEvaluationsPerPrediction)
+                {
+                    return new Prediction(
+                        stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,
+                        stepper.StepCount, stepper.DerivativeEvaluations, workLimitReached: true);
+                }
+
                 double h = FlightStepper.StepToward(stepper.State.Time, endTime, Step, out bool last);
-                StepOutcome outcome = stepper.TryStep(h, stopAt);
+                // h is 0 when maxDuration is below the time's resolution (start.Time + maxDuration == start.Time): the clock
+                // cannot advance, which the stepper reports for any step that does not move it.
+                StepOutcome outcome = h > 0 ? stepper.TryStep(h, stopAt) : StepOutcome.TimeCannotAdvance;
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
                     return new Prediction(

@@ -16,7 +16,7 @@ namespace MagnusBall.Stepping
 
         /// <summary>
         /// Frame time, s, that was not simulated: the part of a hitch above the clamp, what was left when the
-        /// substep cap was reached, and all frame time once the flight has ended. The ball runs this much
+        /// step cap (MaxStepsPerAdvance) or the work cap (MaxEvaluationsPerAdvance) was reached, and all frame time once the flight has ended. The ball runs this much
         /// behind the wall clock; its path is unchanged.
         /// </summary>
         public readonly double DroppedSeconds;

@@ -17,7 +17,9 @@ namespace MagnusBall.Stepping
     /// the renderer is between the last two fixed states, alpha = accumulator / step. A frame longer than
     /// <see cref="MaxFrameDeltaSeconds"/> (a hitch: loading, a breakpoint, the window dragged) is clamped, and
     /// at most <see cref="MaxStepsPerAdvance"/> steps are taken per call, so one slow frame cannot trigger
-    /// ever more steps (the "spiral of death"). Time that is clamped or capped away is dropped: the ball
+    /// ever more steps (the "spiral of death"); nor more steps once the call has made
+    /// <see cref="MaxEvaluationsPerAdvance"/> model evaluations, so a tiny fixed step or a substepping integrator
+    /// cannot freeze a frame either. Time that is clamped or capped away is dropped: the ball
     /// falls behind the wall clock but flies exactly the same path, because the path depends only on the
     /// sequence of fixed steps, never on how frame time was sliced.</para>
     /// <para>The seed thesis (Agrawal 2023, section 3.1.3) stepped its ODE once per frame with Unity's
@@ -38,6 +40,17 @@ namespace MagnusBall.Stepping
     {
         /// <summary>The default frame-time clamp, 0.25 s (Fiedler 2004).</summary>
         public const double DefaultMaxFrameDeltaSeconds = 0.25;
+
+        /// <summary>
+        /// The work cap of one <see cref="Advance(double, Span{FlightEvent})"/> call: once its steps have made this many
+        /// model evaluations plus steps (250,000; a step's own work, its dense output and event scan, costs about one
+        /// evaluation; up to 1 s on a loaded core), it takes no more steps and drops the frame time left, as at
+        /// <see cref="MaxStepsPerAdvance"/>. A game never meets it (RK4 at 1/240 s through a 0.25 s hitch makes 305); it bounds a tiny fixed step (1e-9 s: 2.5e8 steps in one clamped frame) and a step that
+        /// <see cref="StableIntegrator"/> splits into thousands of substeps. A step in progress is finished, so a call can
+        /// exceed it by one step's work (at most <see cref="FlightStepper.MaxPiecesPerStep"/> pieces of
+        /// <see cref="StableStepping.MaximumSubsteps"/> substeps).
+        /// </summary>
+        public const long MaxEvaluationsPerAdvance = 250_000;
 
         private readonly FlightStepper _stepper;
         private readonly FlightEventKinds _stopAt;
@@ -230,7 +243,7 @@ namespace MagnusBall.Stepping
 
         /// <summary>Starts a new flight from <paramref name="start"/>: state, accumulator and counters reset.</summary>
         /// <param name="start">The launch state; every component finite.</param>
-        /// <exception cref="ArgumentException">The state is not finite (nothing changes).</exception>
+        /// <exception cref="ArgumentException">The state is not finite, or (with a bounce model) it lies on the court and the roll it starts would not be finite (nothing changes).</exception>
         public void Reset(in FlightState start)
         {
             Require.FiniteState(start, nameof(start));
@@ -248,7 +261,8 @@ namespace MagnusBall.Stepping
 
         /// <summary>
         /// Advances by one frame: adds the (clamped) frame time to the accumulator, takes the whole fixed steps it
-        /// holds (at most <see cref="MaxStepsPerAdvance"/>), and writes the events of those steps, in time order,
+        /// holds (at most <see cref="MaxStepsPerAdvance"/>, and none once the call has made
+        /// <see cref="MaxEvaluationsPerAdvance"/> model evaluations plus steps), and writes the events of those steps, in time order,
         /// into <paramref name="events"/>. Allocates nothing.
         /// </summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0 (Unity: Time.deltaTime).</param>
@@ -281,12 +295,13 @@ namespace MagnusBall.Stepping
 
             _accumulator += frameDeltaSeconds;
             int steps = 0, written = 0, lost = 0;
-            // Bounded by MaxStepsPerAdvance.
+            long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount;
+            // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
             {
-                if (steps == MaxStepsPerAdvance)
+                if (steps == MaxStepsPerAdvance || _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore >= MaxEvaluationsPerAdvance)
                 {
-                    // Substep cap reached: keep the fraction of a step (alpha stays continuous), drop the rest.
+                    // Step or work cap reached: keep the fraction of a step (alpha stays continuous), drop the rest.
                     double keep = _accumulator % FixedStep;
                     dropped += _accumulator - keep;
                     _accumulator = keep;

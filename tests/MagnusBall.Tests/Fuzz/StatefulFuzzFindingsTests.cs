@@ -1,0 +1,180 @@
+using System;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Contact;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+using MagnusBall.Presets;
+using MagnusBall.Queries;
+using MagnusBall.Stepping;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Fuzz
+{
+    /// <summary>
+    /// The defects the stateful fuzz (StatefulFuzz) found, one reproduction each (every one failed on the code before
+    /// its fix): calls that ran unbounded, threw from inside a step and left the object changed, or left NaN behind.
+    /// </summary>
+    [TestFixture]
+    public class StatefulFuzzFindingsTests
+    {
+        private static FlightModel Tennis => SportPresets.Tennis.CreateModel(Air.SeaLevel, Gravity.ZUp);
+
+        [Test]
+        public void Driver_WithATinyFixedStep_StopsAtTheWorkCap_InsteadOfRunningForMinutes()
+        {
+            // Fixed step 1e-9 s: the default step cap is ceil(0.25 / 1e-9) + 1 = 250,000,001 steps per clamped frame
+            // (minutes of work in one Advance). The work cap stops the call and drops the rest of the frame time.
+            FlightModel model = Tennis;
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 5), Vector3d.Zero);
+            var driver = new FixedStepDriver(model, RungeKutta4.Instance, 1e-9, start);
+            AdvanceResult r = driver.Advance(0.25);
+            long work = driver.DerivativeEvaluations + driver.TotalSteps;
+            Assert.That(work, Is.GreaterThanOrEqualTo(FixedStepDriver.MaxEvaluationsPerAdvance));
+            // One RK4 step (4 evaluations and the step itself) past the cap at most.
+            Assert.That(work, Is.LessThanOrEqualTo(FixedStepDriver.MaxEvaluationsPerAdvance + 1 + 5));
+            Assert.That(r.StepsTaken, Is.EqualTo(driver.TotalSteps));
+            Assert.That(r.DroppedSeconds, Is.GreaterThan(0.2), "the frame time not simulated is reported");
+            Assert.That(driver.Accumulator, Is.LessThan(driver.FixedStep));
+        }
+
+        [Test]
+        public void Predictor_WithAHugeDuration_StopsAtTheWorkCap()
+        {
+            // No gravity, so nothing lands: maxDuration 1e300 s at 1/240 s used to loop for ever.
+            FlightModel model = Tennis.WithGravity(Vector3d.Zero);
+            var predictor = new TrajectoryPredictor(model, ExplicitEuler.Instance, 1.0 / 240, new FlightEventSet(Vector3d.UnitZ));
+            var start = new FlightState(Vector3d.Zero, new Vector3d(10, 0, 0), Vector3d.Zero);
+            Prediction p = predictor.Predict(start, 1e300, Span<Vector3d>.Empty);
+            Assert.That(p.WorkLimitReached, Is.True);
+            Assert.That(p.Stopped || p.Diverged || p.TimeCannotAdvance, Is.False);
+            // Euler: one evaluation and one step a step, after the start's evaluation; so the cap is passed by one at most.
+            Assert.That(p.DerivativeEvaluations + p.Steps, Is.InRange(TrajectoryPredictor.MaxEvaluationsPerPrediction, TrajectoryPredictor.MaxEvaluationsPerPrediction + 1));
+            Assert.That(p.EndState.IsFinite, Is.True);
+        }
+
+        [Test]
+        public void Predictor_WhoseDurationCannotAdvanceTheStartTime_SaysSo_InsteadOfThrowing()
+        {
+            // start 1e143 s, maxDuration 5e-324 s: endTime == start time, so the last step was 0 and TryStep threw
+            // "step must be > 0; got 0" after the buffer had been written.
+            var predictor = new TrajectoryPredictor(Tennis, RungeKutta4.Instance, 1.0 / 240);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 5), Vector3d.Zero, 1.21e143);
+            Prediction p = predictor.Predict(start, double.Epsilon, Span<Vector3d>.Empty);
+            Assert.That(p.TimeCannotAdvance, Is.True);
+            Assert.That(p.EndState, Is.EqualTo(start));
+        }
+
+        [Test]
+        public void Aim_WithAHugeTrialTime_StopsAtTheWorkCap()
+        {
+            // maximumFlightTime 1e300 s and a launch from 1e12 m up toward a target 1 km away, which drag keeps it from
+            // reaching: each trial falls at the terminal speed for about 5e10 s (1e13 steps); the solve never returned.
+            var aim = new AimSolver(Tennis, SemiImplicitEuler.Instance, 1.0 / 240, Plane.Ground(Tennis), maximumFlightTime: 1e300);
+            AimSolution s = aim.ElevationToReach(new Vector3d(0, 0, 1e12), 30, default, new Vector3d(1000, 0, 0));
+            Assert.That(s.Status, Is.EqualTo(AimStatus.WorkLimitReached));
+            Assert.That(s.IsSolved, Is.False);
+        }
+
+        [Test]
+        public void Stepper_RollThatOverflows_IsRefused_AndChangesNothing()
+        {
+            // Air of 1e300 kg/m^3: a ball rolling at 1 m/s decelerates at 1e298 m/s^2 (finite), so the reset is accepted, but
+            // the roll's predicted speed of 4e295 m/s overflows the drag. The step threw ArgumentException from inside (the
+            // Hermite of the roll) and left the stepper half-stepped; now it is refused as a divergence.
+            // On a slope without rolling resistance, so the ball cannot come to rest inside the step.
+            FlightModel model = SportPresets.Soccer.CreateModel(new Air(1e300), Gravity.ZUp);
+            Vector3d normal = new Vector3d(0.5, 0, 1).NormalizedOrZero(), downhill = new Vector3d(1, 0, -0.5).NormalizedOrZero();
+            var contact = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, normal), rollingResistance: 0);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, contact);
+            stepper.Reset(new FlightState(normal * model.Ball.Radius, downhill, Vector3d.Zero));
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+            FlightState before = stepper.State;
+            StateDerivative derivative = stepper.Derivative;
+            long evaluations = stepper.DerivativeEvaluations;
+
+            StepOutcome outcome = stepper.TryStep(1.0 / 240);
+            Assert.That(outcome, Is.EqualTo(StepOutcome.Diverged));
+            Assert.That(stepper.State, Is.EqualTo(before));
+            Assert.That(stepper.Derivative.Acceleration, Is.EqualTo(derivative.Acceleration));
+            Assert.That(stepper.DerivativeEvaluations, Is.EqualTo(evaluations));
+            Assert.That(stepper.StepCount, Is.Zero);
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+        }
+
+        [Test]
+        public void Driver_WhoseDenseOutputOverflowsAtAnEvent_RefusesTheStep_InsteadOfThrowing()
+        {
+            // From the stateful fuzz (seed 15): a ball at y = 1.8e308 m whose step's cubic Hermite overflows at the apex
+            // inside it. Cutting the step at the event threw ArgumentException ("endDerivative must have finite ...") from
+            // inside Advance, after the accumulator had changed.
+            SportPreset golf = null!;
+            foreach (SportPreset p in SportPresets.All)
+            {
+                if (p.Drag is GolfSpinReynoldsDrag && p.Ball.Mass == 0.04593 && p.Ball.Radius == 0.021335)
+                {
+                    golf = p;
+                }
+            }
+
+            Assert.That(golf, Is.Not.Null);
+            FlightModel model = golf.CreateModel(new Air(0, new Vector3d(0, 4.9774135023774194E+269, -3.9118532669986097E+198)), Gravity.ZUp);
+            var start = new FlightState(
+                new Vector3d(-0.0, 1.7976931348623157E+308, 5E-324),
+                new Vector3d(-3.3255943605219184E+198, 63524072356754.03, -1.167117268247713E-107),
+                new Vector3d(-0.0, 1.5913362432127908E+49, -5.033950095892513E+300));
+            var driver = new FixedStepDriver(model, RungeKutta4.Instance, 2.1360412232872894E-146, start);
+            AdvanceResult r = default;
+            Assert.DoesNotThrow(() => r = driver.Advance(0.019795278841534297));
+            Assert.That(driver.State.IsFinite, Is.True);
+            TestContext.Out.WriteLine($"{r}; state {driver.State}");
+        }
+
+        [Test]
+        public void GolfLift_AtAnOverflowingSpinParameter_IsFinite_NotNaN()
+        {
+            // From the stateful fuzz (seed 2026): the golf preset at |w| = 1.8e308 rad/s and a speed of 1e-109 m/s: the spin
+            // parameter |w| r / s overflows to +infinity, the saturating lift of the time gave inf / inf = NaN, and the
+            // model's acceleration was NaN. The power-law lift that replaced it is taken at the largest finite S there.
+            FlightModel model = null!;
+            GolfSpinReynoldsLift lift = null!;
+            foreach (SportPreset p in SportPresets.All)
+            {
+                if (p.Lift is GolfSpinReynoldsLift golf)
+                {
+                    lift = golf;
+                    model = p.CreateModel(new Air(6.240362714510825), Vector3d.Zero);
+                }
+            }
+
+            Assert.That(lift, Is.Not.Null);
+            double atInfinity = lift.Evaluate(double.PositiveInfinity, 2e5);
+            Assert.That(atInfinity, Is.EqualTo(lift.Evaluate(double.MaxValue, 2e5)), "the law at the largest finite S");
+            Assert.That(double.IsFinite(atInfinity), Is.True);
+
+            var state = new FlightState(
+                new Vector3d(3.997233631240321E+282, 5.35699559137975E-259, 1.451156793303762E+243),
+                new Vector3d(-2.241030004338823E-110, 7.711936117884922E-109, 2.5149674322293E-120),
+                new Vector3d(-1.1588574467734387, 1.7976931348623157E+308, 2.3865263664784297E+36),
+                4.8182166465760504E-141);
+            Vector3d a = model.Derivative(state).Acceleration;
+            Assert.That(double.IsNaN(a.X) || double.IsNaN(a.Y) || double.IsNaN(a.Z), Is.False, a.ToString());
+        }
+
+        [Test]
+        public void Reset_RefusedOnTheSurface_KeepsTheCounters()
+        {
+            // Reset zeroed the counters before it found the roll it starts non-finite, so a refused Reset changed them.
+            var air = new Air(1e300);
+            FlightModel model = SportPresets.Soccer.CreateModel(air, Gravity.ZUp);
+            var contact = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ));
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, contact);
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(1, 0, 0), Vector3d.Zero));
+            long evaluations = stepper.DerivativeEvaluations;
+            var onTheSurface = new FlightState(new Vector3d(0, 0, model.Ball.Radius), new Vector3d(1e200, 0, 0), new Vector3d(0, 1e300, 0));
+            Assert.Throws<ArgumentException>(() => stepper.Reset(onTheSurface));
+            Assert.That(stepper.DerivativeEvaluations, Is.EqualTo(evaluations));
+            Assert.That(stepper.State.Position, Is.EqualTo(new Vector3d(0, 0, 1)));
+        }
+
+    }
+}
