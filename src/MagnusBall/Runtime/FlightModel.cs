@@ -290,7 +290,19 @@ namespace MagnusBall
                     double pressure = Overflow.Multiply(Overflow.Multiply(_dragFactor, speed), speed); // k s^2
                     if (Drag != null)
                     {
-                        double drag = Overflow.Multiply(pressure, Drag.DragCoefficient(conditions));
+                        double drag;
+                        if (Drag is ISpinLinearDrag linear && !double.IsFinite(conditions.SpinParameter))
+                        {
+                            // S = r|w|/s overflowed: k s^2 slope S is k s slope r |w| (finite wherever the true drag is).
+                            drag = Overflow.Add(
+                                Overflow.Multiply(pressure, linear.CoefficientWithoutSpin(conditions)),
+                                Overflow.Multiply(Overflow.Multiply(Overflow.Multiply(_dragFactor, speed), linear.SpinSlope * _kinematicRadius), spinRate));
+                        }
+                        else
+                        {
+                            drag = Overflow.Multiply(pressure, Drag.DragCoefficient(conditions));
+                        }
+
                         acceleration = Overflow.Add(acceleration, Overflow.Multiply(direction, -drag));
                     }
 

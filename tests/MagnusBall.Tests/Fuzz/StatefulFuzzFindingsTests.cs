@@ -161,6 +161,51 @@ namespace MagnusBall.Tests.Fuzz
         }
 
         [Test]
+        public void SpinLinearDrag_AtAnOverflowingSpinParameter_IsTheFiniteTrueDrag()
+        {
+            // From the stateful fuzz: the golf preset at |w| = 1.8e308 rad/s and a speed of 1e-109 m/s. C_D = a + b S has
+            // S = r|w|/s = +infinity, so k s^2 C_D was infinite; the true drag k s^2 b r|w|/s = k s b r |w| is finite and
+            // tiny (about 1e195 m/s^2 here, against the spin's 1e308). The model's scaled path now forms it that way.
+            foreach (SportPreset preset in new[] { SportPresets.Golf, SportPresets.GolfLinear2023 })
+            {
+                FlightModel model = preset.CreateModel(Air.SeaLevel, Gravity.ZUp);
+                var state = new FlightState(
+                    new Vector3d(0, 0, 1), new Vector3d(1e-109, 0, 0), new Vector3d(0, 1.7976931348623157E+308, 0));
+                Vector3d a = model.Derivative(state).Acceleration;
+                Assert.That(a.IsFinite, Is.True, $"{preset.Name}: {a}");
+                // The drag term alone: k s b r |w|, along -x (the lift, along w x v, has no x part).
+                double k = model.AerodynamicFactor, s = 1e-109, w = 1.7976931348623157E+308, r = model.Ball.Radius;
+                double slope = preset.Drag is GolfSpinReynoldsDrag golf ? golf.SpinSlope : ((LinearSpinDrag)preset.Drag!).Slope;
+                double expected = k * s * (slope * r) * w;
+                Assert.That(-a.X, Is.EqualTo(expected).Within(1e-9 * expected), preset.Name);
+            }
+        }
+
+        [Test]
+        public void StateAt_BetweenFiniteEndsNearTheLargestDouble_IsFinite()
+        {
+            // From the stateful fuzz: a step whose ends are finite but near 1e308; the cubic Hermite's terms overflowed
+            // between them. At mid-step the true value is 1.7e308 + (1e308 - 1e308)/8 = 1.7e308.
+            var start = new FlightState(new Vector3d(1.7e308, 0, 0), new Vector3d(1e308, 0, 0), Vector3d.Zero, 0);
+            var end = new FlightState(new Vector3d(1.7e308, 0, 0), new Vector3d(1e308, 0, 0), Vector3d.Zero, 1);
+            var segment = new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
+                end, new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero));
+            FlightState middle = segment.StateAt(0.5);
+            Assert.That(middle.IsFinite, Is.True, middle.ToString());
+            Assert.That(middle.Position.X, Is.EqualTo(1.7e308).Within(1e-12 * 1.7e308));
+            // An ordinary step is the plain formula, bit for bit (the scaled path is only taken on overflow).
+            var a = new FlightState(new Vector3d(1, 2, 3), new Vector3d(4, 5, 6), new Vector3d(7, 8, 9), 0);
+            var b = new FlightState(new Vector3d(2, 3, 1), new Vector3d(3, 2, 1), new Vector3d(9, 8, 7), 0.25);
+            var da = new StateDerivative(a.Velocity, new Vector3d(-1, 0, -9.8), new Vector3d(0.1, 0.2, 0.3));
+            var db = new StateDerivative(b.Velocity, new Vector3d(-2, 1, -9.8), new Vector3d(0.3, 0.2, 0.1));
+            var ordinary = new HermiteSegment(a, da, b, db);
+            double t = 0.1, h = 0.25, sFraction = t / h;
+            double s2 = sFraction * sFraction, s3 = s2 * sFraction;
+            double plain = (2 * s3 - 3 * s2 + 1) * a.Position.Y + (s3 - 2 * s2 + sFraction) * (a.Velocity.Y * h) + (3 * s2 - 2 * s3) * b.Position.Y + (s3 - s2) * (b.Velocity.Y * h);
+            Assert.That(ordinary.PositionAt(t).Y, Is.EqualTo(plain));
+        }
+
+        [Test]
         public void Reset_RefusedOnTheSurface_KeepsTheCounters()
         {
             // Reset zeroed the counters before it found the roll it starts non-finite, so a refused Reset changed them.

@@ -17,7 +17,7 @@ namespace MagnusBall.Aerodynamics
     /// <c>golf</c> preset flies, with the floor a refitted once to 24 TrackMan shots (docs/presets.md).
     /// Immutable, allocation-free; the formula is in <see cref="Evaluate"/>.</para>
     /// </remarks>
-    public sealed class GolfSpinReynoldsDrag : IDragModel
+    public sealed class GolfSpinReynoldsDrag : IDragModel, ISpinLinearDrag
     {
         /// <summary>Creates the law.</summary>
         /// <param name="floor">a, C_D above the crisis at zero spin; finite, &gt;= 0.</param>
@@ -77,6 +77,9 @@ namespace MagnusBall.Aerodynamics
             // exp overflows to +inf far above the crisis, where c/inf = 0 is the right limit; no NaN for Re >= 0.
             return Floor + SpinSlope * s + CrisisRise / (1.0 + PortableMath.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
         }
+
+        double ISpinLinearDrag.CoefficientWithoutSpin(in AeroConditions conditions) =>
+            Floor + CrisisRise / (1.0 + PortableMath.Exp((conditions.ReynoldsNumber - CrisisReynolds) / CrisisWidth));
 
         /// <inheritdoc />
         public override string ToString() =>

@@ -8,7 +8,7 @@ namespace MagnusBall.Aerodynamics
     /// the supercritical range of a driven ball (Re above about 7e4); the origin of the spin term is not
     /// documented in the secondary source.
     /// </remarks>
-    public sealed class LinearSpinDrag : IDragModel
+    public sealed class LinearSpinDrag : IDragModel, ISpinLinearDrag
     {
         /// <summary>Creates the law C_D = <paramref name="intercept"/> + <paramref name="slope"/> S.</summary>
         /// <param name="intercept">a, C_D at zero spin; finite and &gt;= 0.</param>
@@ -44,5 +44,9 @@ namespace MagnusBall.Aerodynamics
 
         /// <inheritdoc />
         public override string ToString() => $"LinearSpinDrag({Intercept:R} + {Slope:R} S)";
+
+        double ISpinLinearDrag.SpinSlope => Slope;
+
+        double ISpinLinearDrag.CoefficientWithoutSpin(in AeroConditions conditions) => Intercept;
     }
 }

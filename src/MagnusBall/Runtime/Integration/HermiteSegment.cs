@@ -109,7 +109,7 @@ namespace MagnusBall.Integration
                 return Start.Position; // the default segment (no step yet)
             }
 
-            return Cubic(Start.Position, StartDerivative.Velocity * h, End.Position, EndDerivative.Velocity * h, (time - Start.Time) / h);
+            return Cubic(Start.Position, StartDerivative.Velocity, End.Position, EndDerivative.Velocity, h, (time - Start.Time) / h);
         }
 
         /// <summary>Interpolated velocity at <paramref name="time"/>, m/s (its own Hermite cubic from v and a).</summary>
@@ -122,7 +122,7 @@ namespace MagnusBall.Integration
                 return Start.Velocity;
             }
 
-            return Cubic(Start.Velocity, StartDerivative.Acceleration * h, End.Velocity, EndDerivative.Acceleration * h, (time - Start.Time) / h);
+            return Cubic(Start.Velocity, StartDerivative.Acceleration, End.Velocity, EndDerivative.Acceleration, h, (time - Start.Time) / h);
         }
 
         /// <summary>Interpolated angular velocity at <paramref name="time"/>, rad/s.</summary>
@@ -135,9 +135,7 @@ namespace MagnusBall.Integration
                 return Start.AngularVelocity;
             }
 
-            return Cubic(
-                Start.AngularVelocity, StartDerivative.AngularAcceleration * h, End.AngularVelocity, EndDerivative.AngularAcceleration * h,
-                (time - Start.Time) / h);
+            return Cubic(Start.AngularVelocity, StartDerivative.AngularAcceleration, End.AngularVelocity, EndDerivative.AngularAcceleration, h, (time - Start.Time) / h);
         }
 
         /// <summary>The full interpolated state at <paramref name="time"/> (position, velocity, spin, time).</summary>
@@ -307,8 +305,12 @@ namespace MagnusBall.Integration
             return y0 * d00 + m0 * d10 + y1 * d01 + m1 * d11;
         }
 
+        // The cubic Hermite through (y0, d0) and (y1, d1) over a step h, at fraction s. A component that overflows although
+        // its ends are finite (values near double.MaxValue, or slopes whose d h overflows) is evaluated again with every
+        // input scaled by 2^-600 and the result scaled back: infinite then only when the interpolated value itself
+        // exceeds double.MaxValue. Finite results are the plain formula's, bit for bit.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector3d Cubic(in Vector3d y0, in Vector3d m0, in Vector3d y1, in Vector3d m1, double s)
+        private static Vector3d Cubic(in Vector3d y0, in Vector3d d0, in Vector3d y1, in Vector3d d1, double h, double s)
         {
             double s2 = s * s;
             double s3 = s2 * s;
@@ -316,10 +318,26 @@ namespace MagnusBall.Integration
             double h10 = s3 - 2 * s2 + s;
             double h01 = 3 * s2 - 2 * s3;
             double h11 = s3 - s2;
-            return new Vector3d(
-                h00 * y0.X + h10 * m0.X + h01 * y1.X + h11 * m1.X,
-                h00 * y0.Y + h10 * m0.Y + h01 * y1.Y + h11 * m1.Y,
-                h00 * y0.Z + h10 * m0.Z + h01 * y1.Z + h11 * m1.Z);
+            double x = h00 * y0.X + h10 * (d0.X * h) + h01 * y1.X + h11 * (d1.X * h);
+            double y = h00 * y0.Y + h10 * (d0.Y * h) + h01 * y1.Y + h11 * (d1.Y * h);
+            double z = h00 * y0.Z + h10 * (d0.Z * h) + h01 * y1.Z + h11 * (d1.Z * h);
+            if (!double.IsFinite(x + y + z))
+            {
+                x = double.IsFinite(x) ? x : Scaled(h00, h10, h01, h11, y0.X, d0.X, y1.X, d1.X, h);
+                y = double.IsFinite(y) ? y : Scaled(h00, h10, h01, h11, y0.Y, d0.Y, y1.Y, d1.Y, h);
+                z = double.IsFinite(z) ? z : Scaled(h00, h10, h01, h11, y0.Z, d0.Z, y1.Z, d1.Z, h);
+            }
+
+            return new Vector3d(x, y, z);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static double Scaled(double h00, double h10, double h01, double h11, double y0, double d0, double y1, double d1, double h)
+        {
+            const double Down = 2.409919865102884e-181; // 2^-600
+            const double Up = 4.149515568880993e+180;    // 2^600
+            double value = h00 * (y0 * Down) + h10 * ((d0 * Down) * h) + h01 * (y1 * Down) + h11 * ((d1 * Down) * h);
+            return value * Up;
         }
 
         /// <summary>
