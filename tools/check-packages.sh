@@ -13,7 +13,7 @@ check() { # package nuspec-text what pattern
   if ! grep -Eq "$4" <<<"$2"; then echo "check-packages: $1: $3 missing (expected /$4/)" >&2; failed=1; fi
 }
 for id in MagnusBall MagnusBall.Cli; do
-  nupkg=$(ls "$out"/"$id".[0-9]*.nupkg 2>/dev/null | head -n 1)
+  nupkg=$(ls "$out"/"$id".[0-9]*.nupkg 2>/dev/null | sed -n 1p)
   if [ -z "$nupkg" ]; then echo "check-packages: no $id .nupkg in $out" >&2; failed=1; continue; fi
   nuspec=$(unzip -p "$nupkg" "$id.nuspec")
   check "$id" "$nuspec" "readme" '<readme>README.md</readme>'
@@ -21,7 +21,10 @@ for id in MagnusBall MagnusBall.Cli; do
   check "$id" "$nuspec" "repository URL and type" '<repository type="git" url="https://[^"]+"'
   check "$id" "$nuspec" "project URL" '<projectUrl>https://[^<]+</projectUrl>'
   check "$id" "$nuspec" "tags" '<tags>[^<]*magnus[^<]*</tags>'
-  unzip -l "$nupkg" | grep -q ' README.md$' || { echo "check-packages: $id: README.md not inside the package" >&2; failed=1; }
+  # The listing is read whole first: `unzip -l | grep -q` under pipefail fails at random when grep exits before unzip
+  # has written everything (SIGPIPE).
+  listing=$(unzip -l "$nupkg")
+  grep -q ' README.md$' <<<"$listing" || { echo "check-packages: $id: README.md not inside the package" >&2; failed=1; }
   [ -f "${nupkg%.nupkg}.snupkg" ] || { echo "check-packages: $id: no symbols package ${nupkg%.nupkg}.snupkg" >&2; failed=1; }
 done
 [ "$failed" -eq 0 ] && echo "check-packages: MagnusBall and MagnusBall.Cli packages carry readme, licence, repository, project URL, tags and symbols ($out)"

@@ -14,7 +14,7 @@ if ! command -v mono >/dev/null 2>&1 || [ ! -f /usr/lib/mono/4.5/Facades/netstan
   apt-get update -qq
   apt-get install -y -qq mono-devel >/dev/null
 fi
-mono --version | head -n 1
+mono --version | sed -n 1p
 
 dotnet build tests/MagnusBall.Tests.Mono -c Release -nologo -v quiet
 mono artifacts/bin/MagnusBall.Tests.Mono/release/MagnusBall.Tests.exe "$@"

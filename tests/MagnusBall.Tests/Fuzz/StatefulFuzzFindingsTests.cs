@@ -193,6 +193,11 @@ namespace MagnusBall.Tests.Fuzz
             FlightState middle = segment.StateAt(0.5);
             Assert.That(middle.IsFinite, Is.True, middle.ToString());
             Assert.That(middle.Position.X, Is.EqualTo(1.7e308).Within(1e-12 * 1.7e308));
+            // Where the cubic itself overshoots what a double holds (1.7e308 + 2 x 1e308/8 = 1.95e308), the nearest finite value.
+            var rising = new FlightState(new Vector3d(1.7e308, 0, 0), new Vector3d(-1e308, 0, 0), Vector3d.Zero, 1);
+            var overshoot = new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
+                rising, new StateDerivative(rising.Velocity, Vector3d.Zero, Vector3d.Zero));
+            Assert.That(overshoot.StateAt(0.5).Position.X, Is.EqualTo(double.MaxValue));
             // An ordinary step is the plain formula, bit for bit (the scaled path is only taken on overflow).
             var a = new FlightState(new Vector3d(1, 2, 3), new Vector3d(4, 5, 6), new Vector3d(7, 8, 9), 0);
             var b = new FlightState(new Vector3d(2, 3, 1), new Vector3d(3, 2, 1), new Vector3d(9, 8, 7), 0.25);

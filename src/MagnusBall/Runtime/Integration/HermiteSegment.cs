@@ -307,8 +307,8 @@ namespace MagnusBall.Integration
 
         // The cubic Hermite through (y0, d0) and (y1, d1) over a step h, at fraction s. A component that overflows although
         // its ends are finite (values near double.MaxValue, or slopes whose d h overflows) is evaluated again with every
-        // input scaled by 2^-600 and the result scaled back: infinite then only when the interpolated value itself
-        // exceeds double.MaxValue. Finite results are the plain formula's, bit for bit.
+        // input scaled by 2^-600 and the result scaled back; where the interpolated value itself exceeds double.MaxValue
+        // it is held at +-double.MaxValue. Finite results are the plain formula's, bit for bit.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3d Cubic(in Vector3d y0, in Vector3d d0, in Vector3d y1, in Vector3d d1, double h, double s)
         {
@@ -337,7 +337,11 @@ namespace MagnusBall.Integration
             const double Down = 2.409919865102884e-181; // 2^-600
             const double Up = 4.149515568880993e+180;    // 2^600
             double value = h00 * (y0 * Down) + h10 * ((d0 * Down) * h) + h01 * (y1 * Down) + h11 * ((d1 * Down) * h);
-            return value * Up;
+            value *= Up;
+            // Still beyond double.MaxValue (or its terms are): the cubic between two finite ends overshoots what a double
+            // holds; the nearest finite value is given, so a state read between finite ends stays finite.
+            return value >= double.MaxValue || double.IsNaN(value) && h10 * d0 + h11 * d1 > 0 ? double.MaxValue
+                : value <= -double.MaxValue || double.IsNaN(value) ? -double.MaxValue : value;
         }
 
         /// <summary>
