@@ -227,22 +227,7 @@ namespace MagnusBall.Batch
         private void Place(int index, in FlightState state)
         {
             StateDerivative derivative = Model.Derivative(state);
-            _px[index] = state.Position.X;
-            _py[index] = state.Position.Y;
-            _pz[index] = state.Position.Z;
-            _vx[index] = state.Velocity.X;
-            _vy[index] = state.Velocity.Y;
-            _vz[index] = state.Velocity.Z;
-            _wx[index] = state.AngularVelocity.X;
-            _wy[index] = state.AngularVelocity.Y;
-            _wz[index] = state.AngularVelocity.Z;
-            _t[index] = state.Time;
-            _ax[index] = derivative.Acceleration.X;
-            _ay[index] = derivative.Acceleration.Y;
-            _az[index] = derivative.Acceleration.Z;
-            _sx[index] = derivative.AngularAcceleration.X;
-            _sy[index] = derivative.AngularAcceleration.Y;
-            _sz[index] = derivative.AngularAcceleration.Z;
+            Store(index, state, derivative);
             _active[index] = -1;
             _startsFlight[index] = true;
             _diverged[index] = false;
