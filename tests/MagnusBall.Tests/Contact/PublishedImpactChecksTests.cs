@@ -9,8 +9,8 @@ namespace MagnusBall.Tests.Contact
     /// <summary>
     /// The published checks of docs/impacts.md that the first version of the helpers did not meet: the 7-iron's
     /// ball speed (now a two-sided check with a sourced iron head mass and COR), the driver's tour spin (out of
-    /// reach of the rigid contact: shown, not tuned), and the hand-held racket's spin loss (which case the model is,
-    /// and what it gives in each regime).
+    /// reach of the rigid contact, with a point-mass head and with the measured head rotating: shown, not tuned), and
+    /// the hand-held racket's spin loss (which case the model is, and what it gives in each regime).
     /// </summary>
     [TestFixture]
     public class PublishedImpactChecksTests
@@ -81,7 +81,8 @@ namespace MagnusBall.Tests.Contact
             // published launch the rigid contact gives 3886 rpm (+50 %). Neither contact parameter brings it down:
             // friction above the grip threshold changes nothing (the ball grips and leaves rolling), and the grip
             // recoil e_x in Cross's range [0, 1] only raises the spin at a given launch. So the gap is not a coefficient
-            // to tune: docs/impacts.md names what the point-mass head leaves out.
+            // to tune. The head's rotation (Driver_TourSpin_StaysOutOfReach_WithTheMeasuredHeadsRotation) lowers it but does
+            // not close the gap either.
             double previous = 0;
             foreach (double ex in new[] { 0.0, 0.25, 0.5, 0.75, 1.0 })
             {
@@ -108,6 +109,120 @@ namespace MagnusBall.Tests.Contact
             TestContext.Out.WriteLine($"driver mu 0.032: {slipping.SpinRpm:F0} rpm, {slipping.Impact.Regime}");
             Assert.That(slipping.Impact.Regime, Is.EqualTo(BounceRegime.Slide));
             Assert.That(slipping.SpinRpm, Is.EqualTo(2599).Within(150));
+        }
+
+        /// <summary>
+        /// The driver head measured in Table 1 of "Adjusting a Momentum-Based Golf Clubhead-Ball Impact Model to Improve
+        /// Accuracy" (University of Waterloo and Ping, Proceedings 2020, 49(1), 47): 204 g, the CG 42.3 mm behind the face
+        /// centre along the face normal and 2.9 and 1 mm off it in the face plane, principal moments 2843, 5679 and 4085 g cm^2.
+        /// 5679 is taken about the axis up the face (the largest moment of a driver is about the near-vertical axis); which
+        /// of the other two is about the heel-toe axis, and which way the 2.9 mm points, the table does not say here: both
+        /// readings are the input range below.
+        /// </summary>
+        private static ClubHead MeasuredDriver(double impactHeight, bool heelToeIs4085) => heelToeIs4085
+            ? new ClubHead(0.204, 0.0423, impactHeight, 4.085e-4, 5.679e-4, 2.843e-4)
+            : new ClubHead(0.204, 0.0423, impactHeight, 2.843e-4, 5.679e-4, 4.085e-4);
+
+        private static double RigidLoftForLaunch(double speed, double attack, ClubHead head, double launchDegrees)
+        {
+            double lo = -5, hi = 60;
+            for (int i = 0; i < 60 && hi - lo > 1e-10; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (new ClubSwing(speed, mid, attack, 0, 0, head).Hit(Golf, ZUp, Vector3d.Zero).ElevationDegrees < launchDegrees)
+                {
+                    lo = mid;
+                }
+                else
+                {
+                    hi = mid;
+                }
+            }
+
+            return 0.5 * (lo + hi);
+        }
+
+        private static SwingLaunch RigidDriveAtThePublishedLaunch(ClubHead head) =>
+            new ClubSwing(113.2 * Mph, RigidLoftForLaunch(113.2 * Mph, -1.3, head, 10.8), -1.3, 0, 0, head).Hit(Golf, ZUp, Vector3d.Zero);
+
+        [Test]
+        public void Driver_TourSpin_StaysOutOfReach_WithTheMeasuredHeadsRotation()
+        {
+            // USGA/R&A 2015: 113.2 mph, attack -1.3 deg, 10.8 deg launch, 2599 rpm; the point-mass head gives 3886 rpm there.
+            // With the measured head rotating about its CG (ClubHead), at the published launch, over the input range: the
+            // impact on the CG's projection or 2.9 mm either side of it (the paper's in-face CG offset), and either reading
+            // of the heel-toe moment (2843 or 4085 g cm^2).
+            double lowest = double.PositiveInfinity, highest = 0;
+            foreach (bool heelToeIs4085 in new[] { true, false })
+            {
+                foreach (double height in new[] { -0.0029, 0.0, 0.0029 })
+                {
+                    SwingLaunch l = RigidDriveAtThePublishedLaunch(MeasuredDriver(height, heelToeIs4085));
+                    TestContext.Out.WriteLine(FormattableString.Invariant(
+                        $"heel-toe {(heelToeIs4085 ? 4085 : 2843)} g cm^2, impact {height * 1000:F1} mm above the CG projection: {l.Speed / Mph:F2} mph, {l.SpinRpm:F0} rpm, {l.Impact.Regime}"));
+                    Assert.That(l.Impact.Regime, Is.EqualTo(BounceRegime.Grip));
+                    lowest = Math.Min(lowest, l.SpinRpm);
+                    highest = Math.Max(highest, l.SpinRpm);
+                    // The ball speed stays within the driver's 3 % input budget (Driver_TourAverage_BallSpeed) of 167.7 mph.
+                    Assert.That(l.Speed / Mph, Is.EqualTo(167.7).Within(0.03 * 167.7));
+                }
+            }
+
+            // On the CG's projection the rotation takes spin off (friction along the face turns the head, 42 mm of lever),
+            // but over the whole input range the spin stays at least 15 % over the tour's: not met.
+            SwingLaunch centred = RigidDriveAtThePublishedLaunch(MeasuredDriver(0, true));
+            Assert.That(centred.SpinRpm, Is.LessThan(3886 * 0.96));
+            Assert.That(lowest, Is.GreaterThan(1.15 * 2599), "the input range's lowest spin");
+            TestContext.Out.WriteLine($"range {lowest:F0}-{highest:F0} rpm");
+
+            // What it would take: the impact height above the CG's projection that gives 2599 rpm (the spin falls as the
+            // impact rises: the vertical gear effect). It lies outside the measured head's +-2.9 mm.
+            foreach (bool heelToeIs4085 in new[] { true, false })
+            {
+                double lo = 0, hi = 0.03;
+                for (int i = 0; i < 50; i++)
+                {
+                    double mid = 0.5 * (lo + hi);
+                    if (RigidDriveAtThePublishedLaunch(MeasuredDriver(mid, heelToeIs4085)).SpinRpm > 2599)
+                    {
+                        lo = mid;
+                    }
+                    else
+                    {
+                        hi = mid;
+                    }
+                }
+
+                TestContext.Out.WriteLine(FormattableString.Invariant(
+                    $"heel-toe {(heelToeIs4085 ? 4085 : 2843)} g cm^2: 2599 rpm needs the impact {lo * 1000:F2} mm above the CG projection"));
+                Assert.That(lo, Is.GreaterThan(0.0029 * 1.5));
+            }
+        }
+
+        [Test]
+        public void VerticalGearEffect_TheSpinFallsAsTheImpactRises()
+        {
+            // The sign of the vertical gear effect (Tutelman, "All about gear effect - 2a", 2013: a centre hit with the CG level
+            // with the face centre gets about 825 rpm more backspin; higher impacts less): with the measured head at a fixed
+            // delivery (113.2 mph, loft 13.5 deg, attack -1.3 deg), the spin falls and the launch rises monotonically with
+            // the impact's height above the CG's projection; a CG level with the impact point (42.3 mm straight back, the
+            // impact 42.3 sin(loft) mm below the CG's projection) gives more spin than the point-mass head.
+            double previousSpin = double.PositiveInfinity, previousLaunch = double.NegativeInfinity;
+            for (double height = -0.012; height <= 0.0120001; height += 0.001)
+            {
+                SwingLaunch l = new ClubSwing(113.2 * Mph, 13.5, -1.3, 0, 0, MeasuredDriver(height, true)).Hit(Golf, ZUp, Vector3d.Zero);
+                Assert.That(l.SpinRpm, Is.LessThan(previousSpin), $"{height * 1000:F0} mm");
+                Assert.That(l.ElevationDegrees, Is.GreaterThan(previousLaunch), $"{height * 1000:F0} mm");
+                previousSpin = l.SpinRpm;
+                previousLaunch = l.ElevationDegrees;
+            }
+
+            double loft = 13.5 * Math.PI / 180;
+            var level = new ClubHead(0.204, 0.0423 * Math.Cos(loft), -0.0423 * Math.Sin(loft), 4.085e-4, 5.679e-4, 2.843e-4);
+            SwingLaunch behind = new ClubSwing(113.2 * Mph, 13.5, -1.3, 0, 0, level).Hit(Golf, ZUp, Vector3d.Zero);
+            SwingLaunch point = new ClubSwing(113.2 * Mph, 13.5, -1.3, headMass: 0.204).Hit(Golf, ZUp, Vector3d.Zero);
+            TestContext.Out.WriteLine($"CG level with the impact: {behind.SpinRpm:F0} rpm; point mass {point.SpinRpm:F0} rpm");
+            Assert.That(behind.SpinRpm, Is.GreaterThan(point.SpinRpm));
         }
 
         [TestCase(RacketSwing.CentreRestitution, 0.911, 0.784)]

@@ -88,6 +88,35 @@ namespace MagnusBall.Tests.Contact
             Assert.That(grips, Is.GreaterThan(100));
         }
 
+        [Test]
+        public void OnTheCgProjection_TheHeadIsAPointMassAlongTheNormal_AndLighterAlongTheFace()
+        {
+            // With the impact on the CG's projection (impact height 0) the normal force passes through the CG and only
+            // friction turns the head, about the heel-toe axis with the lever D: K is diagonal, with 1/M along the normal and
+            // 1/M + D^2/I along the face (in the D-plane). So a gripping, square delivery gives the point-mass normal velocity
+            // and the point-mass friction impulse (and spin) scaled by K_tt(point)/K_tt(rigid), where
+            // K_tt = (1/m)(1 + 1/alpha) + 1/M [+ D^2/I]. Closed form, to rounding (1e-12).
+            double m = Golf.Mass, alpha = Golf.InertiaFactor, mass = 0.204, depth = 0.0423, inertia = 4.085e-4;
+            double pointCompliance = (1 + 1 / alpha) / m + 1 / mass;
+            double ratio = pointCompliance / (pointCompliance + depth * depth / inertia);
+            foreach (double loft in new[] { 5.0, 10.8, 13.5, 25.0, 40.0 })
+            {
+                var point = new ClubSwing(50, loft, -1.3, headMass: mass).Hit(Golf, ZUp, Vector3d.Zero);
+                var rigid = new ClubSwing(50, loft, -1.3, 0, 0, new ClubHead(mass, depth, 0, inertia, 5.679e-4, 2.843e-4)).Hit(Golf, ZUp, Vector3d.Zero);
+                var club = new ClubSwing(50, loft, -1.3);
+                Vector3d n = club.FaceNormal(ZUp);
+                Assert.That(point.Impact.Regime, Is.EqualTo(BounceRegime.Grip));
+                Assert.That(rigid.Impact.Regime, Is.EqualTo(BounceRegime.Grip));
+                Assert.That(Vector3d.Dot(rigid.Impact.Impulse, n), Is.EqualTo(Vector3d.Dot(point.Impact.Impulse, n)).Within(1e-12 * point.Impact.Impulse.Length));
+                Vector3d pointAlong = point.Impact.Impulse - n * Vector3d.Dot(point.Impact.Impulse, n);
+                Vector3d rigidAlong = rigid.Impact.Impulse - n * Vector3d.Dot(rigid.Impact.Impulse, n);
+                Assert.That((rigidAlong - pointAlong * ratio).Length, Is.LessThan(1e-12 * point.Impact.Impulse.Length), $"loft {loft}");
+                Assert.That(rigid.SpinRate, Is.EqualTo(point.SpinRate * ratio).Within(1e-10 * point.SpinRate), $"loft {loft}");
+            }
+
+            TestContext.Out.WriteLine($"spin and friction impulse ratio {ratio:F4}; effective mass along the face {1 / (1 / mass + depth * depth / inertia):F4} kg");
+        }
+
         private static (Vector3d N, RigidBodyInertia Body, Vector3d V, Vector3d W, ContactProperties Contact) RandomRigidImpact(Random random)
         {
             Vector3d n = CrossBounceTests.RandomUnit(random);
