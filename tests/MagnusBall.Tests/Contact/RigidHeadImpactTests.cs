@@ -272,6 +272,37 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void ExtremeHeads_GiveFiniteLaunches()
+        {
+            // The corners of ClubHead's ranges (the lightest head with the smallest moments and the longest levers, the
+            // heaviest, a point mass along one axis only) and club speeds from 0.01 to 1000 m/s: every launch is finite, and
+            // the ball never leaves faster than (1 + e) times the club speed plus rounding (a body at rest in its own frame).
+            var heads = new[]
+            {
+                new ClubHead(1e-6, 0.2, 0.05, 1e-9, 1e-9, 1e-9),
+                new ClubHead(1e-6, 0.2, -0.05, 1e-9, double.PositiveInfinity, double.PositiveInfinity),
+                new ClubHead(1e6, 0.2, 0.05, 1e-9, 1e-9, 1e-9),
+                new ClubHead(0.2, 0, 0.05, 1e-9, 1e6, double.PositiveInfinity),
+            };
+            var random = new Random(99);
+            foreach (ClubHead head in heads)
+            {
+                foreach (double speed in new[] { 0.01, 1, 50, 1000 })
+                {
+                    for (int i = 0; i < 200; i++)
+                    {
+                        var club = new ClubSwing(speed, -10 + 90 * random.NextDouble(), -45 + 90 * random.NextDouble(), -45 + 90 * random.NextDouble(),
+                            -45 + 90 * random.NextDouble(), head, random.NextDouble(), 2 * random.NextDouble());
+                        SwingLaunch l = club.Hit(Golf, ZUp, Vector3d.Zero);
+                        Assert.That(double.IsFinite(l.Velocity.X + l.Velocity.Y + l.Velocity.Z), $"{head} {club}");
+                        Assert.That(double.IsFinite(l.AngularVelocity.X + l.AngularVelocity.Y + l.AngularVelocity.Z), $"{head} {club}");
+                        Assert.That(l.Speed, Is.LessThanOrEqualTo(2 * speed * (1 + 1e-9)), $"{head} {club}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void BadInput_IsRefused_NamingTheParameter()
         {
             static void Check(string name, TestDelegate action)
@@ -282,6 +313,8 @@ namespace MagnusBall.Tests.Contact
 
             Check("mass", () => new ClubHead(0));
             Check("mass", () => new ClubHead(double.NaN));
+            Check("mass", () => new ClubHead(1e-7));
+            Check("heelToeInertia", () => new ClubHead(0.2, 0.04, 0, 1e-10));
             Check("centerOfGravityDepth", () => new ClubHead(0.2, -0.001));
             Check("centerOfGravityDepth", () => new ClubHead(0.2, 0.3));
             Check("impactHeight", () => new ClubHead(0.2, 0.04, 0.06));

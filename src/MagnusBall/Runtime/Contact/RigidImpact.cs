@@ -118,6 +118,16 @@ namespace MagnusBall.Contact
             double a = Vector3d.Dot(n, kn), b = Vector3d.Dot(n, k1), c = Vector3d.Dot(n, k2);
             double d = Vector3d.Dot(t1, k1), f = Vector3d.Dot(t1, k2), g = Vector3d.Dot(t2, k2);
 
+            // Scale K to a largest diagonal entry of 1 (the impulses come out in kg times that scale) so that Cramer's
+            // products cannot overflow for a very light or very compliant body.
+            double scale = 1.0 / Math.Max(a, Math.Max(d, g));
+            a *= scale;
+            b *= scale;
+            c *= scale;
+            d *= scale;
+            f *= scale;
+            g *= scale;
+
             // The impulse that ends the slip: K P = (1 + e) vn n - slip.
             Solve(a, b, c, d, f, g, (1 + ey) * vn, -slipSpeed, 0, out double pn, out double p1, out double p2);
             double mu = contact.Friction;
@@ -126,7 +136,7 @@ namespace MagnusBall.Contact
                 // Grip: the slip recoils to -e_x of its incoming value.
                 double recoil = (1 + contact.TangentialRestitution) * slipSpeed;
                 Solve(a, b, c, d, f, g, (1 + ey) * vn, -recoil, 0, out pn, out p1, out p2);
-                impulse = n * pn + t1 * p1 + t2 * p2;
+                impulse = (n * pn + t1 * p1 + t2 * p2) * scale;
                 regime = BounceRegime.Grip;
                 return;
             }
@@ -135,17 +145,17 @@ namespace MagnusBall.Contact
             // it stays positive for a coupling |b| < a/mu (every club head: b/a is below 0.05 there); a body that
             // would make it vanish (a friction-locked jam) is resolved as a grip.
             double denominator = a - mu * b;
-            if (!(denominator > 1e-12 * a))
+            if (!(denominator > 1e-12))
             {
                 double recoil = (1 + contact.TangentialRestitution) * slipSpeed;
                 Solve(a, b, c, d, f, g, (1 + ey) * vn, -recoil, 0, out pn, out p1, out p2);
-                impulse = n * pn + t1 * p1 + t2 * p2;
+                impulse = (n * pn + t1 * p1 + t2 * p2) * scale;
                 regime = BounceRegime.Grip;
                 return;
             }
 
             pn = (1 + ey) * vn / denominator;
-            impulse = (n - t1 * mu) * pn;
+            impulse = (n - t1 * mu) * (pn * scale);
             regime = BounceRegime.Slide;
         }
 

@@ -20,23 +20,38 @@ namespace MagnusBall.Contact.Swings
     public readonly struct ClubHead
     {
         /// <summary>Creates a head.</summary>
-        /// <param name="mass">The head's mass, kg; finite and &gt; 0.</param>
+        /// <param name="mass">The head's mass, kg; finite and &gt;= 1e-6 (a milligram).</param>
         /// <param name="centerOfGravityDepth">The CG's distance behind the impact point along the face normal, m; in [0, 0.2].</param>
         /// <param name="impactHeight">The impact point's distance up the face above the CG's projection on the face, m; in [-0.05, 0.05].</param>
-        /// <param name="heelToeInertia">The moment of inertia about the heel-toe axis through the CG, kg m^2; &gt; 0, or positive infinity.</param>
-        /// <param name="verticalInertia">About the axis up the face through the CG, kg m^2; &gt; 0, or positive infinity.</param>
-        /// <param name="faceNormalInertia">About the face-normal axis through the CG, kg m^2; &gt; 0, or positive infinity.</param>
+        /// <param name="heelToeInertia">The moment of inertia about the heel-toe axis through the CG, kg m^2; &gt;= 1e-9 (0.01 g cm^2), or positive infinity.</param>
+        /// <param name="verticalInertia">About the axis up the face through the CG, kg m^2; &gt;= 1e-9, or positive infinity.</param>
+        /// <param name="faceNormalInertia">About the face-normal axis through the CG, kg m^2; &gt;= 1e-9, or positive infinity.</param>
         /// <exception cref="ArgumentException">A value is outside its range; the message names it.</exception>
         public ClubHead(
             double mass, double centerOfGravityDepth = 0, double impactHeight = 0, double heelToeInertia = double.PositiveInfinity,
             double verticalInertia = double.PositiveInfinity, double faceNormalInertia = double.PositiveInfinity)
         {
-            Mass = Require.Positive(mass, nameof(mass));
+            Mass = Require.InRange(mass, MinimumMass, double.MaxValue, nameof(mass));
             CenterOfGravityDepth = Require.InRange(centerOfGravityDepth, 0, 0.2, nameof(centerOfGravityDepth));
             ImpactHeight = Require.InRange(impactHeight, -0.05, 0.05, nameof(impactHeight));
             HeelToeInertia = RequireMoment(heelToeInertia, nameof(heelToeInertia));
             VerticalInertia = RequireMoment(verticalInertia, nameof(verticalInertia));
             FaceNormalInertia = RequireMoment(faceNormalInertia, nameof(faceNormalInertia));
+        }
+
+        /// <summary>The smallest head mass, kg (a milligram).</summary>
+        internal const double MinimumMass = 1e-6;
+
+        /// <summary>The smallest moment of inertia, kg m^2 (0.01 g cm^2).</summary>
+        internal const double MinimumMoment = 1e-9;
+
+        /// <summary>A point mass of any positive mass (already checked by the caller): ClubSwing's first constructor.</summary>
+        internal ClubHead(double checkedMass, bool pointMass)
+        {
+            Mass = checkedMass;
+            CenterOfGravityDepth = 0;
+            ImpactHeight = 0;
+            HeelToeInertia = VerticalInertia = FaceNormalInertia = double.PositiveInfinity;
         }
 
         /// <summary>
@@ -49,7 +64,7 @@ namespace MagnusBall.Contact.Swings
         public static ClubHead MeasuredDriver => new ClubHead(0.204, 0.0423, 0, 4.085e-4, 5.679e-4, 2.843e-4);
 
         /// <summary>A point-mass head of <paramref name="mass"/> kg (no rotation during the impact).</summary>
-        /// <param name="mass">kg; finite and &gt; 0.</param>
+        /// <param name="mass">kg; finite and &gt;= 1e-6.</param>
         /// <exception cref="ArgumentException">The mass is outside its range.</exception>
         public static ClubHead PointMass(double mass) => new ClubHead(mass);
 
@@ -90,13 +105,13 @@ namespace MagnusBall.Contact.Swings
 
         private static double RequireMoment(double value, string name)
         {
-            if (double.IsPositiveInfinity(value) || (double.IsFinite(value) && value > 0))
+            if (double.IsPositiveInfinity(value) || (double.IsFinite(value) && value >= MinimumMoment))
             {
                 return value;
             }
 
             throw new ArgumentOutOfRangeException(
-                name, value, $"{name} must be > 0 kg m^2 (positive infinity: the head does not rotate about that axis); got {Require.Format(value)}.");
+                name, value, $"{name} must be >= {Require.Format(MinimumMoment)} kg m^2 (positive infinity: the head does not rotate about that axis); got {Require.Format(value)}.");
         }
     }
 }

@@ -52,7 +52,7 @@ namespace MagnusBall.Contact.Swings
             AttackAngleDegrees = Require.InRange(attackAngleDegrees, -45, 45, nameof(attackAngleDegrees));
             FaceAngleDegrees = Require.InRange(faceAngleDegrees, -45, 45, nameof(faceAngleDegrees));
             ClubPathDegrees = Require.InRange(clubPathDegrees, -45, 45, nameof(clubPathDegrees));
-            Head = ClubHead.PointMass(Require.Positive(headMass, nameof(headMass)));
+            Head = new ClubHead(Require.Positive(headMass, nameof(headMass)), pointMass: true);
             Restitution = Require.InRange(restitution, 0, 1, nameof(restitution));
             Friction = Require.NonNegative(friction, nameof(friction));
         }
