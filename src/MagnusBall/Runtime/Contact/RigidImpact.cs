@@ -77,7 +77,9 @@ namespace MagnusBall.Contact
     /// grip when the impulse that ends the slip lies inside the friction cone (the final slip then recoils to -e_x of
     /// its incoming value), else a slide along the incoming slip direction with friction mu times the normal impulse.
     /// With K isotropic along the face and uncoupled (a point mass) this is <see cref="Impact"/>'s law.
-    /// Allocation-free; inputs are not checked (callers do).
+    /// Where the coupling is strong enough that this would create energy, or a slide would push the slip past zero
+    /// (bodies far from any club head, or a nearly frictionless face well off the path), the impulse is taken in two
+    /// dissipative steps instead (normal, then tangential; see Sequential). Allocation-free; inputs are not checked (callers do).
     /// </summary>
     internal static class RigidImpact
     {
@@ -89,7 +91,14 @@ namespace MagnusBall.Contact
         internal static void Resolve(
             double mass, double radius, double alpha, in RigidBodyInertia body, in Vector3d n, in Vector3d v1, in Vector3d w1,
             in ContactProperties contact, out Vector3d impulse, out BounceRegime regime, out double ey, out double vn)
+            => Resolve(mass, radius, alpha, body, n, v1, w1, contact, out impulse, out regime, out ey, out vn, out _);
+
+        /// <summary>As above; <paramref name="coupled"/> tells whether the coupled solution stood (false: the two-step fallback, or no impact).</summary>
+        internal static void Resolve(
+            double mass, double radius, double alpha, in RigidBodyInertia body, in Vector3d n, in Vector3d v1, in Vector3d w1,
+            in ContactProperties contact, out Vector3d impulse, out BounceRegime regime, out double ey, out double vn, out bool coupled)
         {
+            coupled = false;
             vn = -Vector3d.Dot(v1, n);
             if (!(vn > 0))
             {
@@ -129,34 +138,83 @@ namespace MagnusBall.Contact
             g *= scale;
 
             // The impulse that ends the slip: K P = (1 + e) vn n - slip.
-            Solve(a, b, c, d, f, g, (1 + ey) * vn, -slipSpeed, 0, out double pn, out double p1, out double p2);
             double mu = contact.Friction;
+            double recoil = (1 + contact.TangentialRestitution) * slipSpeed;
+            Solve(a, b, c, d, f, g, (1 + ey) * vn, -slipSpeed, 0, out double pn, out double p1, out double p2);
             if (slipSpeed == 0 || p1 * p1 + p2 * p2 <= mu * mu * pn * pn)
             {
                 // Grip: the slip recoils to -e_x of its incoming value.
-                double recoil = (1 + contact.TangentialRestitution) * slipSpeed;
                 Solve(a, b, c, d, f, g, (1 + ey) * vn, -recoil, 0, out pn, out p1, out p2);
-                impulse = (n * pn + t1 * p1 + t2 * p2) * scale;
                 regime = BounceRegime.Grip;
-                return;
             }
-
-            // Slide: P = Pn (n - mu t1), Pn from the normal condition n.K P = (1 + e) vn. The denominator is a - mu b;
-            // it stays positive for a coupling |b| < a/mu (every club head: b/a is below 0.05 there); a body that
-            // would make it vanish (a friction-locked jam) is resolved as a grip.
-            double denominator = a - mu * b;
-            if (!(denominator > 1e-12))
+            else
             {
-                double recoil = (1 + contact.TangentialRestitution) * slipSpeed;
-                Solve(a, b, c, d, f, g, (1 + ey) * vn, -recoil, 0, out pn, out p1, out p2);
-                impulse = (n * pn + t1 * p1 + t2 * p2) * scale;
-                regime = BounceRegime.Grip;
-                return;
+                // Slide: P = Pn (n - mu t1), Pn from the normal condition n.K P = (1 + e) vn, denominator a - mu b.
+                double denominator = a - mu * b;
+                pn = denominator > 1e-12 ? (1 + ey) * vn / denominator : double.PositiveInfinity;
+                p1 = -mu * pn;
+                p2 = 0;
+                regime = BounceRegime.Slide;
             }
 
-            pn = (1 + ey) * vn / denominator;
-            impulse = (n - t1 * mu) * (pn * scale);
-            regime = BounceRegime.Slide;
+            // The coupled solution stands unless the coupling is strong enough to break it: it would create energy
+            // (Newton's COR with a coupled K can), a slide would reverse the slip (friction pushing past zero slip), or the
+            // slide's normal impulse has no finite solution (a friction jam). Then the impulse is taken in two steps that
+            // each dissipate energy (Sequential). No club head comes near this (RigidHeadImpactTests counts it).
+            coupled = double.IsFinite(pn) && pn > 0;
+            if (coupled)
+            {
+                double kp0 = a * pn + b * p1 + c * p2, kp1 = b * pn + d * p1 + f * p2, kp2 = c * pn + f * p1 + g * p2;
+                double work = -pn * vn + p1 * slipSpeed; // P . u1 in the scaled basis
+                double energyChange = work + 0.5 * (pn * kp0 + p1 * kp1 + p2 * kp2);
+                bool reverses = regime == BounceRegime.Slide && slipSpeed + kp1 < 0;
+                coupled = !reverses && energyChange <= 1e-12 * Math.Abs(work);
+            }
+
+            if (!coupled)
+            {
+                Sequential(a, b, c, d, f, g, vn, slipSpeed, ey, mu, contact.TangentialRestitution, out pn, out p1, out p2, out regime);
+            }
+
+            impulse = (n * pn + t1 * p1 + t2 * p2) * scale;
+        }
+
+        /// <summary>
+        /// The two-step impulse for a strongly coupled contact, in the scaled basis (n, t1, t2): first a frictionless
+        /// normal impulse (1 + e) vn / K_nn, which dissipates (1 - e^2) of the normal energy; then the tangential
+        /// impulse for the slip it leaves, -(1 + e_x) K_tt^-1 u' if the zero-slip impulse K_tt^-1 u' lies inside the friction
+        /// cone, else mu P_n along it (either dissipates: it is a fraction s in [0, 2] of the slip-ending impulse in K's
+        /// metric); last, if the ball would still approach the face, a plastic normal impulse stops it (dissipates too).
+        /// With an uncoupled K (a point mass) it is Cross's law.
+        /// </summary>
+        private static void Sequential(
+            double a, double b, double c, double d, double f, double g, double vn, double slipSpeed, double ey, double mu, double ex,
+            out double pn, out double p1, out double p2, out BounceRegime regime)
+        {
+            pn = (1 + ey) * vn / a;
+            double u1 = slipSpeed + b * pn, u2 = c * pn; // the slip after the normal step
+            double inverseDeterminant = 1.0 / (d * g - f * f);
+            double z1 = (g * u1 - f * u2) * inverseDeterminant, z2 = (d * u2 - f * u1) * inverseDeterminant; // K_tt^-1 u'
+            double length = Math.Sqrt(z1 * z1 + z2 * z2);
+            if (length <= mu * pn)
+            {
+                p1 = -(1 + ex) * z1;
+                p2 = -(1 + ex) * z2;
+                regime = BounceRegime.Grip;
+            }
+            else
+            {
+                double s = mu * pn / length;
+                p1 = -s * z1;
+                p2 = -s * z2;
+                regime = BounceRegime.Slide;
+            }
+
+            double separating = -vn + a * pn + b * p1 + c * p2;
+            if (separating < 0)
+            {
+                pn -= separating / a;
+            }
         }
 
         /// <summary>K x for an impulse x on the ball: the ball's (1/m)[x + (1/alpha)(x - n (n.x))] plus the body's.</summary>
