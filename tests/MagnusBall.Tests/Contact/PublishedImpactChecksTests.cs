@@ -200,6 +200,46 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void SevenIron_HeadRotation_ChangesLittle_ForAShallowCg()
+        {
+            // No sourced CG depth or heel-toe moment was found for an iron, so the 7-iron stays a point mass. Bound what the
+            // rotation could do with assumed values (not measurements): a CG up to 10 mm behind the face (an iron is a thin
+            // blade; its CG is "close behind the face") and a heel-toe moment of at least 1000 g cm^2 (a quarter of the
+            // driver's 4085), at the CG's projection. The spin then falls by the closed-form factor
+            // K_tt(point)/K_tt(rigid) at a fixed delivery, at most 1.3 % here, and at the published 16.3 deg launch the speed
+            // and spin stay within the checks' budgets (SevenIron_TourAverage_BallSpeed: 3 %).
+            const double e = 0.765;
+            var head = new ClubHead(SevenIronHeadMass, 0.010, 0, 1e-4, 2e-4, 1e-4);
+            double pointLoft = LoftForLaunch(90 * Mph, -4.3, SevenIronHeadMass, e, 16.3);
+            SwingLaunch point = new ClubSwing(90 * Mph, pointLoft, -4.3, headMass: SevenIronHeadMass, restitution: e).Hit(Golf, ZUp, Vector3d.Zero);
+            SwingLaunch sameDelivery = new ClubSwing(90 * Mph, pointLoft, -4.3, 0, 0, head, e).Hit(Golf, ZUp, Vector3d.Zero);
+            double compliance = (1 + 1 / Golf.InertiaFactor) / Golf.Mass + 1 / SevenIronHeadMass;
+            double factor = compliance / (compliance + 0.010 * 0.010 / 1e-4);
+            Assert.That(sameDelivery.SpinRpm / point.SpinRpm, Is.EqualTo(factor).Within(1e-10));
+            Assert.That(1 - factor, Is.LessThan(0.013));
+
+            double lo = -5, hi = 60;
+            for (int i = 0; i < 60 && hi - lo > 1e-10; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (new ClubSwing(90 * Mph, mid, -4.3, 0, 0, head, e).Hit(Golf, ZUp, Vector3d.Zero).ElevationDegrees < 16.3)
+                {
+                    lo = mid;
+                }
+                else
+                {
+                    hi = mid;
+                }
+            }
+
+            SwingLaunch rigid = new ClubSwing(90 * Mph, lo, -4.3, 0, 0, head, e).Hit(Golf, ZUp, Vector3d.Zero);
+            TestContext.Out.WriteLine(FormattableString.Invariant(
+                $"7-iron point mass: loft {pointLoft:F2}, {point.Speed / Mph:F2} mph, {point.SpinRpm:F0} rpm; rigid (10 mm, 1000 g cm^2): loft {lo:F2}, {rigid.Speed / Mph:F2} mph, {rigid.SpinRpm:F0} rpm; fixed-delivery factor {factor:F4}"));
+            Assert.That(rigid.Speed / Mph, Is.EqualTo(120).Within(0.03 * 120));
+            Assert.That(rigid.SpinRpm, Is.EqualTo(point.SpinRpm).Within(0.03 * point.SpinRpm));
+        }
+
+        [Test]
         public void VerticalGearEffect_TheSpinFallsAsTheImpactRises()
         {
             // The sign of the vertical gear effect (Tutelman, "All about gear effect - 2a", 2013: a centre hit with the CG level
