@@ -17,13 +17,13 @@ namespace MagnusBall.Contact.Swings
     /// <para><b>Speed.</b> A square, centred hit with no spin loft gives the smash factor bound (1 + e)/(1 + m/M): 1.488 for
     /// e = 0.83 (the USGA's COR limit 0.822 plus its 0.008 test tolerance), a 45.93 g ball and a 200 g head. Loft takes
     /// away normal speed (cos of the spin loft) and gives the ball a little speed along the face.</para>
-    /// <para><b>Model assumptions.</b> The head is a free body of mass <see cref="HeadMass"/> at the impact point (the
-    /// shaft adds nothing during the ~0.5 ms contact), the same effective mass along the face, a rigid face (no gear
-    /// effect, no face flex beyond the COR), friction <see cref="Friction"/> (default 0.4: an assumption, not traced to
-    /// a measurement) and no recoil of the slip (e_x = 0). With these, a lofted ball grips and leaves rolling on the
-    /// face: against TrackMan's tour averages at the published launch angles, the ball speed is within 3 % for the driver
-    /// and the 7-iron, the spin 50 % high for the driver and 25 % low for the 7-iron (docs/impacts.md: no contact
-    /// parameter fixes both; the head's rotation, not modelled, is the likely cause).</para>
+    /// <para><b>Model assumptions.</b> The head is a free body (the shaft adds nothing during the ~0.5 ms contact): a point
+    /// mass <see cref="HeadMass"/> at the impact point (the first constructor), or a rigid <see cref="ClubHead"/> that turns
+    /// about its centre of gravity (the second: the gear effect), a rigid face (no face flex beyond the COR), friction
+    /// <see cref="Friction"/> (default 0.4: an assumption, not traced to a measurement) and no recoil of the slip (e_x = 0).
+    /// With these, a lofted ball grips and leaves rolling on the face: against the tour averages at the published launch
+    /// angles, the ball speed is within 3 % for the driver and the 7-iron, the spin 50 % high for the driver (18-55 % high
+    /// with <see cref="ClubHead.MeasuredDriver"/>) and 25 % low for the 7-iron (docs/impacts.md).</para>
     /// </remarks>
     public readonly struct ClubSwing
     {
