@@ -376,7 +376,8 @@ namespace MagnusBall.Tests.Contact
         {
             // The corners of ClubHead's ranges (the lightest head with the smallest moments and the longest levers, the
             // heaviest, a point mass along one axis only) and club speeds from 0.01 to 1000 m/s: every launch is finite, and
-            // the ball never leaves faster than (1 + e) times the club speed plus rounding (a body at rest in its own frame).
+            // the ball never leaves faster than twice the club speed plus rounding (in the head's initial frame the ball comes in
+            // at the club speed and no impact with a body at rest raises its kinetic energy, so its speed there cannot grow).
             var heads = new[]
             {
                 new ClubHead(1e-6, 0.2, 0.05, 1e-9, 1e-9, 1e-9),
@@ -405,28 +406,41 @@ namespace MagnusBall.Tests.Contact
         [Test]
         public void BadInput_IsRefused_NamingTheParameter()
         {
-            static void Check(string name, TestDelegate action)
+            // Each refusal names the parameter and states the allowed range (or what was expected) in its message.
+            static void Check(string name, string allowed, TestDelegate action)
             {
                 ArgumentException ex = Assert.Catch<ArgumentException>(action)!;
                 Assert.That(ex.ParamName, Is.EqualTo(name));
+                Assert.That(ex.Message, Does.Contain(name));
+                Assert.That(ex.Message, Does.Contain(allowed));
             }
 
-            Check("mass", () => new ClubHead(0));
-            Check("mass", () => new ClubHead(double.NaN));
-            Check("mass", () => new ClubHead(1e-7));
-            Check("heelToeInertia", () => new ClubHead(0.2, 0.04, 0, 1e-10));
-            Check("centerOfGravityDepth", () => new ClubHead(0.2, -0.001));
-            Check("centerOfGravityDepth", () => new ClubHead(0.2, 0.3));
-            Check("impactHeight", () => new ClubHead(0.2, 0.04, 0.06));
-            Check("impactHeight", () => new ClubHead(0.2, 0.04, double.NaN));
-            Check("heelToeInertia", () => new ClubHead(0.2, 0.04, 0, 0));
-            Check("verticalInertia", () => new ClubHead(0.2, 0.04, 0, 4e-4, -1));
-            Check("faceNormalInertia", () => new ClubHead(0.2, 0.04, 0, 4e-4, 5e-4, double.NaN));
-            Check("faceNormalInertia", () => new ClubHead(0.2, 0.04, 0, 4e-4, 5e-4, double.NegativeInfinity));
-            Check("head", () => new ClubSwing(50, 10, 0, 0, 0, default(ClubHead)));
-            Check("dynamicLoftDegrees", () => new ClubSwing(50, 90, 0, 0, 0, ClubHead.MeasuredDriver));
-            Check("frame", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver).Hit(Golf, default, Vector3d.Zero));
-            Check("position", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver).Hit(Golf, ZUp, new Vector3d(double.NaN, 0, 0)));
+            Check("mass", ">= 1E-06 kg", () => new ClubHead(0));
+            Check("mass", ">= 1E-06 kg", () => new ClubHead(double.NaN));
+            Check("mass", ">= 1E-06 kg", () => new ClubHead(1e-7));
+            Check("mass", ">= 1E-06 kg", () => new ClubHead(double.PositiveInfinity));
+            Check("mass", ">= 1E-06 kg", () => ClubHead.PointMass(-0.2));
+            Check("mass", ">= 1E-06 kg", () => ClubHead.PointMass(double.NaN));
+            Check("centerOfGravityDepth", "[0, 0.2]", () => new ClubHead(0.2, -0.001));
+            Check("centerOfGravityDepth", "[0, 0.2]", () => new ClubHead(0.2, 0.3));
+            Check("centerOfGravityDepth", "[0, 0.2]", () => new ClubHead(0.2, double.PositiveInfinity));
+            Check("impactHeight", "[-0.05, 0.05]", () => new ClubHead(0.2, 0.04, 0.06));
+            Check("impactHeight", "[-0.05, 0.05]", () => new ClubHead(0.2, 0.04, double.NaN));
+            Check("heelToeInertia", ">= 1E-09 kg m^2", () => new ClubHead(0.2, 0.04, 0, 1e-10));
+            Check("heelToeInertia", ">= 1E-09 kg m^2", () => new ClubHead(0.2, 0.04, 0, 0));
+            Check("verticalInertia", ">= 1E-09 kg m^2", () => new ClubHead(0.2, 0.04, 0, 4e-4, -1));
+            Check("faceNormalInertia", ">= 1E-09 kg m^2", () => new ClubHead(0.2, 0.04, 0, 4e-4, 5e-4, double.NaN));
+            Check("faceNormalInertia", ">= 1E-09 kg m^2", () => new ClubHead(0.2, 0.04, 0, 4e-4, 5e-4, double.NegativeInfinity));
+            Check("head", "mass > 0 kg", () => new ClubSwing(50, 10, 0, 0, 0, default(ClubHead)));
+            Check("speed", "> 0", () => new ClubSwing(double.NaN, 10, 0, 0, 0, ClubHead.MeasuredDriver));
+            Check("dynamicLoftDegrees", "[-10, 80]", () => new ClubSwing(50, 90, 0, 0, 0, ClubHead.MeasuredDriver));
+            Check("attackAngleDegrees", "[-45, 45]", () => new ClubSwing(50, 10, double.PositiveInfinity, 0, 0, ClubHead.MeasuredDriver));
+            Check("faceAngleDegrees", "[-45, 45]", () => new ClubSwing(50, 10, 0, 46, 0, ClubHead.MeasuredDriver));
+            Check("clubPathDegrees", "[-45, 45]", () => new ClubSwing(50, 10, 0, 0, -46, ClubHead.MeasuredDriver));
+            Check("restitution", "[0, 1]", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver, 1.1));
+            Check("friction", ">= 0", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver, 0.8, -0.1));
+            Check("frame", "LaunchFrame", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver).Hit(Golf, default, Vector3d.Zero));
+            Check("position", "finite", () => new ClubSwing(50, 10, 0, 0, 0, ClubHead.MeasuredDriver).Hit(Golf, ZUp, new Vector3d(double.NaN, 0, 0)));
         }
     }
 }

@@ -31,7 +31,7 @@ namespace MagnusBall.Contact.Swings
             double mass, double centerOfGravityDepth = 0, double impactHeight = 0, double heelToeInertia = double.PositiveInfinity,
             double verticalInertia = double.PositiveInfinity, double faceNormalInertia = double.PositiveInfinity)
         {
-            Mass = Require.InRange(mass, MinimumMass, double.MaxValue, nameof(mass));
+            Mass = RequireMass(mass, nameof(mass));
             CenterOfGravityDepth = Require.InRange(centerOfGravityDepth, 0, 0.2, nameof(centerOfGravityDepth));
             ImpactHeight = Require.InRange(impactHeight, -0.05, 0.05, nameof(impactHeight));
             HeelToeInertia = RequireMoment(heelToeInertia, nameof(heelToeInertia));
@@ -102,6 +102,17 @@ namespace MagnusBall.Contact.Swings
         /// <inheritdoc />
         public override string ToString() => FormattableString.Invariant(
             $"ClubHead({Mass:R} kg, CG {CenterOfGravityDepth * 1000:F1} mm deep, impact {ImpactHeight * 1000:F1} mm above it, I {HeelToeInertia:G4}/{VerticalInertia:G4}/{FaceNormalInertia:G4} kg m^2)");
+
+        private static double RequireMass(double value, string name)
+        {
+            if (double.IsFinite(value) && value >= MinimumMass)
+            {
+                return value;
+            }
+
+            throw new ArgumentOutOfRangeException(
+                name, value, $"{name} must be finite and >= {Require.Format(MinimumMass)} kg; got {Require.Format(value)}.");
+        }
 
         private static double RequireMoment(double value, string name)
         {
