@@ -14,8 +14,11 @@ namespace MagnusBall.Contact.Swings
     /// are taken along the face's heel-toe axis, the axis up the face (near vertical for a driver) and the face normal
     /// (an assumption: products of inertia are dropped).</para>
     /// <para>The head rotates about its CG during the impact: the normal force has the lever <see cref="ImpactHeight"/>
-    /// about the heel-toe axis, friction along the face the lever <see cref="CenterOfGravityDepth"/> (golf's vertical
-    /// and horizontal gear effect). docs/impacts.md gives the sources and what the rotation does to a driver's spin.</para>
+    /// about the heel-toe axis (golf's vertical gear effect), friction along the face the lever
+    /// <see cref="CenterOfGravityDepth"/> (about the heel-toe axis for friction up the face, about the vertical axis for
+    /// friction across it when face and path differ). An impact toward the heel or the toe is not a parameter, so the
+    /// horizontal gear effect of a heel or toe hit (the normal force's lever about the vertical axis) is not modelled.
+    /// docs/impacts.md gives the sources and what the rotation does to a driver's spin.</para>
     /// </remarks>
     public readonly struct ClubHead
     {
