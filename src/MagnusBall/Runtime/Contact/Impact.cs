@@ -95,7 +95,11 @@ namespace MagnusBall.Contact
         /// <summary>The ball's speed into the face relative to it, m/s (0 when not approaching).</summary>
         public readonly double IncomingNormalSpeed;
 
-        /// <summary>The change of the body's surface velocity at the contact point, m/s: -Impulse / EffectiveMass (zero for an immovable body).</summary>
+        /// <summary>
+        /// The change of the body's surface velocity at the contact point, m/s: -Impulse / EffectiveMass (zero for an immovable
+        /// body); for a rigid club head (<see cref="Swings.ClubSwing"/> with a rotating <see cref="Swings.ClubHead"/>) it includes the
+        /// head's rotation about its centre of gravity: -(Impulse / M + (I^-1 (r x Impulse)) x r), r from the CG to the contact.
+        /// </summary>
         public readonly Vector3d BodyVelocityChange;
 
         /// <summary>Creates an outcome.</summary>

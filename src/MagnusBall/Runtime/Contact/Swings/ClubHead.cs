@@ -14,8 +14,11 @@ namespace MagnusBall.Contact.Swings
     /// are taken along the face's heel-toe axis, the axis up the face (near vertical for a driver) and the face normal
     /// (an assumption: products of inertia are dropped).</para>
     /// <para>The head rotates about its CG during the impact: the normal force has the lever <see cref="ImpactHeight"/>
-    /// about the heel-toe axis, friction along the face the lever <see cref="CenterOfGravityDepth"/> (golf's vertical
-    /// and horizontal gear effect). docs/impacts.md gives the sources and what the rotation does to a driver's spin.</para>
+    /// about the heel-toe axis (golf's vertical gear effect), friction along the face the lever
+    /// <see cref="CenterOfGravityDepth"/> (about the heel-toe axis for friction up the face, about the vertical axis for
+    /// friction across it when face and path differ). An impact toward the heel or the toe is not a parameter, so the
+    /// horizontal gear effect of a heel or toe hit (the normal force's lever about the vertical axis) is not modelled.
+    /// docs/impacts.md gives the sources and what the rotation does to a driver's spin.</para>
     /// </remarks>
     public readonly struct ClubHead
     {
@@ -31,7 +34,7 @@ namespace MagnusBall.Contact.Swings
             double mass, double centerOfGravityDepth = 0, double impactHeight = 0, double heelToeInertia = double.PositiveInfinity,
             double verticalInertia = double.PositiveInfinity, double faceNormalInertia = double.PositiveInfinity)
         {
-            Mass = Require.InRange(mass, MinimumMass, double.MaxValue, nameof(mass));
+            Mass = RequireMass(mass, nameof(mass));
             CenterOfGravityDepth = Require.InRange(centerOfGravityDepth, 0, 0.2, nameof(centerOfGravityDepth));
             ImpactHeight = Require.InRange(impactHeight, -0.05, 0.05, nameof(impactHeight));
             HeelToeInertia = RequireMoment(heelToeInertia, nameof(heelToeInertia));
@@ -102,6 +105,17 @@ namespace MagnusBall.Contact.Swings
         /// <inheritdoc />
         public override string ToString() => FormattableString.Invariant(
             $"ClubHead({Mass:R} kg, CG {CenterOfGravityDepth * 1000:F1} mm deep, impact {ImpactHeight * 1000:F1} mm above it, I {HeelToeInertia:G4}/{VerticalInertia:G4}/{FaceNormalInertia:G4} kg m^2)");
+
+        private static double RequireMass(double value, string name)
+        {
+            if (double.IsFinite(value) && value >= MinimumMass)
+            {
+                return value;
+            }
+
+            throw new ArgumentOutOfRangeException(
+                name, value, $"{name} must be finite and >= {Require.Format(MinimumMass)} kg; got {Require.Format(value)}.");
+        }
 
         private static double RequireMoment(double value, string name)
         {

@@ -22,8 +22,8 @@ namespace MagnusBall.Contact.Swings
     /// about its centre of gravity (the second: the gear effect), a rigid face (no face flex beyond the COR), friction
     /// <see cref="Friction"/> (default 0.4: an assumption, not traced to a measurement) and no recoil of the slip (e_x = 0).
     /// With these, a lofted ball grips and leaves rolling on the face: against the tour averages at the published launch
-    /// angles, the ball speed is within 3 % for the driver and the 7-iron, the spin 50 % high for the driver (18-55 % high
-    /// with <see cref="ClubHead.MeasuredDriver"/>) and 25 % low for the 7-iron (docs/impacts.md).</para>
+    /// angles, the ball speed is within 3 % for the driver and the 7-iron, the spin 50 % high for the driver (40 % high
+    /// with <see cref="ClubHead.MeasuredDriver"/>, 18-55 % over that head's input range) and 25 % low for the 7-iron (docs/impacts.md).</para>
     /// </remarks>
     public readonly struct ClubSwing
     {
