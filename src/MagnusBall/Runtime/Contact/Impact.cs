@@ -181,15 +181,7 @@ namespace MagnusBall.Contact
         public static ImpactOutcome Resolve(
             Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in ContactProperties contact)
         {
-            Require.NotNull(ball, nameof(ball));
-            Require.Finite(position, nameof(position));
-            Require.Finite(velocity, nameof(velocity));
-            Require.Finite(angularVelocity, nameof(angularVelocity));
-            if (!(body.EffectiveMass > 0) || body.Normal.LengthSquared == 0)
-            {
-                throw new ArgumentException(
-                    "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
-            }
+            CheckArguments(ball, position, velocity, angularVelocity, body);
 
             Vector3d n = body.Normal;
             Vector3d surfaceVelocity = body.SurfaceVelocityAt(position - n * ball.Radius);
@@ -206,6 +198,20 @@ namespace MagnusBall.Contact
             Vector3d impulse = (relative2 - relative) * ball.Mass;
             Vector3d bodyChange = double.IsPositiveInfinity(body.EffectiveMass) ? Vector3d.Zero : impulse * (-1.0 / body.EffectiveMass);
             return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, bodyChange);
+        }
+
+        // The checks both Resolve overloads make before anything is computed.
+        private static void CheckArguments(Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body)
+        {
+            Require.NotNull(ball, nameof(ball));
+            Require.Finite(position, nameof(position));
+            Require.Finite(velocity, nameof(velocity));
+            Require.Finite(angularVelocity, nameof(angularVelocity));
+            if (!(body.EffectiveMass > 0) || body.Normal.LengthSquared == 0)
+            {
+                throw new ArgumentException(
+                    "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
+            }
         }
 
         /// <summary>
@@ -227,15 +233,7 @@ namespace MagnusBall.Contact
                 return Resolve(ball, position, velocity, angularVelocity, pointMass, contact);
             }
 
-            Require.NotNull(ball, nameof(ball));
-            Require.Finite(position, nameof(position));
-            Require.Finite(velocity, nameof(velocity));
-            Require.Finite(angularVelocity, nameof(angularVelocity));
-            if (!(body.EffectiveMass > 0) || body.Normal.LengthSquared == 0)
-            {
-                throw new ArgumentException(
-                    "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
-            }
+            CheckArguments(ball, position, velocity, angularVelocity, body);
 
             if (contact.ForceOffset != 0 || contact.ForceOffsetPerSpeed != 0)
             {
