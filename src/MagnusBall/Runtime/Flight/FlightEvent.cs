@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 
@@ -246,22 +247,43 @@ namespace MagnusBall.Flight
             double time;
             if (ground.HasValue && segment.TryFindCrossing(ground.Value, CrossingDirection.AgainstNormal, startsFlight, out time))
             {
-                events[count++] = new FlightEvent(FlightEventKinds.Landing, -1, segment.StateAt(time));
+                count = Found(ref segment, events, count, FlightEventKinds.Landing, -1, time);
             }
 
             if (up.LengthSquared > 0 && segment.TryFindApex(up, out time))
             {
-                events[count++] = new FlightEvent(FlightEventKinds.Apex, -1, segment.StateAt(time));
+                count = Found(ref segment, events, count, FlightEventKinds.Apex, -1, time);
             }
 
             for (int i = 0; i < planes.Length; i++)
             {
                 if (segment.TryFindCrossing(planes[i], CrossingDirection.AlongNormal, startsFlight, out time))
                 {
-                    events[count++] = new FlightEvent(FlightEventKinds.PlaneCrossing, i, segment.StateAt(time));
+                    count = Found(ref segment, events, count, FlightEventKinds.PlaneCrossing, i, time);
                 }
             }
 
+            if (count > 1)
+            {
+                SortByTime(events, count);
+            }
+
+            return count;
+        }
+
+        // Writes one found event (out of line: the scan of a step with no event, the common case, then carries none of the
+        // event's copies in its frame).
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int Found<TDense>(ref TDense segment, Span<FlightEvent> events, int count, FlightEventKinds kind, int planeIndex, double time)
+            where TDense : struct, IDenseOutput
+        {
+            events[count] = new FlightEvent(kind, planeIndex, segment.StateAt(time));
+            return count + 1;
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static void SortByTime(Span<FlightEvent> events, int count)
+        {
             // Insertion sort by time (stable: at equal times the landing stays first): a handful of events at most.
             for (int i = 1; i < count; i++)
             {
@@ -275,8 +297,6 @@ namespace MagnusBall.Flight
 
                 events[j + 1] = e;
             }
-
-            return count;
         }
     }
 }

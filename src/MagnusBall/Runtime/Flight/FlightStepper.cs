@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 
@@ -98,6 +99,11 @@ namespace MagnusBall.Flight
         // The last piece of the step before the last one (FixedStepDriver draws inside it after a last step cut short):
         // none, the implicit piece from _olderStart/_olderStartDerivative to (Previous, PreviousDerivative), or a stored one.
         private OlderPiece _olderKind;
+        // The first piece of a step that TryStep integrated before handing the step to Advance (it held an event).
+        private FlightState _firstPiece;
+        private StateDerivative _firstPieceDerivative;
+        private int _firstPieceEvaluations;
+        private bool _hasFirstPiece;
         private FlightState _olderStart;
         private StateDerivative _olderStartDerivative;
         private HermiteSegment _olderSegment;
@@ -249,6 +255,7 @@ namespace MagnusBall.Flight
             _segmentCount = 0;
             _implicitSegment = false;
             _olderKind = OlderPiece.None;
+            _hasFirstPiece = false;
             _started = true;
             if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
             {
@@ -285,7 +292,80 @@ namespace MagnusBall.Flight
         {
             RequireStarted();
             Require.Step(step, nameof(step));
+            if (Contact == null && _now.Phase == FlightPhase.Flying)
+            {
+                // The common step first: one piece, and, when it holds no event, taken at once (nothing to put back if it
+                // were refused, so no snapshot). Where it holds an event, the general step takes this integration as its
+                // first piece: the step is integrated once either way.
+                double endTime = _now.State.Time + step;
+                if (!(endTime > _now.State.Time))
+                {
+                    return StepOutcome.TimeCannotAdvance;
+                }
+
+                FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, step, out StateDerivative nextDerivative, out int evaluations);
+                if (!Takes(_now.State, next, nextDerivative))
+                {
+                    return StepOutcome.Diverged; // nothing changed
+                }
+
+                if (next.Time != endTime)
+                {
+                    next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
+                }
+
+                var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
+                if (EventSet == null || EventSet.Scan(ref segment, _scratch, _now.StartsFlight, landings: true) == 0)
+                {
+                    TakePlainStep(next, nextDerivative, evaluations);
+                    return StepOutcome.Taken;
+                }
+
+                _firstPiece = next;
+                _firstPieceDerivative = nextDerivative;
+                _firstPieceEvaluations = evaluations;
+                _hasFirstPiece = true;
+            }
+
             return Advance(step, stopAt, adaptive: null);
+        }
+
+        // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
+        private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
+        {
+            KeepOlderPiece(_now.Previous, _now.PreviousDerivative);
+            _now.Previous = _now.State;
+            _now.PreviousDerivative = _now.Derivative;
+            _now.State = next;
+            _now.Derivative = nextDerivative;
+            _now.Evaluations += evaluations;
+            _now.Steps++;
+            _now.StartsFlight = false;
+            _eventCount = 0;
+            _segmentCount = 0;
+            _implicitSegment = true;
+        }
+
+        // What was the last piece becomes the piece before it (before a taken step replaces the pieces): the implicit one
+        // by its start (its end is the new Previous), a stored one copied. previous/previousDerivative: the start of the
+        // step before the one being taken.
+        private void KeepOlderPiece(in FlightState previous, in StateDerivative previousDerivative)
+        {
+            if (_implicitSegment)
+            {
+                _olderKind = OlderPiece.Implicit;
+                _olderStart = previous;
+                _olderStartDerivative = previousDerivative;
+            }
+            else if (_segmentCount > 0)
+            {
+                _olderKind = OlderPiece.Stored;
+                _olderSegment = _segments[_segmentCount - 1];
+            }
+            else
+            {
+                _olderKind = OlderPiece.None;
+            }
         }
 
         /// <summary>
@@ -438,23 +518,7 @@ namespace MagnusBall.Flight
                 _stopEvent = _pendingStop;
             }
 
-            // What was the last piece becomes the piece before it: the implicit one by its start (its end is the new
-            // Previous), a stored one copied.
-            if (_implicitSegment)
-            {
-                _olderKind = OlderPiece.Implicit;
-                _olderStart = before.Previous;
-                _olderStartDerivative = before.PreviousDerivative;
-            }
-            else if (_segmentCount > 0)
-            {
-                _olderKind = OlderPiece.Stored;
-                _olderSegment = _segments[_segmentCount - 1];
-            }
-            else
-            {
-                _olderKind = OlderPiece.None;
-            }
+            KeepOlderPiece(before.Previous, before.PreviousDerivative);
 
             // The pending arrays become the current ones only when the step wrote into them: with nothing written the
             // current count is zero and which array holds nothing does not matter (and no reference is stored).
@@ -485,7 +549,22 @@ namespace MagnusBall.Flight
         // One piece of a fixed step: integrate to endTime, then handle the first event with an effect.
         private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
         {
-            FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
+            FlightState next;
+            StateDerivative nextDerivative;
+            int evaluations;
+            if (piece == 0 && _hasFirstPiece)
+            {
+                // TryStep integrated this piece already (and found an event in it).
+                next = _firstPiece;
+                nextDerivative = _firstPieceDerivative;
+                evaluations = _firstPieceEvaluations;
+                _hasFirstPiece = false;
+            }
+            else
+            {
+                next = Integrator.Step(Model, _now.State, _now.Derivative, h, out nextDerivative, out evaluations);
+            }
+
             _refusal = StepOutcome.Diverged;
             if (!Takes(_now.State, next, nextDerivative))
             {
@@ -499,7 +578,7 @@ namespace MagnusBall.Flight
                 next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
             }
 
-            var segment = HermiteSegment.OfTakenStep(_now.State, _now.Derivative, next, nextDerivative);
+            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
             return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt, implicitPiece: piece == 0);
         }
 
@@ -551,8 +630,42 @@ namespace MagnusBall.Flight
             bool implicitPiece)
             where TDense : struct, IDenseOutput
         {
+            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, _scratch, _now.StartsFlight && piece == 0, landings: Contact == null);
+            if (count == 0 && Contact == null)
+            {
+                // The common piece: no event, no surface to touch. Its end becomes the current state.
+                Continue(hermite, end, endDerivative, implicitPiece);
+                return true;
+            }
+
+            return HandleEvents(ref dense, hermite, end, endDerivative, piece, stopAt, implicitPiece, count);
+        }
+
+        // The piece has no effect: its end is the current state, its dense output the step's (implicit) or stored.
+        private void Continue(in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, bool implicitPiece)
+        {
+            if (implicitPiece)
+            {
+                _pendingImplicit = true; // the step is this one piece: (Previous, PreviousDerivative) to (end, endDerivative)
+            }
+            else
+            {
+                PushSegment(hermite);
+            }
+
+            _now.State = end;
+            _now.Derivative = endDerivative;
+        }
+
+        // HandlePiece with events found (count of them in _scratch) or a contact surface: out of line, so the common
+        // piece's frame holds none of the event copies and spans this needs (they are zeroed on every call).
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private bool HandleEvents<TDense>(
+            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt,
+            bool implicitPiece, int count)
+            where TDense : struct, IDenseOutput
+        {
             Span<FlightEvent> found = _scratch;
-            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
             for (int i = 0; i < count; i++)
             {
                 if (!found[i].State.IsFinite)
@@ -597,17 +710,7 @@ namespace MagnusBall.Flight
             Record(found.Slice(0, count));
             if (double.IsPositiveInfinity(contactTime))
             {
-                if (implicitPiece)
-                {
-                    _pendingImplicit = true; // the step is this one piece: (Previous, PreviousDerivative) to (end, endDerivative)
-                }
-                else
-                {
-                    PushSegment(hermite);
-                }
-
-                _now.State = end;
-                _now.Derivative = endDerivative;
+                Continue(hermite, end, endDerivative, implicitPiece);
                 return true;
             }
 
