@@ -44,6 +44,7 @@ namespace MagnusBall.Benchmarks
                 ("RK4 480 steps, thesis, internal run", work.Rk4ThesisRun),
                 ("aim ElevationToReach, RK4 trials", work.AimBaselineFixed),
                 ("aim AnglesToReach, RK4 trials", work.AimCornerFixed),
+                ("1,000 drivers (rk4), thesis model", work.Drivers1000Thesis),
             };
 
             var best = new double[items.Length];
@@ -105,6 +106,7 @@ namespace MagnusBall.Benchmarks
             Report("10,000 balls per 60 FPS frame < 3 ms (ms)", best[10] * 1e3, 3.0);
             Report("1,000 drivers one at a time <= 8 U (default stable-rk4)", best[11] / shot, 8.0);
             Report("1,000 drivers one at a time <= 8 U (rk4)", best[12] / shot, 8.0);
+            Report("  (rk4 on the thesis model: per-step parity with the thesis-style shot)", best[16] / shot, 8.0);
             long library = 0;
             for (int i = 1; i < items.Length; i++)
             {

@@ -29,6 +29,7 @@ namespace MagnusBall.Benchmarks
         private BallBatch _batch10000 = null!;
         private FixedStepDriver[] _drivers = null!;
         private FixedStepDriver[] _driversRk4 = null!;
+        private FixedStepDriver[] _driversThesis = null!;
         private AimSolver _solver = null!;
         private AimSolver _solverFixed = null!;
         private LaunchSpin _spin;
@@ -56,11 +57,13 @@ namespace MagnusBall.Benchmarks
             var events = new FlightEventSet(Scenarios.Up, deepGround);
             _drivers = new FixedStepDriver[1000];
             _driversRk4 = new FixedStepDriver[1000];
+            _driversThesis = new FixedStepDriver[1000];
             for (int i = 0; i < _drivers.Length; i++)
             {
                 FlightState start = RandomDrive(random);
                 _drivers[i] = new FixedStepDriver(_fullModel, Step, start, events);
                 _driversRk4[i] = new FixedStepDriver(_fullModel, RungeKutta4.Instance, Step, start, events);
+                _driversThesis[i] = new FixedStepDriver(_thesisModel, RungeKutta4.Instance, Step, start, events);
             }
 
             FlightModel model = _fullModel;
@@ -149,6 +152,12 @@ namespace MagnusBall.Benchmarks
 
         /// <summary>The same with plain RK4 in each driver.</summary>
         public double Drivers1000Rk4() => Drive(_driversRk4);
+
+        /// <summary>
+        /// The same with plain RK4 on the thesis model, the model one thesis-style shot flies: the per-step parity the
+        /// 8 U target asks for, without the full model's costlier laws.
+        /// </summary>
+        public double Drivers1000Thesis() => Drive(_driversThesis);
 
         private static double Drive(FixedStepDriver[] drivers)
         {
