@@ -1,5 +1,8 @@
+using System;
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Integration;
+using DP = MagnusBall.Integration.DormandPrince54;
 
 namespace MagnusBall
 {
@@ -32,6 +35,15 @@ namespace MagnusBall
 
         /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
         internal abstract FlightState Heun(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
+
+        /// <summary>
+        /// The six stages of one Dormand-Prince 5(4) step from <paramref name="state"/> with start derivative
+        /// <paramref name="k1"/> (DormandPrince54's arithmetic term by term): the fifth-order end state and k3..k7 in
+        /// <paramref name="stages"/> (k7 is the derivative at the end). Six evaluations. No argument checks. False when a
+        /// stage's acceleration or spin acceleration may not be finite (where FlightModel.Derivative would take its scaled
+        /// path): the caller then redoes the step through FlightModel.Derivative.
+        /// </summary>
+        internal abstract bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, out DormandPrince54Stages stages);
     }
 
     /// <summary>The kernel for drag law <typeparamref name="TDrag"/>, lift law <typeparamref name="TLift"/> and spin decay <typeparamref name="TDecay"/>.</summary>
@@ -241,6 +253,77 @@ namespace MagnusBall
             Rates(next.Position, next.Velocity, next.AngularVelocity, spin, inverse, out Vector3d a, out Vector3d wd);
             end = new StateDerivative(next.Velocity, a, wd);
             return next;
+        }
+
+        internal override bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, out DormandPrince54Stages stages)
+        {
+            // DormandPrince54's arithmetic term by term: stage i is y + (h a_i1) k1 + (h a_i2) k2 + ..., summed left to right
+            // as its Combine writes it, and the end y + (h b1) k1 + (h b3) k3 + ... + (h b6) k6 (b2 = 0: k2 is left out, as
+            // there). One evaluation site (a loop over k2..k7, each stage's sum a short loop over the tableau's row), so the
+            // inlined laws appear once in the code. The stage positions are formed only where the wind depends on the
+            // height, the stage spins only where the spin decays (otherwise every stage spin is the start spin plus zero
+            // rates); the end state is formed in full.
+            Span<Vector3d> kv = stackalloc Vector3d[6]; // k1..k6: velocity (the position rate), acceleration, spin acceleration
+            Span<Vector3d> ka = stackalloc Vector3d[6];
+            Span<Vector3d> ks = stackalloc Vector3d[6];
+            kv[0] = k1.Velocity;
+            ka[0] = k1.Acceleration;
+            ks[0] = k1.AngularAcceleration;
+            double[] tableau = DP.Tableau;
+            double h = step;
+            Vector3d p = state.Position, v = state.Velocity, w = state.AngularVelocity;
+            bool spins = _decay.IsPresent;
+            bool positions = _windVaries;
+            double check = 0; // the sum of every stage's rates: finite when each of them is (or spuriously not, on overflow)
+            SpinRates(w, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
+            for (int stage = 1, row = 0; ; row += stage, stage++)
+            {
+                // stage 1..5: k2..k6; stage 6: the end, where k7 is evaluated
+                bool end = stage == 6;
+                Vector3d ps = p, vs = v, ws = w;
+                for (int j = 0; j < stage; j++)
+                {
+                    if (end && j == 1)
+                    {
+                        continue; // b2 = 0
+                    }
+
+                    double c = h * tableau[row + j];
+                    vs = Add(vs, ka[j], c);
+                    if (spins || end)
+                    {
+                        ws = Add(ws, ks[j], c);
+                    }
+
+                    if (positions || end)
+                    {
+                        ps = Add(ps, kv[j], c);
+                    }
+                }
+
+                if (spins || end)
+                {
+                    SpinRates(ws, out spinRate, out inverseSpinRate);
+                }
+
+                Rates(ps, vs, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
+                check += a.X + a.Y + a.Z + s.X + s.Y + s.Z;
+                if (end)
+                {
+                    stages = new DormandPrince54Stages(
+                        new FlightState(ps, vs, ws, state.Time + h),
+                        new StateDerivative(kv[2], ka[2], ks[2]),
+                        new StateDerivative(kv[3], ka[3], ks[3]),
+                        new StateDerivative(kv[4], ka[4], ks[4]),
+                        new StateDerivative(kv[5], ka[5], ks[5]),
+                        new StateDerivative(vs, a, s));
+                    return double.IsFinite(check);
+                }
+
+                kv[stage] = vs;
+                ka[stage] = a;
+                ks[stage] = s;
+            }
         }
 
         // One RK4 step, RungeKutta4.Step's arithmetic term by term, plus the end rates. One evaluation site (a loop over

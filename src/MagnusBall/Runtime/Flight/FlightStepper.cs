@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 
@@ -432,7 +433,9 @@ namespace MagnusBall.Flight
             return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
         }
 
-        // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end.
+        // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end. Not
+        // inlined into Advance: its large locals (the step's dense output) would grow every Advance frame, fixed steps too.
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private bool FlyAdaptivePiece(DormandPrince54 method, double h, int piece, FlightEventKinds stopAt, ref double endTime)
         {
             double trial = _now.NextAdaptiveStep > 0 ? Math.Min(_now.NextAdaptiveStep, h) : method.InitialStep(Model, _now.State, _now.Derivative, h);
@@ -441,17 +444,17 @@ namespace MagnusBall.Flight
                 _now.Evaluations++; // InitialStep's one evaluation
             }
 
-            DormandPrince54Step result = default;
-            for (int attempt = 0; attempt < MaxAdaptiveAttempts; attempt++)
+            // At most MaxAdaptiveAttempts attempts; after the last one, or once the next step cannot advance the clock, the
+            // last attempt is taken as it is.
+            bool accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out DormandPrince54Step result);
+            _now.Evaluations += 6;
+            for (int attempt = 1;
+                 !accepted && attempt < MaxAdaptiveAttempts && result.NextStep > 0 && _now.State.Time + result.NextStep > _now.State.Time;
+                 attempt++)
             {
-                bool accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out result);
-                _now.Evaluations += 6;
-                if (accepted || attempt == MaxAdaptiveAttempts - 1 || !(result.NextStep > 0) || !(_now.State.Time + result.NextStep > _now.State.Time))
-                {
-                    break;
-                }
-
                 trial = Math.Min(result.NextStep, h);
+                accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out result);
+                _now.Evaluations += 6;
             }
 
             _refusal = StepOutcome.Diverged;
@@ -467,6 +470,17 @@ namespace MagnusBall.Flight
             endTime = result.End.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
             var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
+            if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
+                (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
+            {
+                // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
+                // find nothing, without them.
+                PushSegment(hermite);
+                _now.State = result.End;
+                _now.Derivative = result.EndDerivative;
+                return true;
+            }
+
             return HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
         }
 

@@ -31,13 +31,27 @@ namespace MagnusBall.Integration
     public sealed class DormandPrince54 : IIntegrator
     {
         // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M").
-        private const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
-        private const double A21 = 1.0 / 5;
-        private const double A31 = 3.0 / 40, A32 = 9.0 / 40;
-        private const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
-        private const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
-        private const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
-        private const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+        internal const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
+        internal const double A21 = 1.0 / 5;
+        internal const double A31 = 3.0 / 40, A32 = 9.0 / 40;
+        internal const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
+        internal const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
+        internal const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
+        internal const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+
+        /// <summary>
+        /// The tableau's rows for the flight kernel's stage loop: a21; a31 a32; a41 a42 a43; a51..a54; a61..a65; then the
+        /// fifth-order weights b1 b2 b3 b4 b5 b6 (b2 = 0).
+        /// </summary>
+        internal static readonly double[] Tableau =
+        {
+            A21,
+            A31, A32,
+            A41, A42, A43,
+            A51, A52, A53, A54,
+            A61, A62, A63, A64, A65,
+            B1, 0, B3, B4, B5, B6,
+        };
 
         // The error weights b - b_hat (fifth minus fourth order), the last on k7 = f(y1).
         private const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200, E6 = 22.0 / 525, E7 = -1.0 / 40;
@@ -92,12 +106,11 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
-            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+            Stages(model, state, derivative, step, out DormandPrince54Stages stages);
             // First same as last: the seventh stage is the derivative at the fifth-order end.
-            endDerivative = model.Derivative(end);
+            endDerivative = stages.K7;
             evaluations = 6;
-            return end;
+            return stages.End;
         }
 
         /// <summary>
@@ -117,20 +130,40 @@ namespace MagnusBall.Integration
         internal bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
             StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
-            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
-            StateDerivative k7 = model.Derivative(end);
+            Stages(model, state, derivative, step, out DormandPrince54Stages stages);
+            return Finish(state, derivative, step, stages, out result);
+        }
 
-            double norm = ErrorNorm(state, end, derivative, k3, k4, k5, k6, k7, step);
-            bool accepted = norm <= 1.0 && end.IsFinite;
+        /// <summary>
+        /// <see cref="TryStep"/> with every stage through <see cref="FlightModel.Derivative"/> (not the model's kernel): the
+        /// arithmetic the kernel's step reproduces, for the tests that hold it to it.
+        /// </summary>
+        internal bool TryStepThroughDerivative(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
+        {
+            StepArguments.Check(model, state, step);
+            GeneralStages(model, state, derivative, step, out DormandPrince54Stages stages);
+            return Finish(state, derivative, step, stages, out result);
+        }
+
+        // The error norm, the controller's next step and the dense output of a step whose stages are known.
+        private bool Finish(in FlightState state, in StateDerivative derivative, double step, in DormandPrince54Stages stages, out DormandPrince54Step result)
+        {
+            double norm = ErrorNorm(state, stages.End, derivative, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7, step);
+            bool accepted = norm <= 1.0 && stages.End.IsFinite;
             double factor;
             if (!double.IsFinite(norm))
             {
                 factor = MinimumFactor;
             }
-            else if (norm == 0)
+            else if (norm < 1.8e-4)
             {
+                // 0.9 norm^(-1/5) > 5.04 here: the factor is clamped to 5 either way (no power needed).
                 factor = MaximumFactor;
+            }
+            else if (norm > 2000)
+            {
+                // 0.9 norm^(-1/5) < 0.197 here: clamped to 0.2 either way.
+                factor = MinimumFactor;
             }
             else
             {
@@ -142,7 +175,7 @@ namespace MagnusBall.Integration
                 factor = Math.Min(factor, 1.0);
             }
 
-            result = new DormandPrince54Step(state, end, derivative, k3, k4, k5, k6, k7, step, norm, step * factor, accepted);
+            result = new DormandPrince54Step(state, derivative, stages, step, norm, step * factor, accepted);
             return accepted;
         }
 
@@ -176,6 +209,25 @@ namespace MagnusBall.Integration
             double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : PortableMath.Pow(0.01 / largest, 0.2);
             double h = Math.Min(100 * h0, h1);
             return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
+        }
+
+        // The six stages and the end: through the model's kernel (its laws inlined, one evaluation site), or, where a
+        // stage's rates may not be finite (so FlightModel.Derivative may take its scaled path), through
+        // FlightModel.Derivative; the same numbers bit for bit wherever the kernel's derivative is FlightModel.Derivative's.
+        private static void Stages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
+        {
+            if (!model.Kernel.DormandPrince54(y, k1, h, out stages))
+            {
+                GeneralStages(model, y, k1, h, out stages);
+            }
+        }
+
+        // The stages through FlightModel.Derivative, one call each (the arithmetic the kernel's step reproduces).
+        internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
+        {
+            Stages(model, y, k1, h, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
+            FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
+            stages = new DormandPrince54Stages(end, k3, k4, k5, k6, model.Derivative(end));
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -318,5 +370,30 @@ namespace MagnusBall.Integration
 
         private static StateDerivative Difference(in StateDerivative a, in StateDerivative b) =>
             new StateDerivative(a.Velocity - b.Velocity, a.Acceleration - b.Acceleration, a.AngularAcceleration - b.AngularAcceleration);
+    }
+
+    /// <summary>
+    /// The stages of one Dormand-Prince 5(4) step that its error estimate and dense output read: the fifth-order end
+    /// state and k3..k7 (k2 has weight zero in both; k7 is the derivative at the end, the next step's k1).
+    /// </summary>
+    internal readonly struct DormandPrince54Stages
+    {
+        public readonly FlightState End;
+        public readonly StateDerivative K3;
+        public readonly StateDerivative K4;
+        public readonly StateDerivative K5;
+        public readonly StateDerivative K6;
+        public readonly StateDerivative K7;
+
+        public DormandPrince54Stages(
+            in FlightState end, in StateDerivative k3, in StateDerivative k4, in StateDerivative k5, in StateDerivative k6, in StateDerivative k7)
+        {
+            End = end;
+            K3 = k3;
+            K4 = k4;
+            K5 = k5;
+            K6 = k6;
+            K7 = k7;
+        }
     }
 }

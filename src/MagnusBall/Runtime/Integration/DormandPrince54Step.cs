@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Flight;
 
 namespace MagnusBall.Integration
 {
@@ -22,27 +23,24 @@ namespace MagnusBall.Integration
 
         internal DormandPrince54Step(
             in FlightState start,
-            in FlightState end,
             in StateDerivative k1,
-            in StateDerivative k3,
-            in StateDerivative k4,
-            in StateDerivative k5,
-            in StateDerivative k6,
-            in StateDerivative k7,
+            in DormandPrince54Stages stages,
             double step,
             double errorNorm,
             double nextStep,
             bool accepted)
         {
             Start = start;
-            End = end;
+            End = stages.End;
             StartDerivative = k1;
-            EndDerivative = k7;
+            EndDerivative = stages.K7;
             Step = step;
             ErrorNorm = errorNorm;
             NextStep = nextStep;
             Accepted = accepted;
 
+            ref readonly FlightState end = ref stages.End;
+            ref readonly StateDerivative k7 = ref stages.K7;
             Vector3d dp = end.Position - start.Position;
             Vector3d dv = end.Velocity - start.Velocity;
             Vector3d dw = end.AngularVelocity - start.AngularVelocity;
@@ -52,35 +50,35 @@ namespace MagnusBall.Integration
                 dv - k7.Acceleration * step - _slopeDefect.Acceleration,
                 dw - k7.AngularAcceleration * step - _slopeDefect.AngularAcceleration);
             _r5 = new StateDerivative(
-                Dense(k1.Velocity, k3.Velocity, k4.Velocity, k5.Velocity, k6.Velocity, k7.Velocity, step),
-                Dense(k1.Acceleration, k3.Acceleration, k4.Acceleration, k5.Acceleration, k6.Acceleration, k7.Acceleration, step),
-                Dense(k1.AngularAcceleration, k3.AngularAcceleration, k4.AngularAcceleration, k5.AngularAcceleration, k6.AngularAcceleration,
-                    k7.AngularAcceleration, step));
+                Dense(k1.Velocity, stages.K3.Velocity, stages.K4.Velocity, stages.K5.Velocity, stages.K6.Velocity, k7.Velocity, step),
+                Dense(k1.Acceleration, stages.K3.Acceleration, stages.K4.Acceleration, stages.K5.Acceleration, stages.K6.Acceleration, k7.Acceleration, step),
+                Dense(k1.AngularAcceleration, stages.K3.AngularAcceleration, stages.K4.AngularAcceleration, stages.K5.AngularAcceleration,
+                    stages.K6.AngularAcceleration, k7.AngularAcceleration, step));
         }
 
         /// <summary>True when the estimated error was within the tolerances and the step was taken.</summary>
-        public bool Accepted { get; }
+        public readonly bool Accepted;
 
         /// <summary>The state the step started from.</summary>
-        public FlightState Start { get; }
+        public readonly FlightState Start;
 
         /// <summary>The fifth-order end state (meaningful when <see cref="Accepted"/>).</summary>
-        public FlightState End { get; }
+        public readonly FlightState End;
 
         /// <summary>The derivative at the start (k1).</summary>
-        public StateDerivative StartDerivative { get; }
+        public readonly StateDerivative StartDerivative;
 
         /// <summary>The derivative at the end, k7 = f(End): the next step's k1 (FSAL).</summary>
-        public StateDerivative EndDerivative { get; }
+        public readonly StateDerivative EndDerivative;
 
         /// <summary>The step attempted, s.</summary>
-        public double Step { get; }
+        public readonly double Step;
 
         /// <summary>The scaled RMS error estimate; at most 1 when accepted.</summary>
-        public double ErrorNorm { get; }
+        public readonly double ErrorNorm;
 
         /// <summary>The step the controller suggests next, s (smaller than <see cref="Step"/> after a rejection).</summary>
-        public double NextStep { get; }
+        public readonly double NextStep;
 
         /// <summary>
         /// The state at <paramref name="time"/> from the fourth-order dense output (no derivative evaluation).
@@ -134,12 +132,69 @@ namespace MagnusBall.Integration
         /// <inheritdoc />
         public bool TryFindApex(in Vector3d up, out double time) => FirstFall(new UpSpeed(up), false, 0, out time);
 
+        /// <summary>
+        /// True when the step provably holds no crossing of <paramref name="plane"/> in <paramref name="direction"/>:
+        /// <see cref="TryFindCrossing"/> would find none (the ball stays on the side it starts on, with room for rounding).
+        /// False means only that it may hold one.
+        /// </summary>
+        internal bool StaysClearOf(in Plane plane, CrossingDirection direction)
+        {
+            var condition = new PlaneDistance(plane, direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0);
+            return StaysClear(condition, condition.Value(Start), condition.Value(End));
+        }
+
+        /// <summary>True when the step provably holds no apex along <paramref name="up"/> (<see cref="TryFindApex"/> would find none).</summary>
+        internal bool StaysClearOfApex(in Vector3d up)
+        {
+            var condition = new UpSpeed(up);
+            return StaysClear(condition, condition.Value(Start), condition.Value(End));
+        }
+
+        /// <summary>
+        /// True when the step provably holds none of the events <paramref name="events"/> watches, with the landing on its
+        /// ground only when <paramref name="landings"/> (as FlightEventSet.Scan): its scan would find nothing.
+        /// </summary>
+        internal bool StaysClearOf(FlightEventSet events, bool landings)
+        {
+            Plane? ground = landings ? events.Ground : null;
+            if (ground.HasValue && !StaysClearOf(ground.Value, CrossingDirection.AgainstNormal))
+            {
+                return false;
+            }
+
+            Vector3d up = events.Up;
+            if (up.LengthSquared > 0 && !StaysClearOfApex(up))
+            {
+                return false;
+            }
+
+            Plane[] planes = events.PlaneArray;
+            for (int i = 0; i < planes.Length; i++)
+            {
+                if (!StaysClearOf(planes[i], CrossingDirection.AlongNormal))
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+
         /// <summary>Samples per step when looking for a sign change of a condition on the quartic interpolant.</summary>
         private const int Samples = 8;
 
+        /// <summary>
+        /// The rounding margin of the no-event bound (StaysClearOf), relative to the sum of the magnitudes a sample is
+        /// computed from: a sample's rounding error is a few dozen ulp of that sum at most (about 4e-15 of it), so this is
+        /// more than 200 times that.
+        /// </summary>
+        internal const double BoundMargin = 1e-12;
+
         // The first fall of g from > 0 to <= 0 on the interpolant: sampled at 9 points (the quartic in theta has at most 3
         // turning points, so 8 intervals catch every sign change a flight produces within one accepted step), then
-        // refined by the Illinois method to HermiteSegment.TimeTolerance. Bounded: at most 200 refinement passes.
+        // refined by the Illinois method to HermiteSegment.TimeTolerance. Bounded: at most 200 refinement passes. A step
+        // the condition provably stays above zero on, or below it (StaysClear), is not sampled: every sample would be on
+        // that side, so the answer (none) is the same.
         private bool FirstFall<TCondition>(in TCondition condition, bool fromZero, double slope0, out double time)
             where TCondition : struct, IStepCondition
         {
@@ -156,11 +211,17 @@ namespace MagnusBall.Integration
                 return true;
             }
 
+            double g1 = condition.Value(End);
+            if (StaysClear(condition, g0, g1))
+            {
+                return false;
+            }
+
             double lo = 0, glo = g0;
             for (int i = 1; i <= Samples; i++)
             {
                 double theta = (double)i / Samples;
-                double g = condition.Value(i == Samples ? End : InterpolateFraction(theta));
+                double g = i == Samples ? g1 : condition.At(this, theta);
                 if (glo > 0 && g <= 0)
                 {
                     time = Refine(condition, lo, glo, theta, g);
@@ -172,6 +233,28 @@ namespace MagnusBall.Integration
             }
 
             return false;
+        }
+
+        // True when the condition provably cannot fall from > 0 to <= 0 at the samples: it stays above zero all through
+        // the step, or below it, with room for the rounding of each sample. With theta in [0, 1] the interpolant is
+        // y0 + theta dy + theta (1 - theta) D + theta^2 (1 - theta) r4 + theta^2 (1 - theta)^2 r5 (the form Blend
+        // evaluates), and theta (1 - theta) <= 1/4, theta^2 (1 - theta) <= 4/27, theta^2 (1 - theta)^2 <= 1/16; the
+        // condition is affine in the state, so at every theta it lies within min(g0, g1) + (1/4) min(0, d) + (4/27) min(0, r4)
+        // + (1/16) min(0, r5) and the same with max, d, r4, r5 being its linear part applied to D, r4, r5. False (sample)
+        // when anything is not finite.
+        private bool StaysClear<TCondition>(in TCondition condition, double g0, double g1)
+            where TCondition : struct, IStepCondition
+        {
+            double d = condition.Linear(_slopeDefect), r4 = condition.Linear(_r4), r5 = condition.Linear(_r5);
+            double margin = BoundMargin * condition.Magnitude(this);
+            double lower = Math.Min(g0, g1) + 0.25 * Math.Min(0, d) + (4.0 / 27) * Math.Min(0, r4) + 0.0625 * Math.Min(0, r5);
+            if (lower > margin)
+            {
+                return true;
+            }
+
+            double upper = Math.Max(g0, g1) + 0.25 * Math.Max(0, d) + (4.0 / 27) * Math.Max(0, r4) + 0.0625 * Math.Max(0, r5);
+            return upper < -margin;
         }
 
         private double Refine<TCondition>(in TCondition condition, double lo, double glo, double hi, double ghi)
@@ -187,7 +270,7 @@ namespace MagnusBall.Integration
                     theta = 0.5 * (lo + hi);
                 }
 
-                double g = condition.Value(InterpolateFraction(theta));
+                double g = condition.At(this, theta);
                 if (g > 0)
                 {
                     lo = theta;
@@ -215,9 +298,28 @@ namespace MagnusBall.Integration
             return hi >= 1 ? End.Time : Start.Time + hi * Step;
         }
 
+        // The position and the velocity at fraction theta in [0, 1]: InterpolateFraction's, bit for bit, without the rest.
+        private Vector3d PositionAt(double theta) =>
+            Blend(Start.Position, End.Position, _slopeDefect.Velocity, _r4.Velocity, _r5.Velocity, theta, 1 - theta);
+
+        private Vector3d VelocityAt(double theta) =>
+            Blend(Start.Velocity, End.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration, theta, 1 - theta);
+
+        // A condition on the state, affine in it: Value(state) = Linear(the part of the state it reads) + a constant.
         private interface IStepCondition
         {
+            // The condition at a state.
             double Value(in FlightState state);
+
+            // The condition at fraction theta of the step: Value(InterpolateFraction(theta)) bit for bit, computing only the
+            // part of the state it reads.
+            double At(in DormandPrince54Step step, double theta);
+
+            // The linear part applied to a dense-output coefficient (its position rows for a plane, velocity rows for up).
+            double Linear(in StateDerivative coefficient);
+
+            // The sum of the magnitudes a sample is computed from (for the rounding margin).
+            double Magnitude(in DormandPrince54Step step);
         }
 
         private readonly struct PlaneDistance : IStepCondition
@@ -232,6 +334,16 @@ namespace MagnusBall.Integration
             }
 
             public double Value(in FlightState state) => _sign * _plane.SignedDistance(state.Position);
+
+            public double At(in DormandPrince54Step step, double theta) => _sign * _plane.SignedDistance(step.PositionAt(theta));
+
+            public double Linear(in StateDerivative coefficient) => _sign * Vector3d.Dot(coefficient.Velocity, _plane.Normal);
+
+            public double Magnitude(in DormandPrince54Step step) =>
+                Weighted(step.Start.Position) + Weighted(step.End.Position) + Weighted(step._slopeDefect.Velocity) + Weighted(step._r4.Velocity) +
+                Weighted(step._r5.Velocity) + Weighted(_plane.Point);
+
+            private double Weighted(in Vector3d x) => AbsoluteDot(x, _plane.Normal);
         }
 
         private readonly struct UpSpeed : IStepCondition
@@ -241,6 +353,21 @@ namespace MagnusBall.Integration
             public UpSpeed(in Vector3d up) => _up = up;
 
             public double Value(in FlightState state) => Vector3d.Dot(state.Velocity, _up);
+
+            public double At(in DormandPrince54Step step, double theta) => Vector3d.Dot(step.VelocityAt(theta), _up);
+
+            public double Linear(in StateDerivative coefficient) => Vector3d.Dot(coefficient.Acceleration, _up);
+
+            public double Magnitude(in DormandPrince54Step step) =>
+                AbsoluteDot(step.Start.Velocity, _up) + AbsoluteDot(step.End.Velocity, _up) + AbsoluteDot(step._slopeDefect.Acceleration, _up) +
+                AbsoluteDot(step._r4.Acceleration, _up) + AbsoluteDot(step._r5.Acceleration, _up);
+        }
+
+        // sum |x_i| |n_i|: what the rounding of x . n (or (x - point) . n) is relative to.
+        private static double AbsoluteDot(in Vector3d x, in Vector3d n)
+        {
+            double ax = Math.Abs(x.X), ay = Math.Abs(x.Y), az = Math.Abs(x.Z);
+            return ax * Math.Abs(n.X) + ay * Math.Abs(n.Y) + az * Math.Abs(n.Z);
         }
 
         private static Vector3d Blend(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5, double theta, double rest) =>
