@@ -96,6 +96,7 @@ namespace MagnusBall.Flight
         private int _pendingSegmentCount;
         private bool _started;
         private StepOutcome _refusal; // why the last piece that returned false refused the step
+        private DormandPrince54Step _adaptiveStep; // the last adaptive step attempted (scratch: TryStepAdaptive fills it in place)
 
         /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
         /// <param name="model">The flight model.</param>
@@ -446,42 +447,45 @@ namespace MagnusBall.Flight
 
             // At most MaxAdaptiveAttempts attempts; after the last one, or once the next step cannot advance the clock, the
             // last attempt is taken as it is.
-            bool accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out DormandPrince54Step result);
+            // The step is written in place into the stepper's own (no copies of its stages or dense output).
+            ref DormandPrince54Step result = ref _adaptiveStep;
+            bool accepted = method.TryStepInPlace(Model, _now.State, _now.Derivative, trial, ref result);
             _now.Evaluations += 6;
             for (int attempt = 1;
                  !accepted && attempt < MaxAdaptiveAttempts && result.NextStep > 0 && _now.State.Time + result.NextStep > _now.State.Time;
                  attempt++)
             {
                 trial = Math.Min(result.NextStep, h);
-                accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out result);
+                accepted = method.TryStepInPlace(Model, _now.State, _now.Derivative, trial, ref result);
                 _now.Evaluations += 6;
             }
 
+            ref readonly FlightState end = ref result.Stages.End;
+            ref readonly StateDerivative endDerivative = ref result.Stages.K7;
             _refusal = StepOutcome.Diverged;
-            if (!Takes(_now.State, result.End, result.EndDerivative))
+            if (!Takes(_now.State, end, endDerivative))
             {
                 // Not finite: diverged. Finite, but the accepted step is below the resolution of the time (a huge time, a
                 // tiny step): the clock cannot advance.
-                _refusal = result.End.IsFinite && result.EndDerivative.IsFinite ? StepOutcome.TimeCannotAdvance : StepOutcome.Diverged;
+                _refusal = end.IsFinite && endDerivative.IsFinite ? StepOutcome.TimeCannotAdvance : StepOutcome.Diverged;
                 return false;
             }
 
             _now.NextAdaptiveStep = result.NextStep;
-            endTime = result.End.Time;
-            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
+            endTime = end.Time;
             if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
-                // find nothing, without them.
-                PushSegment(hermite);
-                _now.State = result.End;
-                _now.Derivative = result.EndDerivative;
+                // find nothing, without them. For StateAt between frames: the cubic Hermite through the step's ends.
+                PushSegment(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative));
+                _now.State = end;
+                _now.Derivative = endDerivative;
                 return true;
             }
 
-            return HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt);
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
+            return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt);
         }
 
         // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an

@@ -106,7 +106,11 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out DormandPrince54Stages stages);
+            if (!model.Kernel.DormandPrince54(state, derivative, step, out DormandPrince54Stages stages))
+            {
+                GeneralStages(model, state, derivative, step, out stages);
+            }
+
             // First same as last: the seventh stage is the derivative at the fifth-order end.
             endDerivative = stages.K7;
             evaluations = 6;
@@ -129,9 +133,27 @@ namespace MagnusBall.Integration
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
         internal bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
+            result = default;
+            return TryStepInPlace(model, state, derivative, step, ref result);
+        }
+
+        /// <summary>
+        /// <see cref="TryStep(FlightModel, in FlightState, in StateDerivative, double, out DormandPrince54Step)"/> writing
+        /// the step into <paramref name="result"/> in place (the flight core keeps one): no copy of the stages or of the step.
+        /// </summary>
+        internal bool TryStepInPlace(FlightModel model, in FlightState state, in StateDerivative derivative, double step, ref DormandPrince54Step result)
+        {
             StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out DormandPrince54Stages stages);
-            return Finish(state, derivative, step, stages, out result);
+            result.Start = state;
+            result.StartDerivative = derivative;
+            // From here on the step's own copies of the start (the arguments may be the result's own fields).
+            if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, out result.Stages))
+            {
+                // A stage's rates may not be finite, so FlightModel.Derivative may take its scaled path: the step through it.
+                GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+            }
+
+            return Finish(step, ref result);
         }
 
         /// <summary>
@@ -141,14 +163,18 @@ namespace MagnusBall.Integration
         internal bool TryStepThroughDerivative(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
             StepArguments.Check(model, state, step);
-            GeneralStages(model, state, derivative, step, out DormandPrince54Stages stages);
-            return Finish(state, derivative, step, stages, out result);
+            result = default;
+            result.Start = state;
+            result.StartDerivative = derivative;
+            GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+            return Finish(step, ref result);
         }
 
         // The error norm, the controller's next step and the dense output of a step whose stages are known.
-        private bool Finish(in FlightState state, in StateDerivative derivative, double step, in DormandPrince54Stages stages, out DormandPrince54Step result)
+        private bool Finish(double step, ref DormandPrince54Step result)
         {
-            double norm = ErrorNorm(state, stages.End, derivative, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7, step);
+            ref readonly DormandPrince54Stages stages = ref result.Stages;
+            double norm = ErrorNorm(result.Start, stages.End, result.StartDerivative, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7, step);
             bool accepted = norm <= 1.0 && stages.End.IsFinite;
             double factor;
             if (!double.IsFinite(norm))
@@ -175,7 +201,7 @@ namespace MagnusBall.Integration
                 factor = Math.Min(factor, 1.0);
             }
 
-            result = new DormandPrince54Step(state, derivative, stages, step, norm, step * factor, accepted);
+            result.Complete(step, norm, step * factor, accepted);
             return accepted;
         }
 
@@ -211,23 +237,18 @@ namespace MagnusBall.Integration
             return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
         }
 
-        // The six stages and the end: through the model's kernel (its laws inlined, one evaluation site), or, where a
-        // stage's rates may not be finite (so FlightModel.Derivative may take its scaled path), through
-        // FlightModel.Derivative; the same numbers bit for bit wherever the kernel's derivative is FlightModel.Derivative's.
-        private static void Stages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
-        {
-            if (!model.Kernel.DormandPrince54(y, k1, h, out stages))
-            {
-                GeneralStages(model, y, k1, h, out stages);
-            }
-        }
-
         // The stages through FlightModel.Derivative, one call each (the arithmetic the kernel's step reproduces).
         internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
         {
             Stages(model, y, k1, h, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
             FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
-            stages = new DormandPrince54Stages(end, k3, k4, k5, k6, model.Derivative(end));
+            StateDerivative k7 = model.Derivative(end);
+            stages.End = end;
+            stages.K3 = k3;
+            stages.K4 = k4;
+            stages.K5 = k5;
+            stages.K6 = k6;
+            stages.K7 = k7;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -374,26 +395,16 @@ namespace MagnusBall.Integration
 
     /// <summary>
     /// The stages of one Dormand-Prince 5(4) step that its error estimate and dense output read: the fifth-order end
-    /// state and k3..k7 (k2 has weight zero in both; k7 is the derivative at the end, the next step's k1).
+    /// state and k3..k7 (k2 has weight zero in both; k7 is the derivative at the end, the next step's k1). Plain fields,
+    /// written in place by the flight kernel (it is part of a <see cref="DormandPrince54Step"/>).
     /// </summary>
-    internal readonly struct DormandPrince54Stages
+    internal struct DormandPrince54Stages
     {
-        public readonly FlightState End;
-        public readonly StateDerivative K3;
-        public readonly StateDerivative K4;
-        public readonly StateDerivative K5;
-        public readonly StateDerivative K6;
-        public readonly StateDerivative K7;
-
-        public DormandPrince54Stages(
-            in FlightState end, in StateDerivative k3, in StateDerivative k4, in StateDerivative k5, in StateDerivative k6, in StateDerivative k7)
-        {
-            End = end;
-            K3 = k3;
-            K4 = k4;
-            K5 = k5;
-            K6 = k6;
-            K7 = k7;
-        }
+        public FlightState End;
+        public StateDerivative K3;
+        public StateDerivative K4;
+        public StateDerivative K5;
+        public StateDerivative K6;
+        public StateDerivative K7;
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 using MagnusBall.Flight;
 
 namespace MagnusBall.Integration
@@ -12,35 +13,32 @@ namespace MagnusBall.Integration
     /// The dense output is DOPRI5's (Shampine 1986; Hairer, Norsett &amp; Wanner 1993, II.6): with
     /// theta = (t - t0)/h, y(theta) = y0 + theta (dy + (1 - theta) (h k1 - dy + theta (r4 + (1 - theta) r5))),
     /// where dy = y1 - y0, r4 = dy - h k7 - (h k1 - dy) and r5 = h (d1 k1 + d3 k3 + d4 k4 + d5 k5 + d6 k6 + d7 k7).
-    /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.5 kB): pass it by
-    /// reference (<c>in</c>) where it matters.
+    /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.8 kB), filled in place by
+    /// <see cref="DormandPrince54.TryStepInPlace"/>
+    /// (the stages straight from the model's kernel, no copies): pass it by reference. Every member is readonly.
     /// </remarks>
-    internal readonly struct DormandPrince54Step : IDenseOutput
+    internal struct DormandPrince54Step : IDenseOutput
     {
-        private readonly StateDerivative _slopeDefect; // h k1 - dy
-        private readonly StateDerivative _r4;
-        private readonly StateDerivative _r5;
+        private StateDerivative _slopeDefect; // h k1 - dy
+        private StateDerivative _r4;
+        private StateDerivative _r5;
 
-        internal DormandPrince54Step(
-            in FlightState start,
-            in StateDerivative k1,
-            in DormandPrince54Stages stages,
-            double step,
-            double errorNorm,
-            double nextStep,
-            bool accepted)
+        /// <summary>
+        /// Sets the step's outcome and builds its dense output from <see cref="Start"/>, <see cref="StartDerivative"/> and
+        /// <see cref="Stages"/>, which the caller has written.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal void Complete(double step, double errorNorm, double nextStep, bool accepted)
         {
-            Start = start;
-            End = stages.End;
-            StartDerivative = k1;
-            EndDerivative = stages.K7;
             Step = step;
             ErrorNorm = errorNorm;
             NextStep = nextStep;
             Accepted = accepted;
 
-            ref readonly FlightState end = ref stages.End;
-            ref readonly StateDerivative k7 = ref stages.K7;
+            ref readonly FlightState start = ref Start;
+            ref readonly FlightState end = ref Stages.End;
+            ref readonly StateDerivative k1 = ref StartDerivative;
+            ref readonly StateDerivative k7 = ref Stages.K7;
             Vector3d dp = end.Position - start.Position;
             Vector3d dv = end.Velocity - start.Velocity;
             Vector3d dw = end.AngularVelocity - start.AngularVelocity;
@@ -50,35 +48,38 @@ namespace MagnusBall.Integration
                 dv - k7.Acceleration * step - _slopeDefect.Acceleration,
                 dw - k7.AngularAcceleration * step - _slopeDefect.AngularAcceleration);
             _r5 = new StateDerivative(
-                Dense(k1.Velocity, stages.K3.Velocity, stages.K4.Velocity, stages.K5.Velocity, stages.K6.Velocity, k7.Velocity, step),
-                Dense(k1.Acceleration, stages.K3.Acceleration, stages.K4.Acceleration, stages.K5.Acceleration, stages.K6.Acceleration, k7.Acceleration, step),
-                Dense(k1.AngularAcceleration, stages.K3.AngularAcceleration, stages.K4.AngularAcceleration, stages.K5.AngularAcceleration,
-                    stages.K6.AngularAcceleration, k7.AngularAcceleration, step));
+                Dense(k1.Velocity, Stages.K3.Velocity, Stages.K4.Velocity, Stages.K5.Velocity, Stages.K6.Velocity, k7.Velocity, step),
+                Dense(k1.Acceleration, Stages.K3.Acceleration, Stages.K4.Acceleration, Stages.K5.Acceleration, Stages.K6.Acceleration, k7.Acceleration, step),
+                Dense(k1.AngularAcceleration, Stages.K3.AngularAcceleration, Stages.K4.AngularAcceleration, Stages.K5.AngularAcceleration,
+                    Stages.K6.AngularAcceleration, k7.AngularAcceleration, step));
         }
 
         /// <summary>True when the estimated error was within the tolerances and the step was taken.</summary>
-        public readonly bool Accepted;
+        public bool Accepted;
 
         /// <summary>The state the step started from.</summary>
-        public readonly FlightState Start;
+        public FlightState Start;
+
+        /// <summary>The fifth-order end state and k3..k7 (k7 = f(End)), written by the model's kernel.</summary>
+        public DormandPrince54Stages Stages;
 
         /// <summary>The fifth-order end state (meaningful when <see cref="Accepted"/>).</summary>
-        public readonly FlightState End;
+        public readonly FlightState End => Stages.End;
 
         /// <summary>The derivative at the start (k1).</summary>
-        public readonly StateDerivative StartDerivative;
+        public StateDerivative StartDerivative;
 
         /// <summary>The derivative at the end, k7 = f(End): the next step's k1 (FSAL).</summary>
-        public readonly StateDerivative EndDerivative;
+        public readonly StateDerivative EndDerivative => Stages.K7;
 
         /// <summary>The step attempted, s.</summary>
-        public readonly double Step;
+        public double Step;
 
         /// <summary>The scaled RMS error estimate; at most 1 when accepted.</summary>
-        public readonly double ErrorNorm;
+        public double ErrorNorm;
 
         /// <summary>The step the controller suggests next, s (smaller than <see cref="Step"/> after a rejection).</summary>
-        public readonly double NextStep;
+        public double NextStep;
 
         /// <summary>
         /// The state at <paramref name="time"/> from the fourth-order dense output (no derivative evaluation).
@@ -86,7 +87,7 @@ namespace MagnusBall.Integration
         /// </summary>
         /// <param name="time">The time, s; finite.</param>
         /// <exception cref="ArgumentOutOfRangeException">time is not finite.</exception>
-        public FlightState Interpolate(double time)
+        public readonly FlightState Interpolate(double time)
         {
             Require.Finite(time, nameof(time));
             double theta = Step > 0 ? (time - Start.Time) / Step : 1;
@@ -97,13 +98,13 @@ namespace MagnusBall.Integration
         /// <summary>The state at fraction <paramref name="theta"/> of the step (0 = start, 1 = end), clamped to [0, 1].</summary>
         /// <param name="theta">The fraction of the step; finite.</param>
         /// <exception cref="ArgumentOutOfRangeException">theta is not finite.</exception>
-        public FlightState InterpolateFraction(double theta)
+        public readonly FlightState InterpolateFraction(double theta)
         {
             Require.Finite(theta, nameof(theta));
             theta = theta < 0 ? 0 : theta > 1 ? 1 : theta;
             double rest = 1 - theta;
             FlightState y0 = Start;
-            FlightState y1 = End;
+            FlightState y1 = Stages.End;
             return new FlightState(
                 Blend(y0.Position, y1.Position, _slopeDefect.Velocity, _r4.Velocity, _r5.Velocity, theta, rest),
                 Blend(y0.Velocity, y1.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration, theta, rest),
@@ -112,16 +113,16 @@ namespace MagnusBall.Integration
         }
 
         /// <inheritdoc />
-        public double StartTime => Start.Time;
+        public readonly double StartTime => Start.Time;
 
         /// <inheritdoc />
-        public double EndTime => End.Time;
+        public readonly double EndTime => Stages.End.Time;
 
         /// <inheritdoc />
-        public FlightState StateAt(double time) => Interpolate(time);
+        public readonly FlightState StateAt(double time) => Interpolate(time);
 
         /// <inheritdoc />
-        public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
+        public readonly bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
             double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
             var condition = new PlaneDistance(plane, sign);
@@ -130,31 +131,31 @@ namespace MagnusBall.Integration
         }
 
         /// <inheritdoc />
-        public bool TryFindApex(in Vector3d up, out double time) => FirstFall(new UpSpeed(up), false, 0, out time);
+        public readonly bool TryFindApex(in Vector3d up, out double time) => FirstFall(new UpSpeed(up), false, 0, out time);
 
         /// <summary>
         /// True when the step provably holds no crossing of <paramref name="plane"/> in <paramref name="direction"/>:
         /// <see cref="TryFindCrossing"/> would find none (the ball stays on the side it starts on, with room for rounding).
         /// False means only that it may hold one.
         /// </summary>
-        internal bool StaysClearOf(in Plane plane, CrossingDirection direction)
+        internal readonly bool StaysClearOf(in Plane plane, CrossingDirection direction)
         {
             var condition = new PlaneDistance(plane, direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0);
-            return StaysClear(condition, condition.Value(Start), condition.Value(End));
+            return StaysClear(condition, condition.Value(Start), condition.Value(Stages.End));
         }
 
         /// <summary>True when the step provably holds no apex along <paramref name="up"/> (<see cref="TryFindApex"/> would find none).</summary>
-        internal bool StaysClearOfApex(in Vector3d up)
+        internal readonly bool StaysClearOfApex(in Vector3d up)
         {
             var condition = new UpSpeed(up);
-            return StaysClear(condition, condition.Value(Start), condition.Value(End));
+            return StaysClear(condition, condition.Value(Start), condition.Value(Stages.End));
         }
 
         /// <summary>
         /// True when the step provably holds none of the events <paramref name="events"/> watches, with the landing on its
         /// ground only when <paramref name="landings"/> (as FlightEventSet.Scan): its scan would find nothing.
         /// </summary>
-        internal bool StaysClearOf(FlightEventSet events, bool landings)
+        internal readonly bool StaysClearOf(FlightEventSet events, bool landings)
         {
             Plane? ground = landings ? events.Ground : null;
             if (ground.HasValue && !StaysClearOf(ground.Value, CrossingDirection.AgainstNormal))
@@ -195,7 +196,7 @@ namespace MagnusBall.Integration
         // refined by the Illinois method to HermiteSegment.TimeTolerance. Bounded: at most 200 refinement passes. A step
         // the condition provably stays above zero on, or below it (StaysClear), is not sampled: every sample would be on
         // that side, so the answer (none) is the same.
-        private bool FirstFall<TCondition>(in TCondition condition, bool fromZero, double slope0, out double time)
+        private readonly bool FirstFall<TCondition>(in TCondition condition, bool fromZero, double slope0, out double time)
             where TCondition : struct, IStepCondition
         {
             time = 0;
@@ -211,7 +212,7 @@ namespace MagnusBall.Integration
                 return true;
             }
 
-            double g1 = condition.Value(End);
+            double g1 = condition.Value(Stages.End);
             if (StaysClear(condition, g0, g1))
             {
                 return false;
@@ -242,7 +243,7 @@ namespace MagnusBall.Integration
         // condition is affine in the state, so at every theta it lies within min(g0, g1) + (1/4) min(0, d) + (4/27) min(0, r4)
         // + (1/16) min(0, r5) and the same with max, d, r4, r5 being its linear part applied to D, r4, r5. False (sample)
         // when anything is not finite.
-        private bool StaysClear<TCondition>(in TCondition condition, double g0, double g1)
+        private readonly bool StaysClear<TCondition>(in TCondition condition, double g0, double g1)
             where TCondition : struct, IStepCondition
         {
             double d = condition.Linear(_slopeDefect), r4 = condition.Linear(_r4), r5 = condition.Linear(_r5);
@@ -257,7 +258,7 @@ namespace MagnusBall.Integration
             return upper < -margin;
         }
 
-        private double Refine<TCondition>(in TCondition condition, double lo, double glo, double hi, double ghi)
+        private readonly double Refine<TCondition>(in TCondition condition, double lo, double glo, double hi, double ghi)
             where TCondition : struct, IStepCondition
         {
             double tolerance = Step > 0 ? HermiteSegment.TimeTolerance / Step : 1;
@@ -295,15 +296,15 @@ namespace MagnusBall.Integration
                 }
             }
 
-            return hi >= 1 ? End.Time : Start.Time + hi * Step;
+            return hi >= 1 ? Stages.End.Time : Start.Time + hi * Step;
         }
 
         // The position and the velocity at fraction theta in [0, 1]: InterpolateFraction's, bit for bit, without the rest.
-        private Vector3d PositionAt(double theta) =>
-            Blend(Start.Position, End.Position, _slopeDefect.Velocity, _r4.Velocity, _r5.Velocity, theta, 1 - theta);
+        private readonly Vector3d PositionAt(double theta) =>
+            Blend(Start.Position, Stages.End.Position, _slopeDefect.Velocity, _r4.Velocity, _r5.Velocity, theta, 1 - theta);
 
-        private Vector3d VelocityAt(double theta) =>
-            Blend(Start.Velocity, End.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration, theta, 1 - theta);
+        private readonly Vector3d VelocityAt(double theta) =>
+            Blend(Start.Velocity, Stages.End.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration, theta, 1 - theta);
 
         // A condition on the state, affine in it: Value(state) = Linear(the part of the state it reads) + a constant.
         private interface IStepCondition
@@ -340,7 +341,7 @@ namespace MagnusBall.Integration
             public double Linear(in StateDerivative coefficient) => _sign * Vector3d.Dot(coefficient.Velocity, _plane.Normal);
 
             public double Magnitude(in DormandPrince54Step step) =>
-                Weighted(step.Start.Position) + Weighted(step.End.Position) + Weighted(step._slopeDefect.Velocity) + Weighted(step._r4.Velocity) +
+                Weighted(step.Start.Position) + Weighted(step.Stages.End.Position) + Weighted(step._slopeDefect.Velocity) + Weighted(step._r4.Velocity) +
                 Weighted(step._r5.Velocity) + Weighted(_plane.Point);
 
             private double Weighted(in Vector3d x) => AbsoluteDot(x, _plane.Normal);
@@ -359,7 +360,7 @@ namespace MagnusBall.Integration
             public double Linear(in StateDerivative coefficient) => Vector3d.Dot(coefficient.Acceleration, _up);
 
             public double Magnitude(in DormandPrince54Step step) =>
-                AbsoluteDot(step.Start.Velocity, _up) + AbsoluteDot(step.End.Velocity, _up) + AbsoluteDot(step._slopeDefect.Acceleration, _up) +
+                AbsoluteDot(step.Start.Velocity, _up) + AbsoluteDot(step.Stages.End.Velocity, _up) + AbsoluteDot(step._slopeDefect.Acceleration, _up) +
                 AbsoluteDot(step._r4.Acceleration, _up) + AbsoluteDot(step._r5.Acceleration, _up);
         }
 
@@ -373,6 +374,7 @@ namespace MagnusBall.Integration
         private static Vector3d Blend(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5, double theta, double rest) =>
             y0 + ((y1 - y0) + (defect + (r4 + r5 * rest) * theta) * rest) * theta;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3d Dense(in Vector3d k1, in Vector3d k3, in Vector3d k4, in Vector3d k5, in Vector3d k6, in Vector3d k7, double h) =>
             (k1 * D1 + k3 * D3 + k4 * D4 + k5 * D5 + k6 * D6 + k7 * D7) * h;
 
