@@ -478,7 +478,12 @@ namespace MagnusBall.Flight
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
                 // find nothing, without them. For StateAt between frames: the cubic Hermite through the step's ends.
-                PushSegment(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative));
+                if (_pendingSegmentCount < _pendingSegments.Length)
+                {
+                    // PushSegment's write, built in its slot (the step's clock advanced: Takes).
+                    _pendingSegments[_pendingSegmentCount++] = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
+                }
+
                 _now.State = end;
                 _now.Derivative = endDerivative;
                 return true;
