@@ -30,28 +30,14 @@ namespace MagnusBall.Integration
     /// </remarks>
     public sealed class DormandPrince54 : IIntegrator
     {
-        // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M").
-        internal const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
+        // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M"); the flight kernel's stages use the same constants.
+        private const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
         internal const double A21 = 1.0 / 5;
         internal const double A31 = 3.0 / 40, A32 = 9.0 / 40;
         internal const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
         internal const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
         internal const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
         internal const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
-
-        /// <summary>
-        /// The tableau's rows for the flight kernel's stage loop: a21; a31 a32; a41 a42 a43; a51..a54; a61..a65; then the
-        /// fifth-order weights b1 b2 b3 b4 b5 b6 (b2 = 0).
-        /// </summary>
-        internal static readonly double[] Tableau =
-        {
-            A21,
-            A31, A32,
-            A41, A42, A43,
-            A51, A52, A53, A54,
-            A61, A62, A63, A64, A65,
-            B1, 0, B3, B4, B5, B6,
-        };
 
         // The error weights b - b_hat (fifth minus fourth order), the last on k7 = f(y1).
         private const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200, E6 = 22.0 / 525, E7 = -1.0 / 40;
