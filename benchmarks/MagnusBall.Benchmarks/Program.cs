@@ -38,6 +38,8 @@ namespace MagnusBall.Benchmarks
                     return 0;
                 case "kernel":
                     return Kernel.Run(args[1], long.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture));
+                case "workload":
+                    return Ratios.Profile(args[1], double.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture));
                 case "peers-check":
                     {
                         var peers = new Peers();

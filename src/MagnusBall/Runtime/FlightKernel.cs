@@ -66,6 +66,7 @@ namespace MagnusBall
         private readonly double _density;
         private readonly double _viscosity;
         private readonly bool _windVaries;
+        private readonly bool _stillAir; // every wind component +0: v - wind is v itself
 
         internal FlightKernel(FlightModel model, TDrag drag, TLift lift, TDecay decay)
         {
@@ -81,27 +82,36 @@ namespace MagnusBall
             _density = model.Air.Density;
             _viscosity = model.Air.DynamicViscosity;
             _windVaries = model.Air.WindProfile != null && model.Up.LengthSquared > 0;
+            _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
         }
+
+        private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
 
         /// <summary>The drag, lift and spin-decay laws' type names, for tests and diagnostics.</summary>
         public override string ToString() => $"FlightKernel<{typeof(TDrag).Name}, {typeof(TLift).Name}, {typeof(TDecay).Name}>";
 
         // The acceleration and spin acceleration at (position, velocity, spin): FlightModel's formula, term by term in the
         // same order (so the bits agree), computing only the inputs some law reads. The Reads/IsPresent checks are
-        // constants of the type parameters and fold away.
+        // constants of the type parameters and fold away. Component by component (doubles, not Vector3d locals): the JIT
+        // then keeps the evaluation chain (stage velocity, relative velocity, speed, acceleration) in registers instead of
+        // storing each vector to the stack and reloading it, which put a store-to-load forwarding delay on every link of
+        // RK4's dependent chain; Mono's JIT, which handles structs worse, gains the same way.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private void Rates(
-            in Vector3d position, in Vector3d velocity, in Vector3d w, double spinRate, double inverseSpinRate,
+            in Vector3d position, double vx, double vy, double vz, in Vector3d spin, double spinRate, double inverseSpinRate,
             out Vector3d acceleration, out Vector3d spinAcceleration)
         {
             Counter?.Add();
-            acceleration = _gravity;
+            double ax = _gravity.X, ay = _gravity.Y, az = _gravity.Z;
             spinAcceleration = default;
             bool aero = _drag.IsPresent || _lift.IsPresent;
             if (!aero && !_decay.IsPresent)
             {
+                acceleration = new Vector3d(ax, ay, az);
                 return;
             }
+
+            double wx = spin.X, wy = spin.Y, wz = spin.Z;
 
             AeroInputs reads = _drag.Reads | _lift.Reads | _decay.Reads;
             bool readsTransverse = (reads & AeroInputs.TransverseSpinRate) != 0;
@@ -109,53 +119,46 @@ namespace MagnusBall
             bool readsSPerp = (reads & TransverseSpinParameterBit) != 0;
             bool readsRe = (reads & AeroInputs.ReynoldsNumber) != 0;
 
-            Vector3d relative = velocity - (_windVaries ? _air.WindAt(position, _up) : _wind);
-            double speed = relative.Length;
+            // v - wind; in still air (every wind component +0) v itself, which is the same number: x - (+0) == x for every
+            // double x, -0 and NaN included.
+            double rx = vx, ry = vy, rz = vz;
+            if (_windVaries)
+            {
+                Vector3d wind = _air.WindAt(position, _up);
+                rx = vx - wind.X;
+                ry = vy - wind.Y;
+                rz = vz - wind.Z;
+            }
+            else if (!_stillAir)
+            {
+                rx = vx - _wind.X;
+                ry = vy - _wind.Y;
+                rz = vz - _wind.Z;
+            }
+
             if (reads == AeroInputs.None)
             {
-                // No law reads a spin parameter (the thesis's constant coefficients): the same force with the algebra
-                // folded, (rho A / 2m) C_L s^2 (w x v_hat) / |w| = ((rho A / 2m) C_L s / |w|) (w x v_rel), so no 1/s,
-                // and 1/|w| once per step where the spin is constant. Equal to the general formula to rounding
-                // (FlightKernelTests: within 4 ulp of the largest term), not bit for bit.
-                if (speed > FlightModel.MinimumAerodynamicSpeed)
-                {
-                    var plain = new AeroConditions(speed, spinRate, 0, _radius, _density, 0, 0, 0);
-                    if (_drag.IsPresent)
-                    {
-                        double dragScale = -_factor * _drag.Coefficient(plain) * speed;
-                        acceleration += relative * dragScale;
-                    }
-
-                    if (_lift.IsPresent && spinRate > 0)
-                    {
-                        double liftScale = _factor * _lift.Coefficient(plain) * speed * inverseSpinRate;
-                        acceleration += Vector3d.Cross(w, relative) * liftScale;
-                    }
-
-                    if (_decay.IsPresent)
-                    {
-                        spinAcceleration = _decay.SpinAcceleration(w, plain);
-                    }
-                }
-                else if (_decay.IsPresent)
-                {
-                    spinAcceleration = _decay.SpinAcceleration(w, new AeroConditions(0, spinRate, 0, _radius, _density, 0, 0, 0));
-                }
-
+                FoldedRates(rx, ry, rz, spin, spinRate, inverseSpinRate, ref ax, ref ay, ref az, ref spinAcceleration);
+                acceleration = new Vector3d(ax, ay, az);
                 return;
             }
 
+            double speed = Vector3d.LengthOf(rx, ry, rz);
             if (speed > FlightModel.MinimumAerodynamicSpeed)
             {
-                Vector3d spinCross = default;
+                double cx = 0, cy = 0, cz = 0; // w x v_hat
                 double transverse = 0;
                 if (_lift.IsPresent || readsTransverse)
                 {
-                    Vector3d direction = relative / speed;
-                    spinCross = Vector3d.Cross(w, direction);
+                    // relative / speed (Vector3d's division: one reciprocal, three products), then Vector3d.Cross
+                    double inverseSpeed = 1.0 / speed;
+                    double dx = rx * inverseSpeed, dy = ry * inverseSpeed, dz = rz * inverseSpeed;
+                    cx = wy * dz - wz * dy;
+                    cy = wz * dx - wx * dz;
+                    cz = wx * dy - wy * dx;
                     if (readsTransverse)
                     {
-                        transverse = spinCross.Length;
+                        transverse = Vector3d.LengthOf(cx, cy, cz);
                     }
                 }
 
@@ -174,42 +177,92 @@ namespace MagnusBall
                 {
                     // F_D / m = -(rho A / 2m) C_D s v_rel  (thesis eq. 4-5)
                     double dragScale = -_factor * _drag.Coefficient(conditions) * speed;
-                    acceleration += relative * dragScale;
+                    ax += rx * dragScale;
+                    ay += ry * dragScale;
+                    az += rz * dragScale;
                 }
 
                 if (_lift.IsPresent && spinRate > 0)
                 {
                     // F_M / m = (rho A / 2m) C_L s^2 (w x v_hat) / |w|  (transverse-spin form)
                     double liftScale = _factor * _lift.Coefficient(conditions) * speed * speed / spinRate;
-                    acceleration += spinCross * liftScale;
+                    ax += cx * liftScale;
+                    ay += cy * liftScale;
+                    az += cz * liftScale;
                 }
 
                 if (_decay.IsPresent)
                 {
-                    spinAcceleration = _decay.SpinAcceleration(w, conditions);
+                    spinAcceleration = _decay.SpinAcceleration(spin, conditions);
                 }
             }
             else if (_decay.IsPresent)
             {
                 var still = new AeroConditions(0, spinRate, 0, _radius, _density, 0, 0, 0);
-                spinAcceleration = _decay.SpinAcceleration(w, still);
+                spinAcceleration = _decay.SpinAcceleration(spin, still);
+            }
+
+            acceleration = new Vector3d(ax, ay, az);
+        }
+
+        // Rates for laws that read no spin parameter (see Rates), from the air-relative velocity r: gravity already in a.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private void FoldedRates(
+            double rx, double ry, double rz, in Vector3d spin, double spinRate, double inverseSpinRate,
+            ref double ax, ref double ay, ref double az, ref Vector3d spinAcceleration)
+        {
+            double wx = spin.X, wy = spin.Y, wz = spin.Z;
+            double speed = Vector3d.LengthOf(rx, ry, rz);
+            // No law reads a spin parameter (the thesis's constant coefficients): the same force with the algebra
+            // folded, (rho A / 2m) C_L s^2 (w x v_hat) / |w| = ((rho A / 2m) C_L s / |w|) (w x v_rel), so no 1/s,
+            // and 1/|w| once per step where the spin is constant. Equal to the general formula to rounding
+            // (FlightKernelTests: within 4 ulp of the largest term), not bit for bit.
+            if (speed > FlightModel.MinimumAerodynamicSpeed)
+            {
+                var plain = new AeroConditions(speed, spinRate, 0, _radius, _density, 0, 0, 0);
+                if (_drag.IsPresent)
+                {
+                    double dragScale = -_factor * _drag.Coefficient(plain) * speed;
+                    ax += rx * dragScale;
+                    ay += ry * dragScale;
+                    az += rz * dragScale;
+                }
+
+                if (_lift.IsPresent && spinRate > 0)
+                {
+                    double liftScale = _factor * _lift.Coefficient(plain) * speed * inverseSpinRate;
+                    // (w x v_rel) liftScale, Vector3d.Cross's formula
+                    ax += (wy * rz - wz * ry) * liftScale;
+                    ay += (wz * rx - wx * rz) * liftScale;
+                    az += (wx * ry - wy * rx) * liftScale;
+                }
+
+                if (_decay.IsPresent)
+                {
+                    spinAcceleration = _decay.SpinAcceleration(spin, plain);
+                }
+            }
+            else if (_decay.IsPresent)
+            {
+                spinAcceleration = _decay.SpinAcceleration(spin, new AeroConditions(0, spinRate, 0, _radius, _density, 0, 0, 0));
             }
         }
 
         // |w| where some law reads it or lift needs it (else 0), and 1/|w| where the folded lift uses it (else 0).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private void SpinRates(in Vector3d w, out double spinRate, out double inverseSpinRate)
+        private void SpinRates(double wx, double wy, double wz, out double spinRate, out double inverseSpinRate)
         {
             AeroInputs reads = _drag.Reads | _lift.Reads | _decay.Reads;
-            spinRate = _lift.IsPresent || (reads & AeroInputs.SpinRate) != 0 ? w.Length : 0;
+            spinRate = _lift.IsPresent || (reads & AeroInputs.SpinRate) != 0 ? Vector3d.LengthOf(wx, wy, wz) : 0;
             inverseSpinRate = reads == AeroInputs.None && _lift.IsPresent && spinRate > 0 ? 1.0 / spinRate : 0;
         }
 
         internal override StateDerivative Derivative(in FlightState state)
         {
-            SpinRates(state.AngularVelocity, out double spinRate, out double inverseSpinRate);
-            Rates(state.Position, state.Velocity, state.AngularVelocity, spinRate, inverseSpinRate, out Vector3d acceleration, out Vector3d spinAcceleration);
-            return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
+            Vector3d p = state.Position, v = state.Velocity, w = state.AngularVelocity;
+            SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate);
+            Rates(p, v.X, v.Y, v.Z, w, spinRate, inverseSpinRate, out Vector3d acceleration, out Vector3d spinAcceleration);
+            return new StateDerivative(v, acceleration, spinAcceleration);
         }
 
         internal override FlightState RungeKutta4(in FlightState state, in StateDerivative k1, double step, out StateDerivative end)
@@ -240,17 +293,18 @@ namespace MagnusBall
             Vector3d v2 = Add(v, k1.Acceleration, step);
             Vector3d w2 = _decay.IsPresent ? Add(w, k1.AngularAcceleration, step) : w;
             Vector3d p2 = _windVaries ? Add(p, k1.Velocity, step) : p;
-            SpinRates(w2, out double spin2, out double inverse2);
-            Rates(p2, v2, w2, spin2, inverse2, out Vector3d a2, out Vector3d wd2);
+            SpinRates(w2.X, w2.Y, w2.Z, out double spin2, out double inverse2);
+            Rates(p2, v2.X, v2.Y, v2.Z, w2, spin2, inverse2, out Vector3d a2, out Vector3d wd2);
             double half = 0.5 * step;
             var next = new FlightState(
                 p + (k1.Velocity + v2) * half,
                 v + (k1.Acceleration + a2) * half,
                 w + (k1.AngularAcceleration + wd2) * half,
                 state.Time + step);
-            SpinRates(next.AngularVelocity, out double spin, out double inverse);
-            Rates(next.Position, next.Velocity, next.AngularVelocity, spin, inverse, out Vector3d a, out Vector3d wd);
-            end = new StateDerivative(next.Velocity, a, wd);
+            Vector3d np = next.Position, nv = next.Velocity, nw = next.AngularVelocity;
+            SpinRates(nw.X, nw.Y, nw.Z, out double spin, out double inverse);
+            Rates(np, nv.X, nv.Y, nv.Z, nw, spin, inverse, out Vector3d a, out Vector3d wd);
+            end = new StateDerivative(nv, a, wd);
             return next;
         }
 
@@ -266,7 +320,8 @@ namespace MagnusBall
             k.S1 = k1.AngularAcceleration;
             double h = step;
             double check = 0; // the sum of every stage's rates: finite when each of them is (or spuriously not, on overflow)
-            SpinRates(state.AngularVelocity, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
+            Vector3d w0 = state.AngularVelocity;
+            SpinRates(w0.X, w0.Y, w0.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
             for (int stage = 1; ; stage++)
             {
                 // stage 1..5: k2..k6; stage 6: the end, where k7 is evaluated
@@ -274,10 +329,10 @@ namespace MagnusBall
                 bool end = stage == 6;
                 if (_decay.IsPresent || end)
                 {
-                    SpinRates(ws, out spinRate, out inverseSpinRate);
+                    SpinRates(ws.X, ws.Y, ws.Z, out spinRate, out inverseSpinRate);
                 }
 
-                Rates(ps, vs, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
+                Rates(ps, vs.X, vs.Y, vs.Z, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
                 check += a.X + a.Y + a.Z + s.X + s.Y + s.Z;
                 switch (stage)
                 {
@@ -435,29 +490,94 @@ namespace MagnusBall
             public Vector3d S1, S2, S3, S4, S5, S6;
         }
 
-        // One RK4 step, RungeKutta4.Step's arithmetic term by term, plus the end rates. One evaluation site (a loop over
-        // the four evaluations k2, k3, k4 and the end), so the inlined laws appear once in the code and their numbers
-        // stay in registers (four inlined copies made a 6 kB method with a 1.6 kB stack frame). The stage positions are
-        // formed only when the wind depends on the height (no law reads the position otherwise), the stage spins only
-        // when the spin decays (otherwise its rate is zero and every stage spin equals the start spin).
-        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        // One RK4 step, RungeKutta4.Step's arithmetic term by term, plus the end rates, in one of two shapes with the same
+        // arithmetic. The stage positions are formed only when the wind depends on the height (no law reads the position
+        // otherwise), the stage spins only when the spin decays (otherwise its rate is zero and every stage spin equals the
+        // start spin). The velocities, on the dependent chain from one stage's slope to the next, are kept component by
+        // component so that the chain stays in registers.
+        // - Laws that read no spin parameter (the folded form: constant coefficients, or none): the four evaluations
+        //   written out (Rk4Unrolled). Their evaluation is a dozen operations, so four copies are small, and straight-line
+        //   code lets the JIT keep the chain in registers (the loop spilled each stage's slope to the stack and reloaded
+        //   it: 0.86x against 0.74x the thesis-style step, ratios in one run, docs/performance.md).
+        // - Every other kernel: one evaluation site, a loop over the four evaluations k2, k3, k4 and the end (Rk4Loop), so
+        //   the inlined laws appear once in the code (four inlined copies of Stepanek's laws made a 6 kB method with a
+        //   1.6 kB stack frame, and were measured slower).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration) =>
+            (_drag.Reads | _lift.Reads | _decay.Reads) == AeroInputs.None
+                ? Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration)
+                : Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
+
+        private FlightState Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
         {
             double half = 0.5 * step;
             double sixth = step / 6.0;
-            Vector3d p = state.Position, v = state.Velocity, w = state.AngularVelocity;
             bool spins = _decay.IsPresent;
             bool positions = _windVaries;
+            Vector3d p = state.Position, w = state.AngularVelocity;
+            double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
+            Vector3d k1a = k1.Acceleration, k1s = k1.AngularAcceleration;
+            SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
 
-            Vector3d v2 = default, v3 = default, a2 = default, a3 = default, s2 = default, s3 = default;
-            Vector3d vk = v, ak = k1.Acceleration, sk = k1.AngularAcceleration; // the slope that forms the next stage
-            Vector3d ps = p, vs, ws = w;
-            SpinRates(w, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
+            // k2 at y + h/2 k1
+            double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
+            Vector3d w2 = spins ? Add(w, k1s, half) : w;
+            Vector3d p2 = positions ? new Vector3d(p.X + half * vx, p.Y + half * vy, p.Z + half * vz) : p;
+            Stage(p2, v2x, v2y, v2z, w2, ref spinRate, ref inverseSpinRate, out Vector3d a2, out Vector3d s2);
+
+            // k3 at y + h/2 k2
+            double v3x = vx + half * a2.X, v3y = vy + half * a2.Y, v3z = vz + half * a2.Z;
+            Vector3d w3 = spins ? Add(w, s2, half) : w;
+            Vector3d p3 = positions ? new Vector3d(p.X + half * v2x, p.Y + half * v2y, p.Z + half * v2z) : p;
+            Stage(p3, v3x, v3y, v3z, w3, ref spinRate, ref inverseSpinRate, out Vector3d a3, out Vector3d s3);
+
+            // k4 at y + h k3
+            double v4x = vx + step * a3.X, v4y = vy + step * a3.Y, v4z = vz + step * a3.Z;
+            Vector3d w4 = spins ? Add(w, s3, step) : w;
+            Vector3d p4 = positions ? new Vector3d(p.X + step * v3x, p.Y + step * v3y, p.Z + step * v3z) : p;
+            Stage(p4, v4x, v4y, v4z, w4, ref spinRate, ref inverseSpinRate, out Vector3d a4, out Vector3d s4);
+
+            // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as RungeKutta4 groups it, and the end rates
+            Vector3d k1v = k1.Velocity;
+            var pe = new Vector3d(
+                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
+                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
+                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            double vex = vx + (k1a.X + (a2.X + a3.X) * 2.0 + a4.X) * sixth;
+            double vey = vy + (k1a.Y + (a2.Y + a3.Y) * 2.0 + a4.Y) * sixth;
+            double vez = vz + (k1a.Z + (a2.Z + a3.Z) * 2.0 + a4.Z) * sixth;
+            Vector3d we = spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
+            Stage(pe, vex, vey, vez, we, ref spinRate, ref inverseSpinRate, out endAcceleration, out endSpinAcceleration);
+            return new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
+        }
+
+        // k2 + k3 is summed as soon as k3 is known (the same sum RungeKutta4 forms, fewer numbers live across the loop).
+        private FlightState Rk4Loop(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        {
+            double half = 0.5 * step;
+            double sixth = step / 6.0;
+            bool spins = _decay.IsPresent;
+            bool positions = _windVaries;
+            Vector3d p = state.Position, w = state.AngularVelocity;
+            double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
+
+            // The slope that forms the next stage (velocity, acceleration, spin acceleration), and k2 (then k2 + k3).
+            double vkx = vx, vky = vy, vkz = vz, akx = k1.Acceleration.X, aky = k1.Acceleration.Y, akz = k1.Acceleration.Z;
+            Vector3d sk = k1.AngularAcceleration;
+            double v23x = 0, v23y = 0, v23z = 0, a23x = 0, a23y = 0, a23z = 0;
+            Vector3d s23 = default;
+            Vector3d ps = p, ws = w;
+            double vsx, vsy, vsz;
+            SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
             for (int stage = 0; ; stage++)
             {
                 if (stage < 3)
                 {
+                    // x + c k, FlightState.Advance's expression
                     double c = stage == 2 ? step : half;
-                    vs = Add(v, ak, c);
+                    vsx = vx + c * akx;
+                    vsy = vy + c * aky;
+                    vsz = vz + c * akz;
                     if (spins)
                     {
                         ws = Add(w, sk, c);
@@ -465,47 +585,79 @@ namespace MagnusBall
 
                     if (positions)
                     {
-                        ps = Add(p, vk, c);
+                        ps = new Vector3d(p.X + c * vkx, p.Y + c * vky, p.Z + c * vkz);
                     }
                 }
                 else
                 {
                     // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as RungeKutta4 groups it (vk, ak, sk hold k4)
-                    ps = p + (k1.Velocity + 2.0 * (v2 + v3) + vk) * sixth;
-                    vs = v + (k1.Acceleration + 2.0 * (a2 + a3) + ak) * sixth;
-                    ws = spins ? w + (k1.AngularAcceleration + 2.0 * (s2 + s3) + sk) * sixth : w + k1.AngularAcceleration * sixth;
+                    Vector3d k1v = k1.Velocity, k1a = k1.Acceleration;
+                    ps = new Vector3d(
+                        p.X + (k1v.X + v23x * 2.0 + vkx) * sixth,
+                        p.Y + (k1v.Y + v23y * 2.0 + vky) * sixth,
+                        p.Z + (k1v.Z + v23z * 2.0 + vkz) * sixth);
+                    vsx = vx + (k1a.X + a23x * 2.0 + akx) * sixth;
+                    vsy = vy + (k1a.Y + a23y * 2.0 + aky) * sixth;
+                    vsz = vz + (k1a.Z + a23z * 2.0 + akz) * sixth;
+                    ws = spins ? w + (k1.AngularAcceleration + 2.0 * s23 + sk) * sixth : w + k1.AngularAcceleration * sixth;
                 }
 
                 if (spins)
                 {
-                    SpinRates(ws, out spinRate, out inverseSpinRate);
+                    SpinRates(ws.X, ws.Y, ws.Z, out spinRate, out inverseSpinRate);
                 }
 
-                Rates(ps, vs, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
+                Rates(ps, vsx, vsy, vsz, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
                 if (stage == 3)
                 {
                     endAcceleration = a;
                     endSpinAcceleration = s;
-                    return new FlightState(ps, vs, ws, state.Time + step);
+                    return new FlightState(ps, new Vector3d(vsx, vsy, vsz), ws, state.Time + step);
                 }
 
                 if (stage == 0)
                 {
-                    v2 = vs;
-                    a2 = a;
-                    s2 = s;
+                    v23x = vsx;
+                    v23y = vsy;
+                    v23z = vsz;
+                    a23x = a.X;
+                    a23y = a.Y;
+                    a23z = a.Z;
+                    s23 = s;
                 }
                 else if (stage == 1)
                 {
-                    v3 = vs;
-                    a3 = a;
-                    s3 = s;
+                    v23x += vsx;
+                    v23y += vsy;
+                    v23z += vsz;
+                    a23x += a.X;
+                    a23y += a.Y;
+                    a23z += a.Z;
+                    s23 += s;
                 }
 
-                vk = vs;
-                ak = a;
+                vkx = vsx;
+                vky = vsy;
+                vkz = vsz;
+                akx = a.X;
+                aky = a.Y;
+                akz = a.Z;
                 sk = s;
             }
+        }
+
+        // One evaluation of an RK4 stage: the spin rates at the stage's spin where the spin changes, then the rates.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private void Stage(
+            in Vector3d position, double vx, double vy, double vz, in Vector3d spin, ref double spinRate, ref double inverseSpinRate,
+            out Vector3d acceleration, out Vector3d spinAcceleration)
+        {
+            if (_decay.IsPresent)
+            {
+                SpinRates(spin.X, spin.Y, spin.Z, out spinRate, out inverseSpinRate);
+            }
+
+            Rates(position, vx, vy, vz, spin, spinRate, inverseSpinRate, out acceleration, out spinAcceleration);
         }
 
         // x + h k, component by component (FlightState.Advance's expression).

@@ -39,6 +39,9 @@ namespace MagnusBall
         private readonly bool _hasAero;
         private readonly bool _windVaries; // a wind profile: the wind depends on the height
         private readonly Vector3d _wind;   // the uniform wind (read once here, not per evaluation)
+        private readonly double _gravityLength;
+        private readonly double _coefficientBound; // >= |C_D| + |C_L| for every input, or -1 when a law has no known bound
+        private readonly double _decayRateBound;   // >= |dw/dt| / |w| for every input (with _coefficientBound >= 0)
         private readonly FlightKernel _kernel; // the ODE specialised for these laws (picked once, here)
 
         /// <summary>Creates a flight model.</summary>
@@ -77,6 +80,9 @@ namespace MagnusBall
             _hasAero = (drag != null || lift != null) && air.Density > 0;
             _windVaries = air.WindProfile != null && Up.LengthSquared > 0;
             _wind = air.Wind;
+            _gravityLength = gravity.Length;
+            _coefficientBound = !_hasAero ? 0 : CoefficientBound(drag) is double d && CoefficientBound(lift) is double l ? d + l : -1;
+            _decayRateBound = spinDecay == null ? 0 : spinDecay is ExponentialSpinDecay e ? 1.0 / e.TimeConstant : double.PositiveInfinity;
             _kernel = FlightKernelFactory.Create(this);
         }
 
@@ -324,6 +330,40 @@ namespace MagnusBall
             }
 
             return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
+        }
+
+        // The largest |C| a built-in law can give (null when unknown: a user's law, or one whose bound is not worked out).
+        // Stepanek drag: 0.508 + (22.053 + ...)^(-2/5) <= 0.508 + 22.053^(-2/5) = 0.7978; Stepanek lift: S / (2.022 S + 0.981)
+        // < 1/2.022 = 0.4946 (Stepanek 1988's fits, Aerodynamics/Stepanek.cs).
+        private static double? CoefficientBound(object? law) => law switch
+        {
+            null => 0,
+            ConstantDrag c => Math.Abs(c.Value),
+            ConstantLift c => Math.Abs(c.Value),
+            StepanekDrag _ => 0.8,
+            StepanekLift _ => 0.5,
+            _ => null,
+        };
+
+        /// <summary>
+        /// True when <see cref="StiffnessRate"/> over a step of <paramref name="step"/> s from <paramref name="state"/> is
+        /// surely at most <paramref name="rateLimit"/> / step, judged from an upper bound of the rate that needs no law
+        /// evaluation: 1.1 (2 k s_max (max|C_D| + max|C_L|) + max decay rate), s_max = s + |g| step, which is at least the
+        /// rate in every branch of <see cref="StiffnessRate"/>. False when a law has no known bound or the bound is not
+        /// below the limit (then the caller computes the rate). StableStepping asks it with half its limit, so the
+        /// roundings of the two computations cannot change its substep count (one in both cases).
+        /// </summary>
+        internal bool StiffnessSurelyBelow(in FlightState state, double step, double rateLimit)
+        {
+            if (!(_coefficientBound >= 0))
+            {
+                return false;
+            }
+
+            double speed = (state.Velocity - (_windVaries ? Air.WindAt(state.Position, Up) : _wind)).Length;
+            double fastest = speed + _gravityLength * step;
+            double bound = 1.1 * (2 * _dragFactor * fastest * _coefficientBound + _decayRateBound);
+            return step * bound <= rateLimit;
         }
 
         /// <summary>

@@ -57,12 +57,16 @@ namespace MagnusBall
         public double Length
         {
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            get
-            {
-                double squared = X * X + Y * Y + Z * Z;
-                // The common case: no overflow and no loss to subnormals (2.2250738585072014e-308 is the smallest normal double).
-                return squared >= 2.2250738585072014e-308 && squared <= double.MaxValue ? Math.Sqrt(squared) : ScaledLength(squared);
-            }
+            get => LengthOf(X, Y, Z);
+        }
+
+        /// <summary><see cref="Length"/> of (x, y, z), from the components (for code that keeps them in separate locals).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double LengthOf(double x, double y, double z)
+        {
+            double squared = x * x + y * y + z * z;
+            // The common case: no overflow and no loss to subnormals (2.2250738585072014e-308 is the smallest normal double).
+            return squared >= 2.2250738585072014e-308 && squared <= double.MaxValue ? Math.Sqrt(squared) : ScaledLength(x, y, z, squared);
         }
 
         /// <summary>The squared Euclidean length (no square root).</summary>
@@ -107,21 +111,26 @@ namespace MagnusBall
         /// <summary>The largest absolute component (0 for the zero vector).</summary>
         internal double MaxAbsComponent => Math.Max(Math.Abs(X), Math.Max(Math.Abs(Y), Math.Abs(Z)));
 
+        // Static, with the components by value: an instance method here would take the vector's address, and a vector whose
+        // address is taken lives in memory (the JIT keeps every local whose Length is read on the stack, a store and a
+        // reload on the flight kernel's critical path).
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private double ScaledLength(double squared)
+        private static double ScaledLength(double x, double y, double z, double squared)
         {
-            if (!IsFinite)
+            if (!(IsFiniteNumber(x) && IsFiniteNumber(y) && IsFiniteNumber(z)))
             {
                 return Math.Sqrt(squared); // NaN or infinity, as the plain formula gives
             }
 
-            double largest = MaxAbsComponent;
+            double largest = Math.Max(Math.Abs(x), Math.Max(Math.Abs(y), Math.Abs(z)));
             if (largest == 0)
             {
                 return 0;
             }
 
-            double x = X / largest, y = Y / largest, z = Z / largest;
+            x /= largest;
+            y /= largest;
+            z /= largest;
             return largest * Math.Sqrt(x * x + y * y + z * z); // infinity only if the length itself exceeds double.MaxValue
         }
 

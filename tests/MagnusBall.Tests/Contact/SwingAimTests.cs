@@ -103,6 +103,24 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void Club_WithARigidHead_KeepsTheHead_AndLandsOnTheTarget()
+        {
+            // The measured driver head rotating about its CG (ClubHead.MeasuredDriver): the inverse solves loft and face
+            // with that head (not a point mass of its mass) and the solved swing lands on the target.
+            var position = new Vector3d(0, 0, Golf.Ball.Radius);
+            var known = new ClubSwing(105 * Mph, 12, -1, 1, -0.5, ClubHead.MeasuredDriver);
+            Vector3d target = Golf.Landing(position, known.Hit(Golf.Ball, ZUp, position));
+            var start = new ClubSwing(105 * Mph, 15, -1, 3, 1.5, ClubHead.MeasuredDriver);
+            SwingSolution<ClubSwing> s = Golf.Aim.ClubFaceToReach(start, ZUp, position, target);
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.Swing.Head.IsPointMass, Is.False);
+            Assert.That(s.Swing.Head.CenterOfGravityDepth, Is.EqualTo(ClubHead.MeasuredDriver.CenterOfGravityDepth));
+            Assert.That(s.Swing.Head.HeelToeInertia, Is.EqualTo(ClubHead.MeasuredDriver.HeelToeInertia));
+            TestContext.Out.WriteLine($"rigid club: {s.Swing}, {s.Iterations} iterations; target {target}");
+            AssertLands(Golf, position, s.Swing.Hit(Golf.Ball, ZUp, position), target, "rigid club");
+        }
+
+        [Test]
         public void Bat_FindsThePathElevationAndAzimuth_ThatLandOnTheTarget_KeepingTheUndercut()
         {
             var position = new Vector3d(0, 0, 1);

@@ -296,6 +296,46 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void FoldedRk4AndHeunSteps_AreTheFormulaOnTheFoldedDerivative_BitForBit()
+        {
+            // The folded kernels' RK4 (written out stage by stage, unlike the loop of the other kernels) and Heun are the
+            // RungeKutta4/Heun arithmetic on the kernel's own (folded) derivative, exactly: only the derivative differs
+            // from the general formula (in rounding, tested above), never the step.
+            foreach (FlightModel model in new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(3, -2, 0.5)), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.2).WithLogarithmicWind(new Vector3d(6, 1, 0)), Gravity.ZUp,
+                    ConstantDrag.CrossLindseyTennis, new ConstantLift(-0.3), new ExponentialSpinDecay(3)),
+            })
+            {
+                foreach (FlightState state in States())
+                {
+                    foreach (double step in new[] { 1.0 / 240, 0.03 })
+                    {
+                        StateDerivative k1 = model.Derivative(state);
+                        FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative rk4End, out _);
+                        FlightState heun = Heun.Instance.Step(model, state, k1, step, out StateDerivative heunEnd, out _);
+                        FlightState rk4Reference = ReferenceRk4(model, state, k1, step, s => model.Derivative(s));
+                        FlightState heunReference = ReferenceHeun(model, state, k1, step, s => model.Derivative(s));
+                        AssertSame(rk4, rk4Reference, state);
+                        AssertSame(heun, heunReference, state);
+                        if (rk4Reference.IsFinite)
+                        {
+                            AssertSame(rk4End.Acceleration, model.Derivative(rk4Reference).Acceleration, state);
+                            AssertSame(rk4End.AngularAcceleration, model.Derivative(rk4Reference).AngularAcceleration, state);
+                        }
+
+                        if (heunReference.IsFinite)
+                        {
+                            AssertSame(heunEnd.Acceleration, model.Derivative(heunReference).Acceleration, state);
+                        }
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void Rk4Steps_EqualsOneStepAtATime_BitForBit()
         {
             var model = new FlightModel(Ball.Tennis, new Air(1.21).WithLogarithmicWind(new Vector3d(5, 0, 0)), Gravity.ZUp,
@@ -349,12 +389,14 @@ namespace MagnusBall.Tests.Integration
         }
 
         // RungeKutta4.Step as it was written before the kernel: the general derivative at each stage.
-        private static FlightState ReferenceRk4(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        private static FlightState ReferenceRk4(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null)
         {
+            rates ??= s => model.GeneralDerivative(s);
             double half = 0.5 * step;
-            StateDerivative k2 = model.GeneralDerivative(state.Advance(derivative, half));
-            StateDerivative k3 = model.GeneralDerivative(state.Advance(k2, half));
-            StateDerivative k4 = model.GeneralDerivative(state.Advance(k3, step));
+            StateDerivative k2 = rates(state.Advance(derivative, half));
+            StateDerivative k3 = rates(state.Advance(k2, half));
+            StateDerivative k4 = rates(state.Advance(k3, step));
             double sixth = step / 6.0;
             return new FlightState(
                 state.Position + (derivative.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
@@ -395,9 +437,11 @@ namespace MagnusBall.Tests.Integration
             return new FlightState(p, v, w, y.Time);
         }
 
-        private static FlightState ReferenceHeun(FlightModel model, in FlightState state, in StateDerivative derivative, double step)
+        private static FlightState ReferenceHeun(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null)
         {
-            StateDerivative k2 = model.GeneralDerivative(state.Advance(derivative, step));
+            rates ??= s => model.GeneralDerivative(s);
+            StateDerivative k2 = rates(state.Advance(derivative, step));
             double half = 0.5 * step;
             return new FlightState(
                 state.Position + (derivative.Velocity + k2.Velocity) * half,

@@ -33,6 +33,48 @@ namespace MagnusBall.Tests.Robustness
         }
 
         [Test]
+        public void CheapBound_NeverSaysBelowWhereTheRateIsNot_AndSkipsTheLawsInTheCommonCase()
+        {
+            // StableStepping skips the law evaluations where StiffnessSurelyBelow holds; that must imply the exact rate is
+            // below the same limit (else a step that needs substeps would be taken whole). Models with every bounded law
+            // kind (constant, Stepanek, exponential decay, none), wind, states from crawling to 1e5 m/s, steps 1e-5 to 1 s.
+            var random = new Random(11);
+            var models = new[]
+            {
+                Tennis(),
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(4, -1, 0)), Gravity.ZUp),
+                new FlightModel(new Ball(0.0027, 0.02, Ball.ThinShellInertiaFactor), new Air(1.2).WithLogarithmicWind(new Vector3d(6, 0, 0)),
+                    Gravity.ZUp, new ConstantDrag(0.5), StepanekLift.Instance, new ExponentialSpinDecay(2)),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance),
+                new FlightModel(Ball.Tennis, Air.Vacuum, Gravity.ZUp, null, null, new ExponentialSpinDecay(0.5)),
+            };
+            int below = 0, cases = 0;
+            foreach (FlightModel model in models)
+            {
+                for (int i = 0; i < 4000; i++)
+                {
+                    double speed = Math.Pow(10, -2 + 7 * random.NextDouble());
+                    var velocity = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * speed;
+                    var spin = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * (3000 * random.NextDouble());
+                    var state = new FlightState(new Vector3d(0, 0, 30 * random.NextDouble()), velocity, spin);
+                    double step = Math.Pow(10, -5 + 5 * random.NextDouble());
+                    double limit = 0.5 * random.NextDouble();
+                    cases++;
+                    if (model.StiffnessSurelyBelow(state, step, limit))
+                    {
+                        below++;
+                        Assert.That(step * model.StiffnessRate(state, step), Is.LessThanOrEqualTo(limit), $"{model} {state} h={step}");
+                    }
+                }
+            }
+
+            Assert.That(below, Is.GreaterThan(cases / 10), "the bound is useful: it holds in a good share of the cases");
+            Assert.That(Tennis().StiffnessSurelyBelow(Drive(), 1.0 / 240, 0.5), Is.True, "a tennis drive at 1/240 s skips the laws");
+            var user = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, new LinearSpinDrag(0.3, 0.1));
+            Assert.That(user.StiffnessSurelyBelow(Drive(), 1.0 / 240, 0.5), Is.False, "a law without a known bound is always evaluated");
+        }
+
+        [Test]
         public void StiffnessRate_BoundsTheDragEigenvalue()
         {
             // Constant C_D, no lift: sigma = 2 k C_D s (s + g h) / s; at h -> 0 exactly the drag eigenvalue 2 k C_D s.

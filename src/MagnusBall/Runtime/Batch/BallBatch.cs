@@ -259,7 +259,7 @@ namespace MagnusBall.Batch
 
             var segment = HermiteSegment.OfTakenStep(start, k1, end, k);
             Span<FlightEvent> found = _found;
-            int count = _landingEvents.Scan(ref segment, found, _startsFlight[i], landings: true);
+            int count = _landingEvents.Scan(ref segment, _found, _startsFlight[i], landings: true);
             FlightEventSet.CountUntil(found.Slice(0, count), FlightEventKinds.Landing, out int stop);
             if (stop >= 0)
             {

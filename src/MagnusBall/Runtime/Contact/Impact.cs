@@ -95,7 +95,11 @@ namespace MagnusBall.Contact
         /// <summary>The ball's speed into the face relative to it, m/s (0 when not approaching).</summary>
         public readonly double IncomingNormalSpeed;
 
-        /// <summary>The change of the body's surface velocity at the contact point, m/s: -Impulse / EffectiveMass (zero for an immovable body).</summary>
+        /// <summary>
+        /// The change of the body's surface velocity at the contact point, m/s: -Impulse / EffectiveMass (zero for an immovable
+        /// body); for a rigid club head (<see cref="Swings.ClubSwing"/> with a rotating <see cref="Swings.ClubHead"/>) it includes the
+        /// head's rotation about its centre of gravity: -(Impulse / M + (I^-1 (r x Impulse)) x r), r from the CG to the contact.
+        /// </summary>
         public readonly Vector3d BodyVelocityChange;
 
         /// <summary>Creates an outcome.</summary>
@@ -177,15 +181,7 @@ namespace MagnusBall.Contact
         public static ImpactOutcome Resolve(
             Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in ContactProperties contact)
         {
-            Require.NotNull(ball, nameof(ball));
-            Require.Finite(position, nameof(position));
-            Require.Finite(velocity, nameof(velocity));
-            Require.Finite(angularVelocity, nameof(angularVelocity));
-            if (!(body.EffectiveMass > 0) || body.Normal.LengthSquared == 0)
-            {
-                throw new ArgumentException(
-                    "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
-            }
+            CheckArguments(ball, position, velocity, angularVelocity, body);
 
             Vector3d n = body.Normal;
             Vector3d surfaceVelocity = body.SurfaceVelocityAt(position - n * ball.Radius);
@@ -202,6 +198,61 @@ namespace MagnusBall.Contact
             Vector3d impulse = (relative2 - relative) * ball.Mass;
             Vector3d bodyChange = double.IsPositiveInfinity(body.EffectiveMass) ? Vector3d.Zero : impulse * (-1.0 / body.EffectiveMass);
             return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, bodyChange);
+        }
+
+        // The checks both Resolve overloads make before anything is computed.
+        private static void CheckArguments(Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body)
+        {
+            Require.NotNull(ball, nameof(ball));
+            Require.Finite(position, nameof(position));
+            Require.Finite(velocity, nameof(velocity));
+            Require.Finite(angularVelocity, nameof(angularVelocity));
+            if (!(body.EffectiveMass > 0) || body.Normal.LengthSquared == 0)
+            {
+                throw new ArgumentException(
+                    "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
+            }
+        }
+
+        /// <summary>
+        /// The impact with a free rigid body whose centre of mass is offset from the contact point (<see cref="RigidImpact"/>):
+        /// <paramref name="body"/> gives the surface's motion and the face normal (its effective mass is not used),
+        /// <paramref name="inertia"/> the mass, lever and inertia. A body that cannot rotate under the impulse (zero lever
+        /// or infinite moments) goes through <see cref="Resolve(Ball, in Vector3d, in Vector3d, in Vector3d, in ImpactBody, in ContactProperties)"/>
+        /// with the effective mass <c>inertia.Mass</c>: today's numbers, bit for bit.
+        /// </summary>
+        /// <exception cref="ArgumentException">An argument is null or not finite, the body is the default value, or the contact has a
+        /// normal-force offset (not part of the rigid-body law); the message names it.</exception>
+        internal static ImpactOutcome Resolve(
+            Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in RigidBodyInertia inertia,
+            in ContactProperties contact)
+        {
+            if (inertia.IsPointMass)
+            {
+                var pointMass = new ImpactBody(body.Point, body.Velocity, body.AngularVelocity, body.Normal, inertia.Mass);
+                return Resolve(ball, position, velocity, angularVelocity, pointMass, contact);
+            }
+
+            CheckArguments(ball, position, velocity, angularVelocity, body);
+
+            if (contact.ForceOffset != 0 || contact.ForceOffsetPerSpeed != 0)
+            {
+                throw new ArgumentException("contact must have no normal-force offset (D = 0) for an impact with a rotating rigid body.", nameof(contact));
+            }
+
+            Vector3d n = body.Normal;
+            Vector3d surfaceVelocity = body.SurfaceVelocityAt(position - n * ball.Radius);
+            Vector3d relative = velocity - surfaceVelocity;
+            RigidImpact.Resolve(ball.Mass, ball.Radius, ball.InertiaFactor, inertia, n, relative, angularVelocity, contact,
+                out Vector3d impulse, out BounceRegime regime, out double e, out double vn);
+            if (regime == BounceRegime.None)
+            {
+                return new ImpactOutcome(velocity, angularVelocity, Vector3d.Zero, BounceRegime.None, 0, 0, Vector3d.Zero);
+            }
+
+            Vector3d velocity2 = velocity + impulse * (1.0 / ball.Mass);
+            Vector3d spin2 = angularVelocity - Vector3d.Cross(n, impulse) * (1.0 / (ball.InertiaFactor * ball.Mass * ball.Radius));
+            return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, -inertia.Compliance(impulse));
         }
 
         /// <summary>

@@ -90,6 +90,23 @@ namespace MagnusBall.Flight
         private readonly bool _gravityHolds;          // gravity pushes the ball into the surface
 
         private Snapshot _now;
+        private FlightEvent _stopEvent;        // the flight's stop event (outside the snapshot: set only by a step that stops)
+        private FlightEvent _pendingStop;      // a stop found during the step, committed with it
+        // The last step's dense output is its one piece (Previous, PreviousDerivative, State, Derivative), not stored in
+        // _segments: the common step (one piece, no event with an effect) copies no segment.
+        private bool _implicitSegment;
+        private bool _pendingImplicit;
+        // The last piece of the step before the last one (FixedStepDriver draws inside it after a last step cut short):
+        // none, the implicit piece from _olderStart/_olderStartDerivative to (Previous, PreviousDerivative), or a stored one.
+        private OlderPiece _olderKind;
+        // The first piece of a step that TryStep integrated before handing the step to Advance (it held an event).
+        private FlightState _firstPiece;
+        private StateDerivative _firstPieceDerivative;
+        private int _firstPieceEvaluations;
+        private bool _hasFirstPiece;
+        private FlightState _olderStart;
+        private StateDerivative _olderStartDerivative;
+        private HermiteSegment _olderSegment;
         private int _eventCount;
         private int _segmentCount;
         private int _pendingEventCount;
@@ -157,16 +174,26 @@ namespace MagnusBall.Flight
         public bool IsStopped => _now.Phase == FlightPhase.Stopped;
 
         /// <summary>The dense output of the last piece of flight of the last step (default before the first step).</summary>
-        internal HermiteSegment LastSegment => _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
+        internal HermiteSegment LastSegment =>
+            _implicitSegment ? HermiteSegment.OfTakenStep(_now.Previous, _now.PreviousDerivative, _now.State, _now.Derivative)
+            : _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
+
+        /// <summary>
+        /// The last piece of flight of the step before the last one (what <see cref="LastSegment"/> was before the last
+        /// step; default when there was none): for drawing inside it once the last step was cut short.
+        /// </summary>
+        internal HermiteSegment SegmentBeforeLastStep =>
+            _olderKind == OlderPiece.Implicit ? HermiteSegment.OfTakenStep(_olderStart, _olderStartDerivative, _now.Previous, _now.PreviousDerivative)
+            : _olderKind == OlderPiece.Stored ? _olderSegment : default;
 
         /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
         /// step leaves them as they were; a call on a stopped flight (<see cref="StepOutcome.AlreadyStopped"/>) clears them.
         /// </summary>
-        public ReadOnlySpan<FlightEvent> Events => new ReadOnlySpan<FlightEvent>(_events, 0, _eventCount);
+        public ReadOnlySpan<FlightEvent> Events => _eventCount == 0 ? default : new ReadOnlySpan<FlightEvent>(_events, 0, _eventCount);
 
         /// <summary>The stop event of the flight (default until <see cref="IsStopped"/>; a rest is a stop too).</summary>
-        public FlightEvent StopEvent => _now.StopEvent;
+        public FlightEvent StopEvent => _stopEvent;
 
         /// <summary>Steps taken since the last <see cref="Reset"/>.</summary>
         public long StepCount => _now.Steps;
@@ -209,7 +236,9 @@ namespace MagnusBall.Flight
         {
             Snapshot saved = _now;
             int events = _eventCount, segments = _segmentCount;
-            bool started = _started;
+            bool started = _started, implicitSegment = _implicitSegment;
+            FlightEvent stopEvent = _stopEvent;
+            OlderPiece olderKind = _olderKind;
             if (zeroCounters)
             {
                 _now = default;
@@ -218,12 +247,16 @@ namespace MagnusBall.Flight
             _now.State = state;
             _now.Previous = state;
             _now.Derivative = Model.Derivative(state);
+            _now.PreviousDerivative = _now.Derivative;
             _now.Evaluations++;
             _now.Phase = FlightPhase.Flying;
             _now.StartsFlight = true;
-            _now.StopEvent = default;
+            _stopEvent = default;
             _eventCount = 0;
             _segmentCount = 0;
+            _implicitSegment = false;
+            _olderKind = OlderPiece.None;
+            _hasFirstPiece = false;
             _started = true;
             if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
             {
@@ -236,6 +269,9 @@ namespace MagnusBall.Flight
                     _eventCount = events;
                     _segmentCount = segments;
                     _started = started;
+                    _implicitSegment = implicitSegment;
+                    _stopEvent = stopEvent;
+                    _olderKind = olderKind;
                     throw new ArgumentException(
                         $"state is on the contact surface, and the roll it starts would not be finite (its speed, spin or rolling acceleration exceeds double); got {state}.",
                         nameof(state));
@@ -257,7 +293,80 @@ namespace MagnusBall.Flight
         {
             RequireStarted();
             Require.Step(step, nameof(step));
+            if (Contact == null && _now.Phase == FlightPhase.Flying)
+            {
+                // The common step first: one piece, and, when it holds no event, taken at once (nothing to put back if it
+                // were refused, so no snapshot). Where it holds an event, the general step takes this integration as its
+                // first piece: the step is integrated once either way.
+                double endTime = _now.State.Time + step;
+                if (!(endTime > _now.State.Time))
+                {
+                    return StepOutcome.TimeCannotAdvance;
+                }
+
+                FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, step, out StateDerivative nextDerivative, out int evaluations);
+                if (!Takes(_now.State, next, nextDerivative))
+                {
+                    return StepOutcome.Diverged; // nothing changed
+                }
+
+                if (next.Time != endTime)
+                {
+                    next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
+                }
+
+                var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
+                if (EventSet == null || EventSet.Scan(ref segment, _scratch, _now.StartsFlight, landings: true) == 0)
+                {
+                    TakePlainStep(next, nextDerivative, evaluations);
+                    return StepOutcome.Taken;
+                }
+
+                _firstPiece = next;
+                _firstPieceDerivative = nextDerivative;
+                _firstPieceEvaluations = evaluations;
+                _hasFirstPiece = true;
+            }
+
             return Advance(step, stopAt, adaptive: null);
+        }
+
+        // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
+        private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
+        {
+            KeepOlderPiece(_now.Previous, _now.PreviousDerivative);
+            _now.Previous = _now.State;
+            _now.PreviousDerivative = _now.Derivative;
+            _now.State = next;
+            _now.Derivative = nextDerivative;
+            _now.Evaluations += evaluations;
+            _now.Steps++;
+            _now.StartsFlight = false;
+            _eventCount = 0;
+            _segmentCount = 0;
+            _implicitSegment = true;
+        }
+
+        // What was the last piece becomes the piece before it (before a taken step replaces the pieces): the implicit one
+        // by its start (its end is the new Previous), a stored one copied. previous/previousDerivative: the start of the
+        // step before the one being taken.
+        private void KeepOlderPiece(in FlightState previous, in StateDerivative previousDerivative)
+        {
+            if (_implicitSegment)
+            {
+                _olderKind = OlderPiece.Implicit;
+                _olderStart = previous;
+                _olderStartDerivative = previousDerivative;
+            }
+            else if (_segmentCount > 0)
+            {
+                _olderKind = OlderPiece.Stored;
+                _olderSegment = _segments[_segmentCount - 1];
+            }
+            else
+            {
+                _olderKind = OlderPiece.None;
+            }
         }
 
         /// <summary>
@@ -321,7 +430,7 @@ namespace MagnusBall.Flight
         /// <param name="time">The time, s.</param>
         public FlightState StateAt(double time)
         {
-            if (_segmentCount == 0 || time >= _now.State.Time)
+            if ((_segmentCount == 0 && !_implicitSegment) || time >= _now.State.Time)
             {
                 return _now.State;
             }
@@ -329,6 +438,11 @@ namespace MagnusBall.Flight
             if (time <= _now.Previous.Time)
             {
                 return _now.Previous;
+            }
+
+            if (_implicitSegment)
+            {
+                return LastSegment.StateAt(time);
             }
 
             for (int i = 0; i < _segmentCount; i++)
@@ -361,8 +475,10 @@ namespace MagnusBall.Flight
             // pending arrays, swapped in only when the step is taken).
             Snapshot before = _now;
             _now.Previous = _now.State;
+            _now.PreviousDerivative = _now.Derivative;
             _pendingEventCount = 0;
             _pendingSegmentCount = 0;
+            _pendingImplicit = false;
 
             // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
             for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
@@ -398,10 +514,28 @@ namespace MagnusBall.Flight
 
             _now.Steps++;
             _now.StartsFlight = false;
-            (_events, _pendingEvents) = (_pendingEvents, _events);
-            (_segments, _pendingSegments) = (_pendingSegments, _segments);
+            if (_now.Phase == FlightPhase.Stopped)
+            {
+                _stopEvent = _pendingStop;
+            }
+
+            KeepOlderPiece(before.Previous, before.PreviousDerivative);
+
+            // The pending arrays become the current ones only when the step wrote into them: with nothing written the
+            // current count is zero and which array holds nothing does not matter (and no reference is stored).
+            if (_pendingEventCount > 0)
+            {
+                (_events, _pendingEvents) = (_pendingEvents, _events);
+            }
+
+            if (_pendingSegmentCount > 0)
+            {
+                (_segments, _pendingSegments) = (_pendingSegments, _segments);
+            }
+
             _eventCount = _pendingEventCount;
             _segmentCount = _pendingSegmentCount;
+            _implicitSegment = _pendingImplicit;
             return _now.Phase == FlightPhase.Stopped ? StepOutcome.Stopped : StepOutcome.Taken;
         }
 
@@ -416,7 +550,22 @@ namespace MagnusBall.Flight
         // One piece of a fixed step: integrate to endTime, then handle the first event with an effect.
         private bool FlyPiece(double h, double endTime, int piece, FlightEventKinds stopAt)
         {
-            FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, h, out StateDerivative nextDerivative, out int evaluations);
+            FlightState next;
+            StateDerivative nextDerivative;
+            int evaluations;
+            if (piece == 0 && _hasFirstPiece)
+            {
+                // TryStep integrated this piece already (and found an event in it).
+                next = _firstPiece;
+                nextDerivative = _firstPieceDerivative;
+                evaluations = _firstPieceEvaluations;
+                _hasFirstPiece = false;
+            }
+            else
+            {
+                next = Integrator.Step(Model, _now.State, _now.Derivative, h, out nextDerivative, out evaluations);
+            }
+
             _refusal = StepOutcome.Diverged;
             if (!Takes(_now.State, next, nextDerivative))
             {
@@ -430,8 +579,8 @@ namespace MagnusBall.Flight
                 next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
             }
 
-            var segment = HermiteSegment.OfTakenStep(_now.State, _now.Derivative, next, nextDerivative);
-            return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt);
+            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
+            return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt, implicitPiece: piece == 0);
         }
 
         // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end. Not
@@ -473,36 +622,66 @@ namespace MagnusBall.Flight
 
             _now.NextAdaptiveStep = result.NextStep;
             endTime = end.Time;
+            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
-                // find nothing, without them. For StateAt between frames: the cubic Hermite through the step's ends.
-                if (_pendingSegmentCount < _pendingSegments.Length)
-                {
-                    // PushSegment's write, built in its slot (the step's clock advanced: Takes).
-                    _pendingSegments[_pendingSegmentCount++] = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
-                }
-
-                _now.State = end;
-                _now.Derivative = endDerivative;
+                // find nothing, without them.
+                Continue(hermite, end, endDerivative, implicitPiece: false);
                 return true;
             }
 
-            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
-            return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt);
+            return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
         }
 
         // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an
         // effect (a stop or a bounce); with none, the piece's end becomes the current state. `hermite` is the piece's cubic
         // Hermite, kept for StateAt. False (the step is refused) when the dense output overflows at an event: an extreme but
-        // finite step whose interpolant is not finite between its ends.
+        // finite step whose interpolant is not finite between its ends. implicitPiece: the piece is the step's first, from
+        // (Previous, PreviousDerivative), so a piece with no effect need not be stored (_implicitSegment).
         private bool HandlePiece<TDense>(
-            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt)
+            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt,
+            bool implicitPiece)
+            where TDense : struct, IDenseOutput
+        {
+            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, _scratch, _now.StartsFlight && piece == 0, landings: Contact == null);
+            if (count == 0 && Contact == null)
+            {
+                // The common piece: no event, no surface to touch. Its end becomes the current state.
+                Continue(hermite, end, endDerivative, implicitPiece);
+                return true;
+            }
+
+            return HandleEvents(ref dense, hermite, end, endDerivative, piece, stopAt, implicitPiece, count);
+        }
+
+        // The piece has no effect: its end is the current state, its dense output the step's (implicit) or stored.
+        private void Continue(in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, bool implicitPiece)
+        {
+            if (implicitPiece)
+            {
+                _pendingImplicit = true; // the step is this one piece: (Previous, PreviousDerivative) to (end, endDerivative)
+            }
+            else
+            {
+                PushSegment(hermite);
+            }
+
+            _now.State = end;
+            _now.Derivative = endDerivative;
+        }
+
+        // HandlePiece with events found (count of them in _scratch) or a contact surface: out of line, so the common
+        // piece's frame holds none of the event copies and spans this needs (they are zeroed on every call).
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private bool HandleEvents<TDense>(
+            ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt,
+            bool implicitPiece, int count)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
-            int count = EventSet == null ? 0 : EventSet.Scan(ref dense, found, _now.StartsFlight && piece == 0, landings: Contact == null);
             for (int i = 0; i < count; i++)
             {
                 if (!found[i].State.IsFinite)
@@ -547,9 +726,7 @@ namespace MagnusBall.Flight
             Record(found.Slice(0, count));
             if (double.IsPositiveInfinity(contactTime))
             {
-                PushSegment(hermite);
-                _now.State = end;
-                _now.Derivative = endDerivative;
+                Continue(hermite, end, endDerivative, implicitPiece);
                 return true;
             }
 
@@ -599,7 +776,7 @@ namespace MagnusBall.Flight
             _now.State = stop.State;
             _now.Derivative = slope;
             _now.Phase = FlightPhase.Stopped;
-            _now.StopEvent = stop;
+            _pendingStop = stop;
         }
 
         private void StartRolling(in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity, double time)
@@ -698,7 +875,7 @@ namespace MagnusBall.Flight
             _now.State = rest;
             _now.Derivative = default;
             _now.Phase = FlightPhase.Stopped;
-            _now.StopEvent = stop;
+            _pendingStop = stop;
             return true;
         }
 
@@ -751,14 +928,22 @@ namespace MagnusBall.Flight
             }
         }
 
-        // The mutable state of the flight, one value so that a refused step restores it in one assignment.
+        private enum OlderPiece : byte
+        {
+            None,
+            Implicit,
+            Stored,
+        }
+
+        // The mutable state of the flight, one value so that a refused step restores it in one assignment (the stop event
+        // and the pieces are outside it: a step changes them only when it is taken).
         private struct Snapshot
         {
             public FlightState State;
             public StateDerivative Derivative;
             public FlightState Previous;
+            public StateDerivative PreviousDerivative;
             public FlightPhase Phase;
-            public FlightEvent StopEvent;
             public long Steps;
             public long Evaluations;
             public int Bounces;

@@ -77,8 +77,9 @@ namespace MagnusBall.Integration
         }
 
         // The flight core's constructor: its states and derivatives are already known finite and its end later than its
-        // start (FlightStepper.Takes), so the four checks above would only repeat them on every step.
-        private HermiteSegment(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, bool trusted)
+        // start (FlightStepper.Takes), so the four checks above would only repeat them on every step. Called with new on a
+        // local (not through OfTakenStep), the segment is built in place: no temporary to zero and copy.
+        internal HermiteSegment(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, bool trusted)
         {
             Start = start;
             StartDerivative = startDerivative;

@@ -100,7 +100,11 @@ namespace MagnusBall.Integration
             // Bounded: every pass takes one substep, and the total is capped at MaximumSubsteps.
             while (true)
             {
-                int count = Count(remaining * model.StiffnessRate(current, remaining) / stiffnessLimit);
+                // The common case without evaluating the laws: a bound shows h sigma below half the limit, so the count is
+                // 1, as the exact rate gives (it is at most the bound, and Count gives 1 up to the whole limit).
+                int count = model.StiffnessSurelyBelow(current, remaining, 0.5 * stiffnessLimit)
+                    ? 1
+                    : Count(remaining * model.StiffnessRate(current, remaining) / stiffnessLimit);
                 if (substeps + count > MaximumSubsteps)
                 {
                     count = Math.Max(1, MaximumSubsteps - substeps);

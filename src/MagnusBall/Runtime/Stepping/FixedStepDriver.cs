@@ -54,7 +54,6 @@ namespace MagnusBall.Stepping
 
         private readonly FlightStepper _stepper;
         private readonly FlightEventKinds _stopAt;
-        private HermiteSegment _older; // the step before the last one, for a render time inside it
         private double _accumulator;
         private bool _diverged;
 
@@ -231,10 +230,14 @@ namespace MagnusBall.Stepping
                 }
 
                 double time = Math.Min(now.Time, now.Time - FixedStep + _accumulator);
-                if (time < _stepper.PreviousState.Time && _older.Duration > 0)
+                if (time < _stepper.PreviousState.Time)
                 {
                     // A last step cut short (at a landing) and a render time inside the step before it.
-                    return time <= _older.StartTime ? _older.Start : _older.StateAt(time);
+                    HermiteSegment older = _stepper.SegmentBeforeLastStep;
+                    if (older.Duration > 0)
+                    {
+                        return time <= older.StartTime ? older.Start : older.StateAt(time);
+                    }
                 }
 
                 return _stepper.StateAt(time);
@@ -248,7 +251,6 @@ namespace MagnusBall.Stepping
         {
             Require.FiniteState(start, nameof(start));
             _stepper.Reset(start);
-            _older = default;
             _accumulator = 0;
             _diverged = false;
         }
@@ -308,7 +310,6 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
-                HermiteSegment last = _stepper.LastSegment;
                 StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
@@ -319,7 +320,6 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
-                _older = last;
                 steps++;
                 _accumulator -= FixedStep;
                 foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it

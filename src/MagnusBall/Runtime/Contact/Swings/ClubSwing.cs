@@ -17,13 +17,13 @@ namespace MagnusBall.Contact.Swings
     /// <para><b>Speed.</b> A square, centred hit with no spin loft gives the smash factor bound (1 + e)/(1 + m/M): 1.488 for
     /// e = 0.83 (the USGA's COR limit 0.822 plus its 0.008 test tolerance), a 45.93 g ball and a 200 g head. Loft takes
     /// away normal speed (cos of the spin loft) and gives the ball a little speed along the face.</para>
-    /// <para><b>Model assumptions.</b> The head is a free body of mass <see cref="HeadMass"/> at the impact point (the
-    /// shaft adds nothing during the ~0.5 ms contact), the same effective mass along the face, a rigid face (no gear
-    /// effect, no face flex beyond the COR), friction <see cref="Friction"/> (default 0.4: an assumption, not traced to
-    /// a measurement) and no recoil of the slip (e_x = 0). With these, a lofted ball grips and leaves rolling on the
-    /// face: against TrackMan's tour averages at the published launch angles, the ball speed is within 3 % for the driver
-    /// and the 7-iron, the spin 50 % high for the driver and 25 % low for the 7-iron (docs/impacts.md: no contact
-    /// parameter fixes both; the head's rotation, not modelled, is the likely cause).</para>
+    /// <para><b>Model assumptions.</b> The head is a free body (the shaft adds nothing during the ~0.5 ms contact): a point
+    /// mass <see cref="HeadMass"/> at the impact point (the first constructor), or a rigid <see cref="ClubHead"/> that turns
+    /// about its centre of gravity (the second: the gear effect), a rigid face (no face flex beyond the COR), friction
+    /// <see cref="Friction"/> (default 0.4: an assumption, not traced to a measurement) and no recoil of the slip (e_x = 0).
+    /// With these, a lofted ball grips and leaves rolling on the face: against the tour averages at the published launch
+    /// angles, the ball speed is within 3 % for the driver and the 7-iron, the spin 50 % high for the driver (40 % high
+    /// with <see cref="ClubHead.MeasuredDriver"/>, 18-55 % over that head's input range) and 25 % low for the 7-iron (docs/impacts.md).</para>
     /// </remarks>
     public readonly struct ClubSwing
     {
@@ -52,10 +52,36 @@ namespace MagnusBall.Contact.Swings
             AttackAngleDegrees = Require.InRange(attackAngleDegrees, -45, 45, nameof(attackAngleDegrees));
             FaceAngleDegrees = Require.InRange(faceAngleDegrees, -45, 45, nameof(faceAngleDegrees));
             ClubPathDegrees = Require.InRange(clubPathDegrees, -45, 45, nameof(clubPathDegrees));
-            HeadMass = Require.Positive(headMass, nameof(headMass));
+            Head = new ClubHead(Require.Positive(headMass, nameof(headMass)), pointMass: true);
             Restitution = Require.InRange(restitution, 0, 1, nameof(restitution));
             Friction = Require.NonNegative(friction, nameof(friction));
         }
+
+        /// <summary>Creates a club delivery with a rigid head that rotates about its centre of gravity during the impact.</summary>
+        /// <param name="speed">Club head speed (of the impact point), m/s; finite and &gt; 0.</param>
+        /// <param name="dynamicLoftDegrees">Dynamic loft, degrees, in [-10, 80].</param>
+        /// <param name="attackAngleDegrees">Attack angle, degrees, in [-45, 45].</param>
+        /// <param name="faceAngleDegrees">Face angle toward the frame's side, degrees, in [-45, 45].</param>
+        /// <param name="clubPathDegrees">Club path toward the frame's side, degrees, in [-45, 45].</param>
+        /// <param name="head">The head (mass, centre of gravity, moments of inertia); not the default value.</param>
+        /// <param name="restitution">The ball's normal COR on the face; in [0, 1].</param>
+        /// <param name="friction">Sliding friction ball-face; finite and &gt;= 0.</param>
+        /// <exception cref="ArgumentException">A value is outside its range; the message names it.</exception>
+        public ClubSwing(
+            double speed, double dynamicLoftDegrees, double attackAngleDegrees, double faceAngleDegrees, double clubPathDegrees, ClubHead head,
+            double restitution = UsgaLimitRestitution, double friction = 0.4)
+            : this(speed, dynamicLoftDegrees, attackAngleDegrees, faceAngleDegrees, clubPathDegrees, DriverHeadMass, restitution, friction)
+        {
+            if (!(head.Mass > 0))
+            {
+                throw new ArgumentException("head must be built by a ClubHead constructor (mass > 0 kg); got the default value.", nameof(head));
+            }
+
+            Head = head;
+        }
+
+        /// <summary>The head: its mass and, for a rigid head, its centre of gravity and moments of inertia.</summary>
+        public ClubHead Head { get; }
 
         /// <summary>Club head speed, m/s.</summary>
         public double Speed { get; }
@@ -73,7 +99,7 @@ namespace MagnusBall.Contact.Swings
         public double ClubPathDegrees { get; }
 
         /// <summary>Head mass, kg.</summary>
-        public double HeadMass { get; }
+        public double HeadMass => Head.Mass;
 
         /// <summary>The face's COR.</summary>
         public double Restitution { get; }
@@ -94,7 +120,10 @@ namespace MagnusBall.Contact.Swings
             }
         }
 
-        /// <summary>The smash factor bound (1 + e)/(1 + m/M) of a square, centred hit with no spin loft.</summary>
+        /// <summary>
+        /// The smash factor bound (1 + e)/(1 + m/M) of a square, centred hit with no spin loft (for a rigid head: an impact on
+        /// the CG's projection, <see cref="ClubHead.ImpactHeight"/> = 0, where the normal force passes through the CG).
+        /// </summary>
         /// <param name="ball">The ball; not null.</param>
         public double SmashFactorBound(Ball ball)
         {
@@ -122,13 +151,20 @@ namespace MagnusBall.Contact.Swings
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));
-            var body = ImpactBody.Moving(PathDirection(frame) * Speed, FaceNormal(frame), HeadMass);
-            ImpactOutcome impact = Impact.Resolve(ball, position, Vector3d.Zero, Vector3d.Zero, body, new ContactProperties(Restitution, Friction));
-            return new SwingLaunch(impact, frame);
+            Vector3d normal = FaceNormal(frame);
+            var body = ImpactBody.Moving(PathDirection(frame) * Speed, normal, HeadMass);
+            var contact = new ContactProperties(Restitution, Friction);
+            if (Head.IsPointMass)
+            {
+                return new SwingLaunch(Impact.Resolve(ball, position, Vector3d.Zero, Vector3d.Zero, body, contact), frame);
+            }
+
+            RigidBodyInertia inertia = Head.Inertia(normal, SwingGeometry.UpAcross(frame, normal));
+            return new SwingLaunch(Impact.Resolve(ball, position, Vector3d.Zero, Vector3d.Zero, body, inertia, contact), frame);
         }
 
         /// <inheritdoc />
         public override string ToString() => FormattableString.Invariant(
-            $"ClubSwing({Speed:F2} m/s, loft {DynamicLoftDegrees:F1}, attack {AttackAngleDegrees:F1}, face {FaceAngleDegrees:F1}, path {ClubPathDegrees:F1} deg, head {HeadMass:R} kg, e {Restitution:R})");
+            $"ClubSwing({Speed:F2} m/s, loft {DynamicLoftDegrees:F1}, attack {AttackAngleDegrees:F1}, face {FaceAngleDegrees:F1}, path {ClubPathDegrees:F1} deg, head {HeadMass:R} kg{(Head.IsPointMass ? "" : " rigid")}, e {Restitution:R})");
     }
 }

@@ -441,7 +441,7 @@ namespace MagnusBall.Contact.Swings
             public bool InRange(double x1, double x2) => Within(x1, -10, 80) && Within(x2, -45, 45) && Within(x2 + _pathFromFace, -45, 45);
 
             public ClubSwing With(double x1, double x2) => new ClubSwing(
-                _swing.Speed, x1, _swing.AttackAngleDegrees, x2, x2 + _pathFromFace, _swing.HeadMass, _swing.Restitution, _swing.Friction);
+                _swing.Speed, x1, _swing.AttackAngleDegrees, x2, x2 + _pathFromFace, _swing.Head, _swing.Restitution, _swing.Friction);
 
             public SwingLaunch Hit(in ClubSwing swing) => swing.Hit(_ball, _frame, _position);
         }
