@@ -7,7 +7,8 @@ namespace MagnusBall.Benchmarks
     /// <summary>
     /// Entry point. With no mode or a BenchmarkDotNet argument (--filter ...), runs the benchmarks; otherwise one of the
     /// report modes: "ratios" (issue 11's targets in one short run; optional rounds and seconds per workload), "extremes" (full matrix),
-    /// "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run).
+    /// "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run), "adaptive-steps"
+    /// (the cost of one Dormand-Prince step, piece by piece).
     /// </summary>
     public static class Program
     {
@@ -27,6 +28,8 @@ namespace MagnusBall.Benchmarks
                     return Ratios.Run(
                         args.Length > 1 ? int.Parse(args[1], System.Globalization.CultureInfo.InvariantCulture) : 5,
                         args.Length > 2 ? double.Parse(args[2], System.Globalization.CultureInfo.InvariantCulture) : 0.25);
+                case "adaptive-steps":
+                    return AdaptiveTiming.Run(args.Length > 1 ? int.Parse(args[1], System.Globalization.CultureInfo.InvariantCulture) : 10);
                 case "quick-timing":
                     QuickTiming.Run();
                     return 0;

@@ -72,7 +72,7 @@ namespace MagnusBall.Benchmarks
 namespace MagnusBall.Benchmarks
 {
     /// <summary>
-    /// Mode "kernel NAME CALLS": runs one kernel CALLS times after a warm-up, for counting CPU cycles with
+    /// Mode "kernel NAME CALLS": runs one kernel (or one aim solve: aim-clear, aim-baseline, aim-corner, aim-speed) CALLS times after a warm-up, for counting CPU cycles with
     /// `perf stat -e cycles:u` (a run with CALLS = 0 gives the fixed start-up cost to subtract). Cycles spent in this
     /// process do not depend on what else the shared machine runs, unlike wall-clock time.
     /// </summary>
@@ -89,6 +89,18 @@ namespace MagnusBall.Benchmarks
                 case "rk4-thesis": body = peers.MagnusBallRk4; break;
                 case "thesis-style": body = peers.ThesisStyle; break;
                 case "mathnet": body = peers.MathNet; break;
+                case "aim-clear":
+                case "aim-baseline":
+                case "aim-corner":
+                case "aim-speed":
+                {
+                    var work = new Workloads();
+                    work.Setup();
+                    body = name == "aim-clear" ? work.AimClearNet : name == "aim-baseline" ? work.AimBaseline : name == "aim-corner" ? work.AimCorner : work.AimSpeed;
+                    stepsPerCall = 1;
+                    break;
+                }
+
                 default:
                     string[] parts = name.Split(':'); // e.g. step:rk4:full
                     var step = new StepCost { Method = parts[1], Model = parts[2] };
@@ -109,12 +121,14 @@ namespace MagnusBall.Benchmarks
                 sink += body();
             }
 
+            TimeSpan cpu = System.Diagnostics.Process.GetCurrentProcess().TotalProcessorTime;
             for (long i = 0; i < calls; i++)
             {
                 sink += body();
             }
 
-            Console.WriteLine($"{name}: {calls} calls x {stepsPerCall} steps ({sink:E1})");
+            double perCall = calls > 0 ? (System.Diagnostics.Process.GetCurrentProcess().TotalProcessorTime - cpu).TotalMilliseconds * 1e3 / calls : 0;
+            Console.WriteLine($"{name}: {calls} calls x {stepsPerCall} steps, {perCall:F2} us CPU per call ({sink:E1})");
             return 0;
         }
     }

@@ -154,6 +154,85 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void StaysClearOf_NeverHidesAnEventTheSearchFinds_AndClearsMostSteps()
+        {
+            // The flight core skips the event search on a step the bound calls clear, so the bound must never call a step
+            // clear where the search finds a crossing or an apex. Random drives and lobs flown adaptively (loose and tight
+            // tolerances); against every accepted step: grounds every 0.25 m of height, walls every metre, an oblique plane,
+            // both directions, and near misses: planes through the step's own interpolant mid-step and just above its top.
+            FlightModel model = Model();
+            var random = new Random(3);
+            int checks = 0, clear = 0, found = 0;
+            var planes = new System.Collections.Generic.List<Plane>();
+            for (int shot = 0; shot < 30; shot++)
+            {
+                double elevation = -0.2 + 1.4 * random.NextDouble(), speed = 5 + 45 * random.NextDouble();
+                var velocity = new Vector3d(speed * Math.Cos(elevation), 3 * (random.NextDouble() - 0.5), speed * Math.Sin(elevation));
+                double rpm = 6000 * random.NextDouble() - 2000;
+                Vector3d spin = rpm >= 0 ? Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRpm(rpm)) : Spin.Backspin(velocity, Vector3d.UnitZ, Spin.FromRpm(-rpm));
+                var state = new FlightState(new Vector3d(0, 0, 1), velocity, spin);
+                StateDerivative k1 = model.Derivative(state);
+                var method = shot % 2 == 0 ? new DormandPrince54(1e-5, 1e-5) : new DormandPrince54(1e-8, 1e-8);
+                double h = 0.02;
+                for (int i = 0; i < 400 && state.Time < 4; i++)
+                {
+                    if (!method.TryStep(model, state, k1, h, out DormandPrince54Step step))
+                    {
+                        h = step.NextStep;
+                        continue;
+                    }
+
+                    planes.Clear();
+                    for (double z = -2; z <= 30; z += 0.25)
+                    {
+                        planes.Add(new Plane(new Vector3d(0, 0, z), Vector3d.UnitZ));
+                    }
+
+                    for (double x = 0; x <= 60; x += 1)
+                    {
+                        planes.Add(new Plane(new Vector3d(x, 0, 0), Vector3d.UnitX));
+                    }
+
+                    planes.Add(new Plane(new Vector3d(10, 0, 2), new Vector3d(0.6, 0.1, 0.8)));
+                    FlightState middle = step.InterpolateFraction(0.5);
+                    planes.Add(new Plane(middle.Position, middle.Velocity.NormalizedOrZero()));
+                    planes.Add(new Plane(middle.Position, Vector3d.UnitZ));
+                    double top = Math.Max(step.Start.Position.Z, step.End.Position.Z);
+                    for (int j = 0; j < 9; j++)
+                    {
+                        double z = j == 8 ? middle.Position.Z : top + Math.Pow(10, -j - 3);
+                        planes.Add(new Plane(new Vector3d(0, 0, z), Vector3d.UnitZ));
+                    }
+
+                    foreach (Plane plane in planes)
+                    {
+                        foreach (CrossingDirection direction in new[] { CrossingDirection.AgainstNormal, CrossingDirection.AlongNormal })
+                        {
+                            bool crosses = step.TryFindCrossing(plane, direction, false, out _);
+                            bool isClear = step.StaysClearOf(plane, direction);
+                            Assert.That(isClear && crosses, Is.False, $"{plane} {direction} called clear in a step that crosses it, from {step.Start}");
+                            checks++;
+                            clear += isClear ? 1 : 0;
+                            found += crosses ? 1 : 0;
+                        }
+                    }
+
+                    bool apex = step.TryFindApex(Vector3d.UnitZ, out _);
+                    Assert.That(apex && step.StaysClearOfApex(Vector3d.UnitZ), Is.False, $"apex called clear from {step.Start}");
+                    found += apex ? 1 : 0;
+                    state = step.End;
+                    k1 = step.EndDerivative;
+                    h = step.NextStep;
+                }
+            }
+
+            TestContext.Out.WriteLine($"{checks} checks, {found} events found, {clear} steps called clear");
+            Assert.That(found, Is.GreaterThan(1000), "the flights cross many of the planes");
+            // The bound is useful: most step-plane pairs are clear (nearly every plane the step does not cross).
+            Assert.That(clear, Is.GreaterThan(checks * 3 / 4));
+        }
+
+        [Test]
         public void AdaptiveSteps_InTheCore_CountEveryRealEvaluation()
         {
             FlightModel model = Model();

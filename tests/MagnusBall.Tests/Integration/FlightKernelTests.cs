@@ -178,6 +178,123 @@ namespace MagnusBall.Tests.Integration
             }
         }
 
+        [TestCaseSource(nameof(Models))]
+        public void Dp54Step_EqualsTheStepThroughDerivative_BitForBit(FlightModel model, string laws)
+        {
+            // Every model, folded ones too: the step through FlightModel.Derivative is DormandPrince54's arithmetic before the
+            // kernel had the stages, and FlightModel.Derivative is the kernel's own derivative (where finite).
+            var methods = new[] { DormandPrince54.Instance, new DormandPrince54(1e-8, 1e-8), new DormandPrince54(1e-3, 1e-5) };
+            int compared = 0;
+            foreach (FlightState state in States())
+            {
+                foreach (double step in new[] { 1.0 / 240, 0.03, 0.4 })
+                {
+                    StateDerivative k1 = model.Derivative(state);
+                    foreach (DormandPrince54 method in methods)
+                    {
+                        bool accepted = method.TryStep(model, state, k1, step, out DormandPrince54Step fast);
+                        bool reference = method.TryStepThroughDerivative(model, state, k1, step, out DormandPrince54Step slow);
+                        Assert.That(accepted, Is.EqualTo(reference), $"{state}");
+                        AssertSame(fast.End, slow.End, state);
+                        AssertSame(fast.EndDerivative.Velocity, slow.EndDerivative.Velocity, state);
+                        AssertSame(fast.EndDerivative.Acceleration, slow.EndDerivative.Acceleration, state);
+                        AssertSame(fast.EndDerivative.AngularAcceleration, slow.EndDerivative.AngularAcceleration, state);
+                        Assert.That(Same(fast.ErrorNorm, slow.ErrorNorm), Is.True, $"error norm {fast.ErrorNorm} != {slow.ErrorNorm} from {state}");
+                        Assert.That(Same(fast.NextStep, slow.NextStep), Is.True, $"next step {fast.NextStep} != {slow.NextStep} from {state}");
+                        if (fast.End.IsFinite)
+                        {
+                            foreach (double theta in new[] { 0.125, 0.37, 0.5, 0.9 })
+                            {
+                                AssertSame(fast.InterpolateFraction(theta), slow.InterpolateFraction(theta), state);
+                            }
+                        }
+
+                        FlightState fixedEnd = method.Step(model, state, k1, step, out StateDerivative fixedDerivative, out int evaluations);
+                        AssertSame(fixedEnd, slow.End, state);
+                        AssertSame(fixedDerivative.Acceleration, slow.EndDerivative.Acceleration, state);
+                        Assert.That(evaluations, Is.EqualTo(6));
+                        compared++;
+                    }
+                }
+            }
+
+            Assert.That(compared, Is.EqualTo(205 * 3 * 3));
+        }
+
+        [TestCaseSource(nameof(Models))]
+        public void Dp54Stages_EqualTheTableauThroughTheGeneralFormula_BitForBit(FlightModel model, string laws)
+        {
+            if (Folded(laws))
+            {
+                Assert.Pass("the folded form differs in rounding only (tested above)");
+            }
+
+            int finiteSteps = 0;
+            foreach (FlightState state in States())
+            {
+                foreach (double step in new[] { 1.0 / 240, 0.03 })
+                {
+                    StateDerivative k1 = model.GeneralDerivative(state);
+                    FlightState reference = ReferenceDp54(model, state, k1, step, out StateDerivative k7);
+                    bool finite = model.Kernel.DormandPrince54(state, k1, step, out DormandPrince54Stages stages);
+                    if (finite)
+                    {
+                        finiteSteps++;
+                        AssertSame(stages.End, reference, state);
+                        AssertSame(stages.K7.Acceleration, k7.Acceleration, state);
+                        AssertSame(stages.K7.AngularAcceleration, k7.AngularAcceleration, state);
+                    }
+                }
+            }
+
+            // The kernel reports a step not finite (so DormandPrince54 redoes it through FlightModel.Derivative) only where a
+            // stage overflows: none of these states and steps comes near that.
+            Assert.That(finiteSteps, Is.EqualTo(205 * 2));
+        }
+
+        [Test]
+        public void Dp54Step_WhereAStageOverflows_IsTheStepThroughDerivative()
+        {
+            // Speeds whose drag overflows a double inside the step: the kernel reports it (false) and DormandPrince54 redoes
+            // the step through FlightModel.Derivative, so the outcome is what it was before the kernel, whatever it is.
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            int fallbacks = 0;
+            foreach (double speed in new[] { 1e100, 1e150, 1e153, 1e154, 1e155, 1e200, 1e300 })
+            {
+                var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(speed, 0, speed / 3), new Vector3d(10, 150, 20));
+                StateDerivative k1 = model.Derivative(state);
+                if (!model.Kernel.DormandPrince54(state, k1, 0.01, out _))
+                {
+                    fallbacks++;
+                }
+
+                bool accepted = DormandPrince54.Instance.TryStep(model, state, k1, 0.01, out DormandPrince54Step fast);
+                bool reference = DormandPrince54.Instance.TryStepThroughDerivative(model, state, k1, 0.01, out DormandPrince54Step slow);
+                Assert.That(accepted, Is.EqualTo(reference));
+                AssertSame(fast.End, slow.End, state);
+                AssertSame(fast.EndDerivative.Acceleration, slow.EndDerivative.Acceleration, state);
+                Assert.That(Same(fast.ErrorNorm, slow.ErrorNorm) && Same(fast.NextStep, slow.NextStep), Is.True, $"{state}");
+            }
+
+            Assert.That(fallbacks, Is.GreaterThan(0), "some of these steps overflow in the kernel");
+        }
+
+        [Test]
+        public void Dp54KernelStep_EvaluatesTheModelSixTimes_AndAUserLawOnceEach()
+        {
+            var drag = new CountingDrag();
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var calls = new EvaluationCount();
+            model.CountedEvaluations = calls;
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative k1 = model.Derivative(start);
+            calls.Calls = 0;
+            drag.Calls = 0;
+            DormandPrince54.Instance.TryStep(model, start, k1, 0.01, out _);
+            Assert.That(calls.Calls, Is.EqualTo(6));
+            Assert.That(drag.Calls, Is.EqualTo(6));
+        }
+
         [Test]
         public void FoldedRk4AndHeunSteps_AreTheFormulaOnTheFoldedDerivative_BitForBit()
         {
@@ -287,6 +404,37 @@ namespace MagnusBall.Tests.Integration
                 state.AngularVelocity +
                 (derivative.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
                 state.Time + step);
+        }
+
+        // Dormand & Prince's (1980) tableau through the general derivative at each stage, written out here: the end state
+        // y + h (b1 k1 + b3 k3 + b4 k4 + b5 k5 + b6 k6) and k7 = f(end), each sum left to right as DormandPrince54 forms it.
+        private static FlightState ReferenceDp54(FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative k7)
+        {
+            StateDerivative k2 = model.GeneralDerivative(y.Advance(k1, (1.0 / 5) * h));
+            StateDerivative k3 = model.GeneralDerivative(Sum(y, h, new[] { k1, k2 }, new[] { 3.0 / 40, 9.0 / 40 }));
+            StateDerivative k4 = model.GeneralDerivative(Sum(y, h, new[] { k1, k2, k3 }, new[] { 44.0 / 45, -56.0 / 15, 32.0 / 9 }));
+            StateDerivative k5 = model.GeneralDerivative(
+                Sum(y, h, new[] { k1, k2, k3, k4 }, new[] { 19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729 }));
+            StateDerivative k6 = model.GeneralDerivative(
+                Sum(y, h, new[] { k1, k2, k3, k4, k5 }, new[] { 9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656 }));
+            FlightState end = Sum(y, h, new[] { k1, k3, k4, k5, k6 }, new[] { 35.0 / 384, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84 });
+            end = new FlightState(end.Position, end.Velocity, end.AngularVelocity, y.Time + h);
+            k7 = model.GeneralDerivative(end);
+            return end;
+        }
+
+        private static FlightState Sum(in FlightState y, double h, StateDerivative[] k, double[] a)
+        {
+            Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity;
+            for (int i = 0; i < k.Length; i++)
+            {
+                double c = h * a[i];
+                p += k[i].Velocity * c;
+                v += k[i].Acceleration * c;
+                w += k[i].AngularAcceleration * c;
+            }
+
+            return new FlightState(p, v, w, y.Time);
         }
 
         private static FlightState ReferenceHeun(

@@ -167,6 +167,9 @@ namespace MagnusBall.Flight
         /// <summary>The most events one step can report: one landing, one apex and one crossing per plane.</summary>
         internal int MaximumEventsPerStep => 2 + _planes.Length;
 
+        /// <summary>The planes watched (the set's own array: read only).</summary>
+        internal Plane[] PlaneArray => _planes;
+
         /// <summary>
         /// Finds the events inside one step and writes them to <paramref name="events"/> in time order: the
         /// first landing, the first apex and the first crossing of each plane inside (StartTime, EndTime] (for

@@ -113,6 +113,7 @@ namespace MagnusBall.Flight
         private int _pendingSegmentCount;
         private bool _started;
         private StepOutcome _refusal; // why the last piece that returned false refused the step
+        private DormandPrince54Step _adaptiveStep; // the last adaptive step attempted (scratch: TryStepAdaptive fills it in place)
 
         /// <summary>Creates a stepper; call <see cref="Reset"/> to give it a state.</summary>
         /// <param name="model">The flight model.</param>
@@ -582,7 +583,9 @@ namespace MagnusBall.Flight
             return HandlePiece(ref segment, segment, next, nextDerivative, piece, stopAt, implicitPiece: piece == 0);
         }
 
-        // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end.
+        // One adaptive step (error control, bounded retries); the step's end time becomes the accepted step's end. Not
+        // inlined into Advance: its large locals (the step's dense output) would grow every Advance frame, fixed steps too.
+        [MethodImpl(MethodImplOptions.NoInlining)]
         private bool FlyAdaptivePiece(DormandPrince54 method, double h, int piece, FlightEventKinds stopAt, ref double endTime)
         {
             double trial = _now.NextAdaptiveStep > 0 ? Math.Min(_now.NextAdaptiveStep, h) : method.InitialStep(Model, _now.State, _now.Derivative, h);
@@ -591,33 +594,46 @@ namespace MagnusBall.Flight
                 _now.Evaluations++; // InitialStep's one evaluation
             }
 
-            DormandPrince54Step result = default;
-            for (int attempt = 0; attempt < MaxAdaptiveAttempts; attempt++)
+            // At most MaxAdaptiveAttempts attempts; after the last one, or once the next step cannot advance the clock, the
+            // last attempt is taken as it is.
+            // The step is written in place into the stepper's own (no copies of its stages or dense output).
+            ref DormandPrince54Step result = ref _adaptiveStep;
+            bool accepted = method.TryStepInPlace(Model, _now.State, _now.Derivative, trial, ref result);
+            _now.Evaluations += 6;
+            for (int attempt = 1;
+                 !accepted && attempt < MaxAdaptiveAttempts && result.NextStep > 0 && _now.State.Time + result.NextStep > _now.State.Time;
+                 attempt++)
             {
-                bool accepted = method.TryStep(Model, _now.State, _now.Derivative, trial, out result);
-                _now.Evaluations += 6;
-                if (accepted || attempt == MaxAdaptiveAttempts - 1 || !(result.NextStep > 0) || !(_now.State.Time + result.NextStep > _now.State.Time))
-                {
-                    break;
-                }
-
                 trial = Math.Min(result.NextStep, h);
+                accepted = method.TryStepInPlace(Model, _now.State, _now.Derivative, trial, ref result);
+                _now.Evaluations += 6;
             }
 
+            ref readonly FlightState end = ref result.Stages.End;
+            ref readonly StateDerivative endDerivative = ref result.Stages.K7;
             _refusal = StepOutcome.Diverged;
-            if (!Takes(_now.State, result.End, result.EndDerivative))
+            if (!Takes(_now.State, end, endDerivative))
             {
                 // Not finite: diverged. Finite, but the accepted step is below the resolution of the time (a huge time, a
                 // tiny step): the clock cannot advance.
-                _refusal = result.End.IsFinite && result.EndDerivative.IsFinite ? StepOutcome.TimeCannotAdvance : StepOutcome.Diverged;
+                _refusal = end.IsFinite && endDerivative.IsFinite ? StepOutcome.TimeCannotAdvance : StepOutcome.Diverged;
                 return false;
             }
 
             _now.NextAdaptiveStep = result.NextStep;
-            endTime = result.End.Time;
+            endTime = end.Time;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, result.End, result.EndDerivative);
-            return HandlePiece(ref result, hermite, result.End, result.EndDerivative, piece, stopAt, implicitPiece: false);
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
+            if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
+                (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
+            {
+                // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
+                // find nothing, without them.
+                Continue(hermite, end, endDerivative, implicitPiece: false);
+                return true;
+            }
+
+            return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
         }
 
         // Locates the piece's events on its dense output, writes those that happen, and applies the first one with an

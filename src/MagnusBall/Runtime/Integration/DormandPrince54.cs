@@ -30,14 +30,14 @@ namespace MagnusBall.Integration
     /// </remarks>
     public sealed class DormandPrince54 : IIntegrator
     {
-        // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M").
+        // Dormand & Prince (1980), the 5(4) tableau ("RK5(4)7M"); the flight kernel's stages use the same constants.
         private const double C2 = 1.0 / 5, C3 = 3.0 / 10, C4 = 4.0 / 5, C5 = 8.0 / 9;
-        private const double A21 = 1.0 / 5;
-        private const double A31 = 3.0 / 40, A32 = 9.0 / 40;
-        private const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
-        private const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
-        private const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
-        private const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
+        internal const double A21 = 1.0 / 5;
+        internal const double A31 = 3.0 / 40, A32 = 9.0 / 40;
+        internal const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
+        internal const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
+        internal const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176, A65 = -5103.0 / 18656;
+        internal const double B1 = 35.0 / 384, B3 = 500.0 / 1113, B4 = 125.0 / 192, B5 = -2187.0 / 6784, B6 = 11.0 / 84;
 
         // The error weights b - b_hat (fifth minus fourth order), the last on k7 = f(y1).
         private const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200, E6 = 22.0 / 525, E7 = -1.0 / 40;
@@ -92,12 +92,15 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
-            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
+            if (!model.Kernel.DormandPrince54(state, derivative, step, out DormandPrince54Stages stages))
+            {
+                GeneralStages(model, state, derivative, step, out stages);
+            }
+
             // First same as last: the seventh stage is the derivative at the fifth-order end.
-            endDerivative = model.Derivative(end);
+            endDerivative = stages.K7;
             evaluations = 6;
-            return end;
+            return stages.End;
         }
 
         /// <summary>
@@ -116,21 +119,63 @@ namespace MagnusBall.Integration
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
         internal bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
-            StepArguments.Check(model, state, step);
-            Stages(model, state, derivative, step, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
-            FlightState end = Combine(state, step, derivative, k3, k4, k5, k6, B1, B3, B4, B5, B6, step);
-            StateDerivative k7 = model.Derivative(end);
+            result = default;
+            return TryStepInPlace(model, state, derivative, step, ref result);
+        }
 
-            double norm = ErrorNorm(state, end, derivative, k3, k4, k5, k6, k7, step);
-            bool accepted = norm <= 1.0 && end.IsFinite;
+        /// <summary>
+        /// <see cref="TryStep(FlightModel, in FlightState, in StateDerivative, double, out DormandPrince54Step)"/> writing
+        /// the step into <paramref name="result"/> in place (the flight core keeps one): no copy of the stages or of the step.
+        /// </summary>
+        internal bool TryStepInPlace(FlightModel model, in FlightState state, in StateDerivative derivative, double step, ref DormandPrince54Step result)
+        {
+            StepArguments.Check(model, state, step);
+            result.Start = state;
+            result.StartDerivative = derivative;
+            // From here on the step's own copies of the start (the arguments may be the result's own fields).
+            if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, out result.Stages))
+            {
+                // A stage's rates may not be finite, so FlightModel.Derivative may take its scaled path: the step through it.
+                GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+            }
+
+            return Finish(step, ref result);
+        }
+
+        /// <summary>
+        /// <see cref="TryStep"/> with every stage through <see cref="FlightModel.Derivative"/> (not the model's kernel): the
+        /// arithmetic the kernel's step reproduces, for the tests that hold it to it.
+        /// </summary>
+        internal bool TryStepThroughDerivative(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
+        {
+            StepArguments.Check(model, state, step);
+            result = default;
+            result.Start = state;
+            result.StartDerivative = derivative;
+            GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+            return Finish(step, ref result);
+        }
+
+        // The error norm, the controller's next step and the dense output of a step whose stages are known.
+        private bool Finish(double step, ref DormandPrince54Step result)
+        {
+            ref readonly DormandPrince54Stages stages = ref result.Stages;
+            double norm = ErrorNorm(result.Start, stages.End, result.StartDerivative, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7, step);
+            bool accepted = norm <= 1.0 && stages.End.IsFinite;
             double factor;
             if (!double.IsFinite(norm))
             {
                 factor = MinimumFactor;
             }
-            else if (norm == 0)
+            else if (norm < 1.8e-4)
             {
+                // 0.9 norm^(-1/5) > 5.04 here: the factor is clamped to 5 either way (no power needed).
                 factor = MaximumFactor;
+            }
+            else if (norm > 2000)
+            {
+                // 0.9 norm^(-1/5) < 0.197 here: clamped to 0.2 either way.
+                factor = MinimumFactor;
             }
             else
             {
@@ -142,7 +187,7 @@ namespace MagnusBall.Integration
                 factor = Math.Min(factor, 1.0);
             }
 
-            result = new DormandPrince54Step(state, end, derivative, k3, k4, k5, k6, k7, step, norm, step * factor, accepted);
+            result.Complete(step, norm, step * factor, accepted);
             return accepted;
         }
 
@@ -176,6 +221,20 @@ namespace MagnusBall.Integration
             double h1 = largest <= 1e-15 ? Math.Max(1e-6, h0 * 1e-3) : PortableMath.Pow(0.01 / largest, 0.2);
             double h = Math.Min(100 * h0, h1);
             return double.IsFinite(h) && h > 0 ? Math.Min(h, maximumStep) : Math.Min(1e-6, maximumStep);
+        }
+
+        // The stages through FlightModel.Derivative, one call each (the arithmetic the kernel's step reproduces).
+        internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
+        {
+            Stages(model, y, k1, h, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
+            FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
+            StateDerivative k7 = model.Derivative(end);
+            stages.End = end;
+            stages.K3 = k3;
+            stages.K4 = k4;
+            stages.K5 = k5;
+            stages.K6 = k6;
+            stages.K7 = k7;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -318,5 +377,20 @@ namespace MagnusBall.Integration
 
         private static StateDerivative Difference(in StateDerivative a, in StateDerivative b) =>
             new StateDerivative(a.Velocity - b.Velocity, a.Acceleration - b.Acceleration, a.AngularAcceleration - b.AngularAcceleration);
+    }
+
+    /// <summary>
+    /// The stages of one Dormand-Prince 5(4) step that its error estimate and dense output read: the fifth-order end
+    /// state and k3..k7 (k2 has weight zero in both; k7 is the derivative at the end, the next step's k1). Plain fields,
+    /// written in place by the flight kernel (it is part of a <see cref="DormandPrince54Step"/>).
+    /// </summary>
+    internal struct DormandPrince54Stages
+    {
+        public FlightState End;
+        public StateDerivative K3;
+        public StateDerivative K4;
+        public StateDerivative K5;
+        public StateDerivative K6;
+        public StateDerivative K7;
     }
 }
