@@ -5,7 +5,8 @@ namespace MagnusBall.Benchmarks
     /// <summary>
     /// Issue 11's targets as BenchmarkDotNet ratios against one thesis-style 2 s shot (480 RK4 steps, the baseline, one
     /// call = one shot): MagnusBall's RK4 over the same 480 steps, 2 s predicted shots with events, the aim solves, 1,000 and
-    /// 10,000 balls in a <c>BallBatch</c> through one 60 FPS frame, and 1,000 FixedStepDrivers one at a time through one frame.
+    /// 10,000 balls in a <c>BallBatch</c> through one 60 FPS frame, and 1,000 FixedStepDrivers one at a time through one frame
+    /// (default stable RK4 and plain RK4 on the full model, plain RK4 on the thesis model).
     /// </summary>
     [Config(typeof(ShortConfig))]
     public class PeerShots
@@ -38,6 +39,21 @@ namespace MagnusBall.Benchmarks
 
         [Benchmark(Description = "1,000 FixedStepDrivers one at a time, one frame")]
         public double Drivers1000() => _work.Drivers1000();
+
+        [Benchmark(Description = "1,000 FixedStepDrivers (rk4), one frame")]
+        public double Drivers1000Rk4() => _work.Drivers1000Rk4();
+
+        [Benchmark(Description = "1,000 FixedStepDrivers (rk4), thesis model, one frame")]
+        public double Drivers1000Thesis() => _work.Drivers1000Thesis();
+
+        [Benchmark(Description = "AimSolver.MinimumElevationToClear (net)")]
+        public double AimClearNet() => _work.AimClearNet();
+
+        [Benchmark(Description = "AimSolver.ElevationToReach (baseline)")]
+        public double AimBaseline() => _work.AimBaseline();
+
+        [Benchmark(Description = "AimSolver.SpeedToReach")]
+        public double AimSpeed() => _work.AimSpeed();
 
         [Benchmark(Description = "AimSolver.AnglesToReach (corner)")]
         public double AimCorner() => _work.AimCorner();
