@@ -82,6 +82,31 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void TryStep_RetriedFromTheResultsOwnStart_StepsFromThatStart()
+        {
+            // The retry after a rejection, written the natural way: the start and its derivative read from the rejected
+            // step itself, the result written over it. Start and StartDerivative are fields of the step (it is filled in
+            // place), so the call must read them before it overwrites the step.
+            FlightModel model = Model();
+            FlightState start = Start();
+            StateDerivative k1 = model.Derivative(start);
+            var method = new DormandPrince54(1e-9, 1e-12);
+            Assert.That(method.TryStep(model, start, k1, 0.5, out DormandPrince54Step step), Is.False, "0.5 s at these tolerances is rejected");
+            double retry = step.NextStep;
+            bool fresh = method.TryStep(model, start, k1, retry, out DormandPrince54Step expected);
+            bool reused = method.TryStep(model, step.Start, step.StartDerivative, retry, out step);
+            Assert.That(reused, Is.EqualTo(fresh));
+            Assert.That(step.Start, Is.EqualTo(start));
+            Assert.That(step.End, Is.EqualTo(expected.End), "the same step as from a copy of the start, bit for bit");
+            Assert.That(step.ErrorNorm, Is.EqualTo(expected.ErrorNorm));
+
+            Assert.That(method.TryStepThroughDerivative(model, start, k1, 0.5, out DormandPrince54Step through), Is.False);
+            method.TryStepThroughDerivative(model, through.Start, through.StartDerivative, retry, out through);
+            Assert.That(through.Start, Is.EqualTo(start));
+            Assert.That(through.End, Is.EqualTo(expected.End));
+        }
+
+        [Test]
         public void TryStep_IsFsalAndItsDenseOutputMatchesTheEnds()
         {
             FlightModel model = Model();

@@ -239,6 +239,8 @@ namespace MagnusBall.Flight
             bool started = _started, implicitSegment = _implicitSegment;
             FlightEvent stopEvent = _stopEvent;
             OlderPiece olderKind = _olderKind;
+            // Evaluated before anything changes: a user's law that throws leaves the flight as it was.
+            StateDerivative derivative = Model.Derivative(state);
             if (zeroCounters)
             {
                 _now = default;
@@ -246,8 +248,8 @@ namespace MagnusBall.Flight
 
             _now.State = state;
             _now.Previous = state;
-            _now.Derivative = Model.Derivative(state);
-            _now.PreviousDerivative = _now.Derivative;
+            _now.Derivative = derivative;
+            _now.PreviousDerivative = derivative;
             _now.Evaluations++;
             _now.Phase = FlightPhase.Flying;
             _now.StartsFlight = true;
@@ -261,21 +263,37 @@ namespace MagnusBall.Flight
             if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
             {
                 // Placed on the surface (or in it) and not leaving it: it rolls from there, or rests.
-                StartRolling(_contactPlane.Project(state.Position), state.Velocity, state.AngularVelocity, state.Time);
-                if (!_now.State.IsFinite || !_now.Derivative.IsFinite)
+                bool finite;
+                try
+                {
+                    StartRolling(_contactPlane.Project(state.Position), state.Velocity, state.AngularVelocity, state.Time);
+                    finite = _now.State.IsFinite && _now.Derivative.IsFinite;
+                }
+                catch
+                {
+                    PutBack(); // a user's model threw: everything put back, then its exception let through
+                    throw;
+                }
+
+                if (!finite)
                 {
                     // The roll it starts overflows: refused, and everything is put back.
-                    _now = saved;
-                    _eventCount = events;
-                    _segmentCount = segments;
-                    _started = started;
-                    _implicitSegment = implicitSegment;
-                    _stopEvent = stopEvent;
-                    _olderKind = olderKind;
+                    PutBack();
                     throw new ArgumentException(
                         $"state is on the contact surface, and the roll it starts would not be finite (its speed, spin or rolling acceleration exceeds double); got {state}.",
                         nameof(state));
                 }
+            }
+
+            void PutBack()
+            {
+                _now = saved;
+                _eventCount = events;
+                _segmentCount = segments;
+                _started = started;
+                _implicitSegment = implicitSegment;
+                _stopEvent = stopEvent;
+                _olderKind = olderKind;
             }
         }
 
@@ -480,36 +498,47 @@ namespace MagnusBall.Flight
             _pendingSegmentCount = 0;
             _pendingImplicit = false;
 
-            // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
-            for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
+            try
             {
-                double h = piece == 0 ? step : endTime - _now.State.Time;
-                if (!(_now.State.Time + h > _now.State.Time))
+                // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
+                for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
                 {
-                    break; // less than one ulp of time left after a bounce
+                    double h = piece == 0 ? step : endTime - _now.State.Time;
+                    if (!(_now.State.Time + h > _now.State.Time))
+                    {
+                        break; // less than one ulp of time left after a bounce
+                    }
+
+                    bool ok = adaptive == null
+                        ? FlyPiece(h, endTime, piece, stopAt)
+                        : FlyAdaptivePiece(adaptive, h, piece, stopAt, ref endTime);
+                    if (!ok)
+                    {
+                        _now = before;
+                        return _refusal;
+                    }
+
+                    if (_now.State.Time >= endTime)
+                    {
+                        break;
+                    }
                 }
 
-                bool ok = adaptive == null
-                    ? FlyPiece(h, endTime, piece, stopAt)
-                    : FlyAdaptivePiece(adaptive, h, piece, stopAt, ref endTime);
-                if (!ok)
+                if ((_now.Phase == FlightPhase.Rolling && !Roll(endTime)) || !_now.State.IsFinite)
                 {
+                    // The roll would leave the state or its derivative non-finite (forces beyond double on the surface), or a
+                    // bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
                     _now = before;
-                    return _refusal;
-                }
-
-                if (_now.State.Time >= endTime)
-                {
-                    break;
+                    return StepOutcome.Diverged;
                 }
             }
-
-            if ((_now.Phase == FlightPhase.Rolling && !Roll(endTime)) || !_now.State.IsFinite)
+            catch
             {
-                // The roll would leave the state or its derivative non-finite (forces beyond double on the surface), or a
-                // bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
+                // A user's law, wind profile or bounce model threw inside the step: the step is not taken, nothing changes
+                // (the events and pieces written so far are in the pending arrays only).
                 _now = before;
-                return StepOutcome.Diverged;
+                _hasFirstPiece = false;
+                throw;
             }
 
             _now.Steps++;

@@ -119,8 +119,12 @@ namespace MagnusBall.Integration
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
         internal bool TryStep(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
+            // Copied before result is cleared: state and derivative may be result's own Start and StartDerivative (a retry
+            // from the rejected step's start, written over it).
+            FlightState start = state;
+            StateDerivative k1 = derivative;
             result = default;
-            return TryStepInPlace(model, state, derivative, step, ref result);
+            return TryStepInPlace(model, start, k1, step, ref result);
         }
 
         /// <summary>
@@ -149,9 +153,11 @@ namespace MagnusBall.Integration
         internal bool TryStepThroughDerivative(FlightModel model, in FlightState state, in StateDerivative derivative, double step, out DormandPrince54Step result)
         {
             StepArguments.Check(model, state, step);
+            FlightState start = state; // state and derivative may be result's own fields (see TryStep)
+            StateDerivative k1 = derivative;
             result = default;
-            result.Start = state;
-            result.StartDerivative = derivative;
+            result.Start = start;
+            result.StartDerivative = k1;
             GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
             return Finish(step, ref result);
         }
