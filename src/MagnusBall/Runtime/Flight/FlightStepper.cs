@@ -659,17 +659,28 @@ namespace MagnusBall.Flight
 
             _now.NextAdaptiveStep = result.NextStep;
             endTime = end.Time;
-            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
-                // find nothing, without them.
-                Continue(hermite, end, endDerivative, implicitPiece: false);
+                // find nothing, without them. The step's first piece runs from (Previous, PreviousDerivative) to its end, so
+                // its cubic Hermite for StateAt is the implicit one, built only when asked for; a later piece's is stored.
+                if (piece == 0)
+                {
+                    _pendingImplicit = true;
+                    _now.State = end;
+                    _now.Derivative = endDerivative;
+                }
+                else
+                {
+                    Continue(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative), end, endDerivative, implicitPiece: false);
+                }
+
                 return true;
             }
 
+            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
         }
 
