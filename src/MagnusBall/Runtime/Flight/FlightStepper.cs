@@ -180,7 +180,9 @@ namespace MagnusBall.Flight
 
         /// <summary>
         /// The last piece of flight of the step before the last one (what <see cref="LastSegment"/> was before the last
-        /// step; default when there was none): for drawing inside it once the last step was cut short.
+        /// step): for drawing inside it once the last step was cut short. Default when there was none, and after a plain
+        /// step (one piece, no event: it ends a whole step after its start, so a time before its start is a rounding error
+        /// away from it, and the start, <see cref="PreviousState"/>, is the state to draw there).
         /// </summary>
         internal HermiteSegment SegmentBeforeLastStep =>
             _olderKind == OlderPiece.Implicit ? HermiteSegment.OfTakenStep(_olderStart, _olderStartDerivative, _now.Previous, _now.PreviousDerivative)
@@ -360,7 +362,10 @@ namespace MagnusBall.Flight
         // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
         private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
         {
-            KeepOlderPiece(_now.Previous, _now.PreviousDerivative);
+            // No older piece is kept (the 152-byte copy was a tenth of a predicted shot's overhead): the step is whole, so a
+            // render time inside the step before it is only a rounding error away from this step's start, where
+            // FixedStepDriver.RenderState reads the start itself (SegmentBeforeLastStep).
+            _olderKind = OlderPiece.None;
             _now.Previous = _now.State;
             _now.PreviousDerivative = _now.Derivative;
             _now.State = next;
