@@ -96,17 +96,11 @@ namespace MagnusBall.Flight
         // _segments: the common step (one piece, no event with an effect) copies no segment.
         private bool _implicitSegment;
         private bool _pendingImplicit;
-        // The last piece of the step before the last one (FixedStepDriver draws inside it after a last step cut short):
-        // none, the implicit piece from _olderStart/_olderStartDerivative to (Previous, PreviousDerivative), or a stored one.
-        private OlderPiece _olderKind;
         // The first piece of a step that TryStep integrated before handing the step to Advance (it held an event).
         private FlightState _firstPiece;
         private StateDerivative _firstPieceDerivative;
         private int _firstPieceEvaluations;
         private bool _hasFirstPiece;
-        private FlightState _olderStart;
-        private StateDerivative _olderStartDerivative;
-        private HermiteSegment _olderSegment;
         private int _eventCount;
         private int _segmentCount;
         private int _pendingEventCount;
@@ -179,16 +173,6 @@ namespace MagnusBall.Flight
             : _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
         /// <summary>
-        /// The last piece of flight of the step before the last one (what <see cref="LastSegment"/> was before the last
-        /// step): for drawing inside it once the last step was cut short. Default when there was none, and after a plain
-        /// step (one piece, no event: it ends a whole step after its start, so a time before its start is a rounding error
-        /// away from it, and the start, <see cref="PreviousState"/>, is the state to draw there).
-        /// </summary>
-        internal HermiteSegment SegmentBeforeLastStep =>
-            _olderKind == OlderPiece.Implicit ? HermiteSegment.OfTakenStep(_olderStart, _olderStartDerivative, _now.Previous, _now.PreviousDerivative)
-            : _olderKind == OlderPiece.Stored ? _olderSegment : default;
-
-        /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
         /// step leaves them as they were; a call on a stopped flight (<see cref="StepOutcome.AlreadyStopped"/>) clears them.
         /// </summary>
@@ -240,7 +224,6 @@ namespace MagnusBall.Flight
             int events = _eventCount, segments = _segmentCount;
             bool started = _started, implicitSegment = _implicitSegment;
             FlightEvent stopEvent = _stopEvent;
-            OlderPiece olderKind = _olderKind;
             // Evaluated before anything changes: a user's law that throws leaves the flight as it was.
             StateDerivative derivative = Model.Derivative(state);
             if (zeroCounters)
@@ -259,7 +242,6 @@ namespace MagnusBall.Flight
             _eventCount = 0;
             _segmentCount = 0;
             _implicitSegment = false;
-            _olderKind = OlderPiece.None;
             _hasFirstPiece = false;
             _started = true;
             if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
@@ -295,7 +277,6 @@ namespace MagnusBall.Flight
                 _started = started;
                 _implicitSegment = implicitSegment;
                 _stopEvent = stopEvent;
-                _olderKind = olderKind;
             }
         }
 
@@ -362,10 +343,6 @@ namespace MagnusBall.Flight
         // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
         private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
         {
-            // No older piece is kept (the 152-byte copy was a tenth of a predicted shot's overhead): the step is whole, so a
-            // render time inside the step before it is only a rounding error away from this step's start, where
-            // FixedStepDriver.RenderState reads the start itself (SegmentBeforeLastStep).
-            _olderKind = OlderPiece.None;
             _now.Previous = _now.State;
             _now.PreviousDerivative = _now.Derivative;
             _now.State = next;
@@ -376,28 +353,6 @@ namespace MagnusBall.Flight
             _eventCount = 0;
             _segmentCount = 0;
             _implicitSegment = true;
-        }
-
-        // What was the last piece becomes the piece before it (before a taken step replaces the pieces): the implicit one
-        // by its start (its end is the new Previous), a stored one copied. previous/previousDerivative: the start of the
-        // step before the one being taken.
-        private void KeepOlderPiece(in FlightState previous, in StateDerivative previousDerivative)
-        {
-            if (_implicitSegment)
-            {
-                _olderKind = OlderPiece.Implicit;
-                _olderStart = previous;
-                _olderStartDerivative = previousDerivative;
-            }
-            else if (_segmentCount > 0)
-            {
-                _olderKind = OlderPiece.Stored;
-                _olderSegment = _segments[_segmentCount - 1];
-            }
-            else
-            {
-                _olderKind = OlderPiece.None;
-            }
         }
 
         /// <summary>
@@ -560,8 +515,6 @@ namespace MagnusBall.Flight
             {
                 _stopEvent = _pendingStop;
             }
-
-            KeepOlderPiece(before.Previous, before.PreviousDerivative);
 
             // The pending arrays become the current ones only when the step wrote into them: with nothing written the
             // current count is zero and which array holds nothing does not matter (and no reference is stored).
@@ -979,13 +932,6 @@ namespace MagnusBall.Flight
             {
                 throw new InvalidOperationException("Call Reset(state) before stepping.");
             }
-        }
-
-        private enum OlderPiece : byte
-        {
-            None,
-            Implicit,
-            Stored,
         }
 
         // The mutable state of the flight, one value so that a refused step restores it in one assignment (the stop event

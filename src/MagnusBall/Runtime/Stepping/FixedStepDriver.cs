@@ -229,17 +229,10 @@ namespace MagnusBall.Stepping
                     return now;
                 }
 
+                // In the last step: a step's time comes out of the accumulator only once the accumulator holds it (a step cut
+                // short by its stop takes out only the time it flew), so the render time is never before the last step's start
+                // (to rounding, where StateAt gives the start).
                 double time = Math.Min(now.Time, now.Time - FixedStep + _accumulator);
-                if (time < _stepper.PreviousState.Time)
-                {
-                    // A last step cut short (at a landing) and a render time inside the step before it.
-                    HermiteSegment older = _stepper.SegmentBeforeLastStep;
-                    if (older.Duration > 0)
-                    {
-                        return time <= older.StartTime ? older.Start : older.StateAt(time);
-                    }
-                }
-
                 return _stepper.StateAt(time);
             }
         }
@@ -310,6 +303,7 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
+                double stepStart = _stepper.State.Time;
                 StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
@@ -321,7 +315,9 @@ namespace MagnusBall.Stepping
                 }
 
                 steps++;
-                _accumulator -= FixedStep;
+                // A step cut short by its stop event (a landing) uses only the time it flew: the render clock (RenderTime) then
+                // goes on by the frame time through this frame, to the stop, instead of losing the rest of the step.
+                _accumulator -= _stepper.IsStopped ? _stepper.State.Time - stepStart : FixedStep;
                 foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                 {
                     if (written < events.Length)
