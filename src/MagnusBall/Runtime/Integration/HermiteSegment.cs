@@ -402,8 +402,10 @@ namespace MagnusBall.Integration
             // bound f(s) >= min(f0, f1) - 4/27 (max(-m0, 0) + max(m1, 0)). When that is clearly positive there is no root;
             // the margin (1e-9 of the data, far above the rounding of the polynomial form FirstFall evaluates) keeps the
             // answer the full search would give.
+            // (Plain comparisons, not Math.Min/Max: the numbers are finite here, so their NaN and signed-zero rules, a dozen
+            // instructions each, cannot change a decision.)
             double scale = 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + Math.Abs(m0) + Math.Abs(m1));
-            double low = Math.Min(f0, f1) - (4.0 / 27.0) * (Math.Max(-m0, 0) + Math.Max(m1, 0));
+            double low = (f0 < f1 ? f0 : f1) - (4.0 / 27.0) * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0));
             if (low > scale)
             {
                 return true;
@@ -412,7 +414,7 @@ namespace MagnusBall.Integration
             // Nor can a cubic that stays clearly below 0 fall from above it (the apex test on the way down): by the same
             // bounds f(s) <= max(f0, f1) + 4/27 (max(m0, 0) + max(-m1, 0)). With the margin every value the full search
             // evaluates is negative too, so it finds no start above 0. (f0 = 0 never passes: the bound is then >= 0.)
-            double high = Math.Max(f0, f1) + (4.0 / 27.0) * (Math.Max(m0, 0) + Math.Max(-m1, 0));
+            double high = (f0 > f1 ? f0 : f1) + (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
             return high < -scale;
         }
 
