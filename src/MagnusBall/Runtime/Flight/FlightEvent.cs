@@ -209,12 +209,6 @@ namespace MagnusBall.Flight
         }
 
         /// <summary>
-        /// <see cref="Scan"/> on any dense output (a Hermite segment or an adaptive step's interpolant), with the
-        /// landing optional (a flight with a contact surface reports bounces instead). The buffer must hold
-        /// <see cref="MaximumEventsPerStep"/> events. An array, not a span: a step with no event (the common case) then
-        /// touches neither the buffer nor its length (on 1,000 drivers a cache miss each), and no span is built.
-        /// </summary>
-        /// <summary>
         /// True when a Hermite step between these ends surely holds none of this set's events (landing included): the
         /// tests <see cref="Scan{TDense}"/> itself starts each search with, on the same numbers, so when this is true a scan
         /// of the step's segment finds nothing. The flight core asks this before it builds the segment.
@@ -244,6 +238,12 @@ namespace MagnusBall.Flight
             return true;
         }
 
+        /// <summary>
+        /// <see cref="Scan"/> on any dense output (a Hermite segment or an adaptive step's interpolant), with the
+        /// landing optional (a flight with a contact surface reports bounces instead). The buffer must hold
+        /// <see cref="MaximumEventsPerStep"/> events. An array, not a span: a step with no event (the common case) then
+        /// touches neither the buffer nor its length (on 1,000 drivers a cache miss each), and no span is built.
+        /// </summary>
         internal int Scan<TDense>(ref TDense dense, FlightEvent[] events, bool startsFlight, bool landings)
             where TDense : struct, IDenseOutput =>
             ScanPlanes(ref dense, Up, landings ? Ground : null, _planes, events, startsFlight);

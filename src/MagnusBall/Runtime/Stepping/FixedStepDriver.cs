@@ -187,7 +187,10 @@ namespace MagnusBall.Stepping
         /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
 
-        /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
+        /// <summary>
+        /// accumulator / step, in [0, 1]: how far the render state is through the last step while it was a whole one (a step
+        /// cut short by its stop is drawn at <see cref="RenderTime"/>, State.Time - step + accumulator, not at this fraction of it).
+        /// </summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
         /// <summary>
@@ -307,10 +310,13 @@ namespace MagnusBall.Stepping
                 StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    // Refused: the stepper kept its last finite state. The flight ends there.
+                    // Refused: the stepper kept its last finite state. The flight ends there, and the render time runs on to it:
+                    // the accumulator holds at least a step, of which one is kept (RenderTime = State.Time, reached by at most
+                    // this frame's time) and the rest dropped. Emptied, it would put the render time back at the last step's
+                    // start, the drawn ball jumping back a step.
                     _diverged = true;
-                    dropped += _accumulator;
-                    _accumulator = 0;
+                    dropped += _accumulator - FixedStep;
+                    _accumulator = FixedStep;
                     break;
                 }
 
