@@ -115,6 +115,31 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void AfterTheFlight_TheBallIsDrawnWhereItEnded()
+        {
+            // The driver draws the ball a step behind the simulation, so the frame that takes the landing step can leave the
+            // render time short of the landing (frames shorter than the 1/240 s step, or not a multiple of it). Before, the
+            // component stopped passing frame time to the driver once the flight ended, and the ball stayed drawn there, short
+            // of its landing point, for good (4.5 cm here); now the drawn ball runs on to the landing (the driver takes no step).
+            // Frames of 1 ms: 1000 FPS.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            flight.Launch(Velocity, SpinVector);
+            Fly(flight, 0.001f);
+            FixedStepDriver driver = flight.Driver!;
+            Assert.That(driver.RenderTime, Is.LessThan(driver.State.Time), "the landing frame leaves the render time short of the landing");
+            long steps = driver.TotalSteps;
+            for (int i = 0; i < 10; i++)
+            {
+                Call(flight, "Update");
+            }
+
+            Vector3 drawn = flight.transform.position, landed = UnityFrame.ToUnity(driver.State.Position);
+            Assert.That((drawn.x, drawn.y, drawn.z), Is.EqualTo((landed.x, landed.y, landed.z)), "drawn at the landing");
+            Assert.That(driver.TotalSteps, Is.EqualTo(steps), "no step after the end");
+            Assert.That(flight.IsFlying, Is.False);
+        }
+
+        [Test]
         public void TheEvents_FireOnceEach_InTimeOrder_AsTheDriverReportsThem()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true); // tennis preset: hard court

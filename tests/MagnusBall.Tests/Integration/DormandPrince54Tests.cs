@@ -179,6 +179,58 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void ControllerPower_IsWithinTwoUlpOfTheTruePower()
+        {
+            // The step controller's norm^(-1/5) (sqrt of the portable x^(-2/5), scaled by powers of two) against Math.Pow, which
+            // is within 1 ulp itself: 200,000 norms spread log-uniformly over the controller's unclamped range [1.8e-4, 2000],
+            // 20,000 over [1e-300, 1e300], and the powers of two and their neighbours, where the scaling switches.
+            // Math.Pow(x, -0.2) raises x to the double nearest -0.2, which is -0.2 - 1.11e-17: far from 1 that is up to 8e-15 off
+            // the fifth root (40 ulp at 1e-300), so the reference is corrected by x^(1.11e-17) = 1 + 1.11e-17 ln x. The bound,
+            // 2 ulp, is the function's 1 ulp (its doc) plus the reference's own rounding.
+            const double exponentError = 1.1102230246251565e-17; // -0.2 minus the double nearest it
+            var random = new Random(11);
+            double worst = 0, worstAt = 0;
+            void Check(double x)
+            {
+                double expected = Math.Pow(x, -0.2) * (1 + exponentError * Math.Log(x)), got = DormandPrince54.PowMinusOneFifth(x);
+                double ulp = Next(expected, 1) - expected;
+                double error = Math.Abs(got - expected) / ulp;
+                if (error > worst)
+                {
+                    worst = error;
+                    worstAt = x;
+                }
+
+                Assert.That(error, Is.LessThanOrEqualTo(2), $"x = {x:R}: {got:R} against {expected:R}");
+            }
+
+            for (int i = 0; i < 200_000; i++)
+            {
+                Check(1.8e-4 * Math.Pow(2000 / 1.8e-4, random.NextDouble()));
+            }
+
+            TestContext.Out.WriteLine($"controller's range: worst error {worst:F2} ulp at {worstAt:R}");
+            for (int i = 0; i < 20_000; i++)
+            {
+                Check(Math.Pow(10, 600 * random.NextDouble() - 300));
+            }
+
+            for (int e = -996; e <= 1000; e++)
+            {
+                double x = Math.Pow(2, e);
+                Check(x);
+                Check(Next(x, 1));
+                Check(Next(x, -1));
+            }
+
+            TestContext.Out.WriteLine($"everywhere: worst error {worst:F2} ulp at {worstAt:R}");
+        }
+
+        // The neighbour of a positive double by its bits (not Math.BitIncrement, which Mono 6.8's corlib lacks: the suite also
+        // builds for Mono, tools/test-mono.sh).
+        private static double Next(double x, int direction) => BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) + direction);
+
+        [Test]
         public void StaysClearOf_NeverHidesAnEventTheSearchFinds_AndClearsMostSteps()
         {
             // The flight core skips the event search on a step the bound calls clear, so the bound must never call a step

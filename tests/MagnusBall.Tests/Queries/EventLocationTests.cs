@@ -289,5 +289,123 @@ namespace MagnusBall.Tests.Queries
             Assert.That(spurious, Is.Zero);
             Assert.That(found, Is.GreaterThan(3_000), "the random steps cross the plane often enough to test the search");
         }
+        [Test]
+        public void QuickClearTest_NeverHidesAnEventTheSearchFinds()
+        {
+            // The flight core takes a step without building its segment when SurelyNoCrossing / SurelyNoApex call it clear,
+            // so they must never call a step clear where the search finds a crossing (or, for a start on the plane, a
+            // crossing at the start). Random scalar cubics of both signs and slopes, scaled over 12 decades, some with an
+            // end exactly on the plane, and others tangent to it within a part in 1e12; a fall is also looked for by sampling.
+            var random = new Random(20261203);
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            const double h = 0.01;
+            int clear = 0, crossings = 0, rising = 0, clearRising = 0;
+            for (int n = 0; n < 40_000; n++)
+            {
+                double scale = Math.Pow(10, 12 * random.NextDouble() - 6);
+                double f0 = scale * (2 * random.NextDouble() - 1), f1 = scale * (2 * random.NextDouble() - 1);
+                double m0 = scale * (8 * random.NextDouble() - 4), m1 = scale * (8 * random.NextDouble() - 4);
+                switch (n % 8)
+                {
+                    case 0: f0 = 0; break;
+                    case 1: f1 = 0; break;
+                    case 2: f0 = -Math.Abs(f0); f1 = Math.Abs(f1) * 1e-12; break; // rises to just above the plane at the end
+                    case 3: f0 = Math.Abs(f0) * 1e-12; f1 = -Math.Abs(f1); break;  // starts just above it and falls
+                }
+
+                var start = new FlightState(new Vector3d(0, 0, f0), new Vector3d(1, 0, m0 / h), Vector3d.Zero, 0);
+                var end = new FlightState(new Vector3d(h, 0, f1), new Vector3d(1, 0, m1 / h), Vector3d.Zero, h);
+                var startDerivative = new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero);
+                var endDerivative = new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero);
+                var segment = new HermiteSegment(start, startDerivative, end, endDerivative);
+                bool isClear = HermiteSegment.SurelyNoCrossing(ground, CrossingDirection.AgainstNormal, start, startDerivative, end, endDerivative);
+                bool crossing = segment.TryFindCrossing(ground, CrossingDirection.AgainstNormal, true, out _) |
+                    segment.TryFindCrossing(ground, CrossingDirection.AgainstNormal, false, out _);
+                Assert.That(isClear && crossing, Is.False, $"called clear with a crossing: f0 {f0:R} m0 {m0:R} f1 {f1:R} m1 {m1:R}");
+                bool sampledFall = false, above = f0 > 0;
+                for (int i = 1; i <= 1000 && !sampledFall; i++)
+                {
+                    double s = i / 1000.0, s2 = s * s, s3 = s2 * s;
+                    double f = (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * m0 + (3 * s2 - 2 * s3) * f1 + (s3 - s2) * m1;
+                    sampledFall = above && f <= 0;
+                    above = f > 0;
+                }
+
+                Assert.That(isClear && sampledFall, Is.False, $"called clear where sampling sees a fall: f0 {f0:R} m0 {m0:R} f1 {f1:R} m1 {m1:R}");
+                clear += isClear ? 1 : 0;
+                crossings += crossing ? 1 : 0;
+                if (f0 < 0 && f1 < 0)
+                {
+                    rising++;
+                    clearRising += isClear ? 1 : 0;
+                }
+            }
+
+            TestContext.Out.WriteLine($"{clear} of 40000 called clear, {crossings} crossings, {clearRising} of {rising} below the plane at both ends called clear");
+            Assert.That(crossings, Is.GreaterThan(5_000), "the random cubics cross the plane often enough to test the bound");
+            Assert.That(clearRising, Is.GreaterThan(rising / 3), "the upper bound decides many steps that start and end below the plane");
+        }
+
+        [Test]
+        public void SurelyClear_OnFlownSteps_NeverHidesAnEventTheScanFinds()
+        {
+            // The same rule on real RK4 steps (random drives and lobs at 1/240 s and 1/30 s) against an event set with the
+            // ground, the apex and planes placed where the steps meet them: every 0.25 m of height and every metre along x
+            // (both directions), plus planes through each step's midpoint and just above its top.
+            FlightModel model = Shots.StepanekTennis(Gravity.Along(Vector3d.UnitZ));
+            var random = new Random(5);
+            int steps = 0, clear = 0, found = 0;
+            var planes = new System.Collections.Generic.List<Plane>();
+            for (int z = -8; z <= 80; z++)
+            {
+                planes.Add(new Plane(new Vector3d(0, 0, 0.25 * z), z % 2 == 0 ? Vector3d.UnitZ : -Vector3d.UnitZ));
+            }
+
+            for (int x = 0; x <= 40; x++)
+            {
+                planes.Add(new Plane(new Vector3d(x, 0, 0), x % 2 == 0 ? Vector3d.UnitX : -Vector3d.UnitX));
+            }
+
+            var fixedSet = new FlightEventSet(Vector3d.UnitZ, Plane.Ground(model), planes.ToArray());
+            var events = new FlightEvent[fixedSet.MaximumEventsPerStep + 3];
+            for (int shot = 0; shot < 40; shot++)
+            {
+                double elevation = -0.2 + 1.4 * random.NextDouble(), speed = 5 + 40 * random.NextDouble();
+                var velocity = new Vector3d(speed * Math.Cos(elevation), 3 * (random.NextDouble() - 0.5), speed * Math.Sin(elevation));
+                double rpm = 4000 * random.NextDouble() - 1000;
+                Vector3d spin = rpm >= 0 ? Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRpm(rpm)) : Spin.Backspin(velocity, Vector3d.UnitZ, Spin.FromRpm(-rpm));
+                var state = new FlightState(new Vector3d(0, 0, 1 + random.NextDouble()), velocity, spin);
+                StateDerivative k1 = model.Derivative(state);
+                double h = shot % 2 == 0 ? 1.0 / 240 : 1.0 / 30;
+                for (int i = 0; i < 1000 && state.Position.Z > -2; i++)
+                {
+                    FlightState next = RungeKutta4.Instance.Step(model, state, k1, h, out StateDerivative k2, out _);
+                    var segment = new HermiteSegment(state, k1, next, k2);
+                    FlightState middle = segment.StateAt(state.Time + 0.5 * h);
+                    double top = Math.Max(state.Position.Z, next.Position.Z);
+                    var near = new[]
+                    {
+                        new Plane(middle.Position, Vector3d.UnitZ), new Plane(middle.Position, middle.Velocity.NormalizedOrZero()),
+                        new Plane(new Vector3d(0, 0, top + 1e-9), Vector3d.UnitZ), new Plane(new Vector3d(0, 0, top + 1e-6), -Vector3d.UnitZ),
+                    };
+                    foreach (FlightEventSet set in new[] { fixedSet, new FlightEventSet(Vector3d.UnitZ, new Plane(state.Position, Vector3d.UnitZ), near) })
+                    {
+                        bool isClear = set.SurelyClear(state, k1, next, k2);
+                        int count = set.Scan(ref segment, events, false, landings: true);
+                        Assert.That(isClear && count > 0, Is.False, $"a step with {count} events called clear, from {state}");
+                        clear += isClear ? 1 : 0;
+                        found += count;
+                        steps++;
+                    }
+
+                    state = next;
+                    k1 = k2;
+                }
+            }
+
+            TestContext.Out.WriteLine($"{steps} step-set checks, {found} events found, {clear} called clear");
+            Assert.That(found, Is.GreaterThan(2_000), "the flights meet many of the planes");
+            Assert.That(clear, Is.GreaterThan(steps / 4), "the quick test decides many steps");
+        }
     }
 }

@@ -90,6 +90,30 @@ namespace MagnusBall.Tests.Stepping
         }
 
         [Test]
+        public void ADivergingStep_LeavesTheDrawnBallRunningOnToTheLastGoodState()
+        {
+            // The render clock goes on by at most the frame time, never back, through the frame whose step is refused, and
+            // the ball is then drawn at the last good state. Before, the refused step emptied the accumulator: the render
+            // time fell back to the last step's start (a quarter of a second here) and the drawn ball jumped back a step.
+            var driver = new FixedStepDriver(TableTennisInSpace, ExplicitEuler.Instance, 0.25, Smash);
+            const double frame = 0.1;
+            double last = driver.RenderTime;
+            for (int i = 0; i < 200 && !(driver.Diverged && driver.RenderTime == driver.State.Time); i++)
+            {
+                driver.Advance(frame);
+                double now = driver.RenderTime;
+                // 1e-15 s: the rounding of the render time's sum (times below 10 s).
+                Assert.That(now, Is.GreaterThanOrEqualTo(last - 1e-15), $"frame {i}: the render time went back (diverged: {driver.Diverged})");
+                Assert.That(now - last, Is.LessThanOrEqualTo(frame + 1e-15), $"frame {i}: the render time jumped ahead");
+                last = now;
+            }
+
+            Assert.That(driver.Diverged, Is.True);
+            Assert.That(driver.RenderState.Position, Is.EqualTo(driver.State.Position), "drawn at the last good state");
+            Assert.That(driver.Accumulator, Is.LessThanOrEqualTo(driver.FixedStep));
+        }
+
+        [Test]
         public void ADivergingBouncingStep_IsRefused_AndTheFlightIsLeftAsItWas()
         {
             // The court 1e300 m below: the run-away speed (squaring each step) overflows long before the ball gets there.

@@ -120,6 +120,49 @@ namespace MagnusBall.Tests.Stepping
         }
 
         [Test]
+        public void RenderState_MovesOnThroughTheLandingFrame_AndStaysInTheLastStep()
+        {
+            // The landing step is cut short. The drawn ball must keep moving by its speed times the frame time until it
+            // reaches the landing, through the frame that takes the landing step: before, the driver took a whole step's time
+            // out of the accumulator for it, the render clock lost the cut part, and the ball stood nearly still for a frame
+            // (0.01 of a frame's travel here). And the render time stays inside the last step (to rounding), so no older
+            // piece of flight is needed to draw it. Frames of 1/1000 s, a quarter of a step; frame rates 30-240 FPS too.
+            foreach (double frame in new[] { 1.0 / 1000, 1.0 / 240, 1.0 / 144, 1.0 / 60, 1.0 / 30 })
+            {
+                FixedStepDriver driver = NewDriver();
+                Vector3d last = driver.RenderState.Position;
+                double lastTime = driver.RenderTime;
+                int frames = 0;
+                for (int i = 0; i < 5000 && !(driver.IsFinished && driver.RenderState.Position == driver.State.Position); i++)
+                {
+                    driver.Advance(frame);
+                    FlightState render = driver.RenderState;
+                    // 1e-15 s: the rounding of the render time's sum.
+                    Assert.That(render.Time, Is.GreaterThanOrEqualTo(driver.PreviousState.Time - 1e-15), $"frame {i} at {frame} s: before the last step");
+                    double speed = render.Velocity.Length;
+                    double moved = Vector3d.Distance(render.Position, last);
+                    // A frame's travel to 3 % (speed changes by less than that over a frame, up to 1/30 s here); the frames
+                    // before the render clock starts (it runs a step behind) and the frame that reaches the landing (clamped
+                    // to it) move less.
+                    Assert.That(moved, Is.LessThanOrEqualTo(1.03 * speed * frame), $"frame {i} at {frame} s: the drawn ball jumped");
+                    if (lastTime > 0 && render.Time < driver.State.Time)
+                    {
+                        Assert.That(moved, Is.GreaterThanOrEqualTo(0.97 * speed * frame), $"frame {i} at {frame} s: the drawn ball slowed (finished: {driver.IsFinished})");
+                        Assert.That(render.Time - lastTime, Is.EqualTo(frame).Within(1e-15), $"frame {i} at {frame} s: the render clock");
+                        frames++;
+                    }
+
+                    last = render.Position;
+                    lastTime = render.Time;
+                }
+
+                Assert.That(driver.IsFinished, Is.True);
+                Assert.That(driver.RenderState.Position, Is.EqualTo(driver.State.Position), "it comes to rest at the landing");
+                Assert.That(frames, Is.GreaterThan(20));
+            }
+        }
+
+        [Test]
         public void Landing_IsReportedOnce_OnTheGround_AndEndsTheFlight()
         {
             FixedStepDriver driver = NewDriver();

@@ -109,6 +109,8 @@ namespace MagnusBall.Flight
     public sealed class FlightEventSet
     {
         private readonly Plane[] _planes;
+        private readonly bool _hasGround, _hasUp; // the same tests Scan makes, kept for SurelyClear
+        private readonly Plane _groundValue;
 
         /// <summary>Creates an event set.</summary>
         /// <param name="up">The up direction for the apex (for example <see cref="FlightModel.Up"/>); finite. Zero switches the apex off.</param>
@@ -125,6 +127,9 @@ namespace MagnusBall.Flight
             }
 
             Ground = ground;
+            _hasGround = ground.HasValue;
+            _groundValue = ground.GetValueOrDefault();
+            _hasUp = Up.LengthSquared > 0;
             _planes = planes == null ? Array.Empty<Plane>() : (Plane[])planes.Clone();
             for (int i = 0; i < _planes.Length; i++)
             {
@@ -146,6 +151,8 @@ namespace MagnusBall.Flight
         {
             Up = Vector3d.Zero;
             Ground = ground;
+            _hasGround = true;
+            _groundValue = ground;
             _planes = planes;
         }
 
@@ -199,6 +206,36 @@ namespace MagnusBall.Flight
             int count = Scan(ref copy, buffer, startsFlight, landings: true);
             buffer.AsSpan(0, count).CopyTo(events);
             return count;
+        }
+
+        /// <summary>
+        /// True when a Hermite step between these ends surely holds none of this set's events (landing included): the
+        /// tests <see cref="Scan{TDense}"/> itself starts each search with, on the same numbers, so when this is true a scan
+        /// of the step's segment finds nothing. The flight core asks this before it builds the segment.
+        /// </summary>
+        internal bool SurelyClear(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
+        {
+            if (_hasGround &&
+                !HermiteSegment.SurelyNoCrossing(_groundValue, CrossingDirection.AgainstNormal, start, startDerivative, end, endDerivative))
+            {
+                return false;
+            }
+
+            if (_hasUp && !HermiteSegment.SurelyNoApex(Up, start, startDerivative, end, endDerivative))
+            {
+                return false;
+            }
+
+            Plane[] planes = _planes;
+            for (int i = 0; i < planes.Length; i++)
+            {
+                if (!HermiteSegment.SurelyNoCrossing(planes[i], CrossingDirection.AlongNormal, start, startDerivative, end, endDerivative))
+                {
+                    return false;
+                }
+            }
+
+            return true;
         }
 
         /// <summary>

@@ -96,17 +96,11 @@ namespace MagnusBall.Flight
         // _segments: the common step (one piece, no event with an effect) copies no segment.
         private bool _implicitSegment;
         private bool _pendingImplicit;
-        // The last piece of the step before the last one (FixedStepDriver draws inside it after a last step cut short):
-        // none, the implicit piece from _olderStart/_olderStartDerivative to (Previous, PreviousDerivative), or a stored one.
-        private OlderPiece _olderKind;
         // The first piece of a step that TryStep integrated before handing the step to Advance (it held an event).
         private FlightState _firstPiece;
         private StateDerivative _firstPieceDerivative;
         private int _firstPieceEvaluations;
         private bool _hasFirstPiece;
-        private FlightState _olderStart;
-        private StateDerivative _olderStartDerivative;
-        private HermiteSegment _olderSegment;
         private int _eventCount;
         private int _segmentCount;
         private int _pendingEventCount;
@@ -179,14 +173,6 @@ namespace MagnusBall.Flight
             : _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
         /// <summary>
-        /// The last piece of flight of the step before the last one (what <see cref="LastSegment"/> was before the last
-        /// step; default when there was none): for drawing inside it once the last step was cut short.
-        /// </summary>
-        internal HermiteSegment SegmentBeforeLastStep =>
-            _olderKind == OlderPiece.Implicit ? HermiteSegment.OfTakenStep(_olderStart, _olderStartDerivative, _now.Previous, _now.PreviousDerivative)
-            : _olderKind == OlderPiece.Stored ? _olderSegment : default;
-
-        /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
         /// step leaves them as they were; a call on a stopped flight (<see cref="StepOutcome.AlreadyStopped"/>) clears them.
         /// </summary>
@@ -238,7 +224,6 @@ namespace MagnusBall.Flight
             int events = _eventCount, segments = _segmentCount;
             bool started = _started, implicitSegment = _implicitSegment;
             FlightEvent stopEvent = _stopEvent;
-            OlderPiece olderKind = _olderKind;
             // Evaluated before anything changes: a user's law that throws leaves the flight as it was.
             StateDerivative derivative = Model.Derivative(state);
             if (zeroCounters)
@@ -257,7 +242,6 @@ namespace MagnusBall.Flight
             _eventCount = 0;
             _segmentCount = 0;
             _implicitSegment = false;
-            _olderKind = OlderPiece.None;
             _hasFirstPiece = false;
             _started = true;
             if (Contact != null && _gravityHolds && _contactPlane.SignedDistance(state.Position) <= 0 && Vector3d.Dot(state.Velocity, _normal) <= 0)
@@ -293,7 +277,6 @@ namespace MagnusBall.Flight
                 _started = started;
                 _implicitSegment = implicitSegment;
                 _stopEvent = stopEvent;
-                _olderKind = olderKind;
             }
         }
 
@@ -333,8 +316,7 @@ namespace MagnusBall.Flight
                     next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
                 }
 
-                var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
-                if (EventSet == null || EventSet.Scan(ref segment, _scratch, _now.StartsFlight, landings: true) == 0)
+                if (EventSet == null || EventSet.SurelyClear(_now.State, _now.Derivative, next, nextDerivative) || ScansClear(next, nextDerivative))
                 {
                     TakePlainStep(next, nextDerivative, evaluations);
                     return StepOutcome.Taken;
@@ -349,10 +331,18 @@ namespace MagnusBall.Flight
             return Advance(step, stopAt, adaptive: null);
         }
 
+        // The full scan of a plain step's segment, for the steps SurelyClear cannot decide (out of line: the segment is 304 bytes
+        // the common step need not build).
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private bool ScansClear(in FlightState next, in StateDerivative nextDerivative)
+        {
+            var segment = new HermiteSegment(_now.State, _now.Derivative, next, nextDerivative, trusted: true);
+            return EventSet!.Scan(ref segment, _scratch, _now.StartsFlight, landings: true) == 0;
+        }
+
         // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
         private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
         {
-            KeepOlderPiece(_now.Previous, _now.PreviousDerivative);
             _now.Previous = _now.State;
             _now.PreviousDerivative = _now.Derivative;
             _now.State = next;
@@ -363,28 +353,6 @@ namespace MagnusBall.Flight
             _eventCount = 0;
             _segmentCount = 0;
             _implicitSegment = true;
-        }
-
-        // What was the last piece becomes the piece before it (before a taken step replaces the pieces): the implicit one
-        // by its start (its end is the new Previous), a stored one copied. previous/previousDerivative: the start of the
-        // step before the one being taken.
-        private void KeepOlderPiece(in FlightState previous, in StateDerivative previousDerivative)
-        {
-            if (_implicitSegment)
-            {
-                _olderKind = OlderPiece.Implicit;
-                _olderStart = previous;
-                _olderStartDerivative = previousDerivative;
-            }
-            else if (_segmentCount > 0)
-            {
-                _olderKind = OlderPiece.Stored;
-                _olderSegment = _segments[_segmentCount - 1];
-            }
-            else
-            {
-                _olderKind = OlderPiece.None;
-            }
         }
 
         /// <summary>
@@ -548,8 +516,6 @@ namespace MagnusBall.Flight
                 _stopEvent = _pendingStop;
             }
 
-            KeepOlderPiece(before.Previous, before.PreviousDerivative);
-
             // The pending arrays become the current ones only when the step wrote into them: with nothing written the
             // current count is zero and which array holds nothing does not matter (and no reference is stored).
             if (_pendingEventCount > 0)
@@ -651,17 +617,28 @@ namespace MagnusBall.Flight
 
             _now.NextAdaptiveStep = result.NextStep;
             endTime = end.Time;
-            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
-            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
-                // find nothing, without them.
-                Continue(hermite, end, endDerivative, implicitPiece: false);
+                // find nothing, without them. The step's first piece runs from (Previous, PreviousDerivative) to its end, so
+                // its cubic Hermite for StateAt is the implicit one, built only when asked for; a later piece's is stored.
+                if (piece == 0)
+                {
+                    _pendingImplicit = true;
+                    _now.State = end;
+                    _now.Derivative = endDerivative;
+                }
+                else
+                {
+                    Continue(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative), end, endDerivative, implicitPiece: false);
+                }
+
                 return true;
             }
 
+            // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
+            var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
         }
 
@@ -955,13 +932,6 @@ namespace MagnusBall.Flight
             {
                 throw new InvalidOperationException("Call Reset(state) before stepping.");
             }
-        }
-
-        private enum OlderPiece : byte
-        {
-            None,
-            Implicit,
-            Stored,
         }
 
         // The mutable state of the flight, one value so that a refused step restores it in one assignment (the stop event

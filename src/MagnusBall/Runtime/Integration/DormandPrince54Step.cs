@@ -248,13 +248,19 @@ namespace MagnusBall.Integration
         {
             double d = condition.Linear(_slopeDefect), r4 = condition.Linear(_r4), r5 = condition.Linear(_r5);
             double margin = BoundMargin * condition.Magnitude(this);
-            double lower = Math.Min(g0, g1) + 0.25 * Math.Min(0, d) + (4.0 / 27) * Math.Min(0, r4) + 0.0625 * Math.Min(0, r5);
+            if (!double.IsFinite(g0 + g1 + d + r4 + r5 + margin))
+            {
+                return false;
+            }
+
+            // Finite from here, so plain comparisons (Math.Min/Max's NaN and signed-zero rules cannot change a decision).
+            double lower = (g0 < g1 ? g0 : g1) + 0.25 * (d < 0 ? d : 0) + (4.0 / 27) * (r4 < 0 ? r4 : 0) + 0.0625 * (r5 < 0 ? r5 : 0);
             if (lower > margin)
             {
                 return true;
             }
 
-            double upper = Math.Max(g0, g1) + 0.25 * Math.Max(0, d) + (4.0 / 27) * Math.Max(0, r4) + 0.0625 * Math.Max(0, r5);
+            double upper = (g0 > g1 ? g0 : g1) + 0.25 * (d > 0 ? d : 0) + (4.0 / 27) * (r4 > 0 ? r4 : 0) + 0.0625 * (r5 > 0 ? r5 : 0);
             return upper < -margin;
         }
 

@@ -197,13 +197,58 @@ namespace MagnusBall.Integration
         /// </returns>
         public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
-            double h = Duration;
-            double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
-            double f0 = sign * plane.SignedDistance(Start.Position);
-            double m0 = sign * plane.NormalSpeed(StartDerivative.Velocity) * h;
-            double f1 = sign * plane.SignedDistance(End.Position);
-            double m1 = sign * plane.NormalSpeed(EndDerivative.Velocity) * h;
+            CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, out double f0, out double m0, out double f1, out double m1);
             return FirstFall(f0, m0, f1, m1, startsFlight, out time);
+        }
+
+        // The scalar cubic TryFindCrossing searches (values and slopes times the step), from the segment's ends.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void CrossingCubic(
+            in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
+            in StateDerivative endDerivative, out double f0, out double m0, out double f1, out double m1)
+        {
+            double h = end.Time - start.Time;
+            double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
+            f0 = sign * plane.SignedDistance(start.Position);
+            m0 = sign * plane.NormalSpeed(startDerivative.Velocity) * h;
+            f1 = sign * plane.SignedDistance(end.Position);
+            m1 = sign * plane.NormalSpeed(endDerivative.Velocity) * h;
+        }
+
+        // The scalar cubic TryFindApex searches.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void ApexCubic(
+            in Vector3d up, in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative,
+            out double f0, out double m0, out double f1, out double m1)
+        {
+            double h = end.Time - start.Time;
+            f0 = Vector3d.Dot(start.Velocity, up);
+            m0 = Vector3d.Dot(startDerivative.Acceleration, up) * h;
+            f1 = Vector3d.Dot(end.Velocity, up);
+            m1 = Vector3d.Dot(endDerivative.Acceleration, up) * h;
+        }
+
+        /// <summary>
+        /// True when the segment from these ends surely holds no crossing of <paramref name="plane"/> in the given direction:
+        /// <see cref="TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/> would return false (its own first
+        /// test, on the same numbers), so the flight core can skip building the segment.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool SurelyNoCrossing(
+            in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
+            in StateDerivative endDerivative)
+        {
+            CrossingCubic(plane, direction, start, startDerivative, end, endDerivative, out double f0, out double m0, out double f1, out double m1);
+            return CannotFall(f0, m0, f1, m1);
+        }
+
+        /// <summary>As <see cref="SurelyNoCrossing"/>, for <see cref="TryFindApex"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool SurelyNoApex(
+            in Vector3d up, in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
+        {
+            ApexCubic(up, start, startDerivative, end, endDerivative, out double f0, out double m0, out double f1, out double m1);
+            return CannotFall(f0, m0, f1, m1);
         }
 
         /// <summary>
@@ -215,11 +260,7 @@ namespace MagnusBall.Integration
         /// <returns>True when the apex falls inside (StartTime, EndTime].</returns>
         public bool TryFindApex(in Vector3d up, out double time)
         {
-            double h = Duration;
-            double f0 = Vector3d.Dot(Start.Velocity, up);
-            double m0 = Vector3d.Dot(StartDerivative.Acceleration, up) * h;
-            double f1 = Vector3d.Dot(End.Velocity, up);
-            double m1 = Vector3d.Dot(EndDerivative.Acceleration, up) * h;
+            ApexCubic(up, Start, StartDerivative, End, EndDerivative, out double f0, out double m0, out double f1, out double m1);
             return FirstFall(f0, m0, f1, m1, false, out time);
         }
 
@@ -346,6 +387,38 @@ namespace MagnusBall.Integration
         }
 
         /// <summary>
+        /// True when the scalar Hermite cubic (values f0, f1, slopes times h m0, m1) surely has no fall from &gt; 0 to
+        /// &lt;= 0 on [0, 1]: <see cref="FirstFall"/>'s quick exits, which decide most steps (no event).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool CannotFall(double f0, double m0, double f1, double m1)
+        {
+            if (!double.IsFinite(f0 + m0 + f1 + m1))
+            {
+                return true; // FirstFall finds nothing on a cubic that is not finite
+            }
+
+            // On [0, 1] the Hermite basis functions h00 + h01 = 1 (both in [0, 1]), h10 in [0, 4/27] and h11 in [-4/27, 0]
+            // bound f(s) >= min(f0, f1) - 4/27 (max(-m0, 0) + max(m1, 0)). When that is clearly positive there is no root;
+            // the margin (1e-9 of the data, far above the rounding of the polynomial form FirstFall evaluates) keeps the
+            // answer the full search would give.
+            // (Plain comparisons, not Math.Min/Max: the numbers are finite here, so their NaN and signed-zero rules, a dozen
+            // instructions each, cannot change a decision.)
+            double scale = 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + Math.Abs(m0) + Math.Abs(m1));
+            double low = (f0 < f1 ? f0 : f1) - (4.0 / 27.0) * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0));
+            if (low > scale)
+            {
+                return true;
+            }
+
+            // Nor can a cubic that stays clearly below 0 fall from above it (the apex test on the way down): by the same
+            // bounds f(s) <= max(f0, f1) + 4/27 (max(m0, 0) + max(-m1, 0)). With the margin every value the full search
+            // evaluates is negative too, so it finds no start above 0. (f0 = 0 never passes: the bound is then >= 0.)
+            double high = (f0 > f1 ? f0 : f1) + (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
+            return high < -scale;
+        }
+
+        /// <summary>
         /// First s in (0, 1] where the scalar Hermite cubic with values f0, f1 and scaled slopes m0, m1 (slope
         /// times h) falls from &gt; 0 to &lt;= 0; converted to time. With <paramref name="fromZero"/>, also s = 0
         /// when f0 is 0 and the cubic falls below 0 at once (slope &lt; 0, or slope 0 and curvature &lt; 0, or
@@ -354,17 +427,7 @@ namespace MagnusBall.Integration
         private bool FirstFall(double f0, double m0, double f1, double m1, bool fromZero, out double time)
         {
             time = 0;
-            if (!double.IsFinite(f0 + m0 + f1 + m1))
-            {
-                return false;
-            }
-
-            // Most steps hold no event: on [0, 1] the Hermite basis functions h00 + h01 = 1 (both in [0, 1]),
-            // h10 in [0, 4/27] and h11 in [-4/27, 0] bound f(s) >= min(f0, f1) - 4/27 (max(-m0, 0) + max(m1, 0)).
-            // When that is clearly positive there is no root; the margin (1e-9 of the data, far above the rounding of
-            // the polynomial form below) keeps the answer the full search would give.
-            double low = Math.Min(f0, f1) - (4.0 / 27.0) * (Math.Max(-m0, 0) + Math.Max(m1, 0));
-            if (low > 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + Math.Abs(m0) + Math.Abs(m1)))
+            if (CannotFall(f0, m0, f1, m1))
             {
                 return false;
             }

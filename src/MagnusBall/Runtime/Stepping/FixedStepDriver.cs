@@ -187,7 +187,10 @@ namespace MagnusBall.Stepping
         /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
         public double Accumulator => _accumulator;
 
-        /// <summary>accumulator / step, in [0, 1]: how far the render state is through the step it is drawn in.</summary>
+        /// <summary>
+        /// accumulator / step, in [0, 1]: how far the render state is through the last step while it was a whole one (a step
+        /// cut short by its stop is drawn at <see cref="RenderTime"/>, State.Time - step + accumulator, not at this fraction of it).
+        /// </summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
         /// <summary>
@@ -229,17 +232,10 @@ namespace MagnusBall.Stepping
                     return now;
                 }
 
+                // In the last step: a step's time comes out of the accumulator only once the accumulator holds it (a step cut
+                // short by its stop takes out only the time it flew), so the render time is never before the last step's start
+                // (to rounding, where StateAt gives the start).
                 double time = Math.Min(now.Time, now.Time - FixedStep + _accumulator);
-                if (time < _stepper.PreviousState.Time)
-                {
-                    // A last step cut short (at a landing) and a render time inside the step before it.
-                    HermiteSegment older = _stepper.SegmentBeforeLastStep;
-                    if (older.Duration > 0)
-                    {
-                        return time <= older.StartTime ? older.Start : older.StateAt(time);
-                    }
-                }
-
                 return _stepper.StateAt(time);
             }
         }
@@ -310,18 +306,24 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
+                double stepStart = _stepper.State.Time;
                 StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
-                    // Refused: the stepper kept its last finite state. The flight ends there.
+                    // Refused: the stepper kept its last finite state. The flight ends there, and the render time runs on to it:
+                    // the accumulator holds at least a step, of which one is kept (RenderTime = State.Time, reached by at most
+                    // this frame's time) and the rest dropped. Emptied, it would put the render time back at the last step's
+                    // start, the drawn ball jumping back a step.
                     _diverged = true;
-                    dropped += _accumulator;
-                    _accumulator = 0;
+                    dropped += _accumulator - FixedStep;
+                    _accumulator = FixedStep;
                     break;
                 }
 
                 steps++;
-                _accumulator -= FixedStep;
+                // A step cut short by its stop event (a landing) uses only the time it flew: the render clock (RenderTime) then
+                // goes on by the frame time through this frame, to the stop, instead of losing the rest of the step.
+                _accumulator -= _stepper.IsStopped ? _stepper.State.Time - stepStart : FixedStep;
                 foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                 {
                     if (written < events.Length)

@@ -309,6 +309,12 @@ namespace MagnusBall.Components
             {
                 Step(Time.deltaTime);
             }
+            else if (stepIn == StepIn.Update && _driver.IsFinished)
+            {
+                // The flight is over, but the drawn ball runs a step behind it: the finished driver takes no step and lets the
+                // render state run on to where the flight ended (else it would stay drawn up to a step short of the landing).
+                _driver.Advance(Time.deltaTime);
+            }
 
             // Update: the state interpolated between the last two fixed steps. FixedUpdate: the latest fixed
             // state (the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
