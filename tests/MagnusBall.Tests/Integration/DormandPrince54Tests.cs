@@ -310,6 +310,23 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void StaysClearOf_APlaneFarBelow_IsClear_EvenWhereTheBoundsNumbersSumPastDoubleMaxValue()
+        {
+            // A ground 9e307 m below the ball: the distances at the step's ends (9e307 each) are finite and so is the margin
+            // (1e-12 of the magnitudes, ~9e295), but their sum overflows. The bound is min(g0, g1) + ... > margin, so the
+            // step is clear; a finiteness test on the sum of the bound's numbers would call it not finite and answer false.
+            FlightModel model = Model();
+            FlightState state = Start();
+            Assert.That(new DormandPrince54(1e-6, 1e-9).TryStep(model, state, model.Derivative(state), 0.01, out DormandPrince54Step step), Is.True);
+            var plane = new Plane(new Vector3d(0, 0, -9e307), Vector3d.UnitZ);
+            Assert.That(step.TryFindCrossing(plane, CrossingDirection.AgainstNormal, false, out _), Is.False);
+            Assert.That(step.StaysClearOf(plane, CrossingDirection.AgainstNormal), Is.True);
+            // Mirrored: the far plane above the ball, approached from below (the bound's upper side).
+            var above = new Plane(new Vector3d(0, 0, 9e307), Vector3d.UnitZ);
+            Assert.That(step.StaysClearOf(above, CrossingDirection.AlongNormal), Is.True);
+        }
+
+        [Test]
         public void AdaptiveSteps_InTheCore_CountEveryRealEvaluation()
         {
             FlightModel model = Model();

@@ -248,7 +248,9 @@ namespace MagnusBall.Integration
         {
             double d = condition.Linear(_slopeDefect), r4 = condition.Linear(_r4), r5 = condition.Linear(_r5);
             double margin = BoundMargin * condition.Magnitude(this);
-            if (!double.IsFinite(g0 + g1 + d + r4 + r5 + margin))
+            // Every number finite (x - x is 0 for a finite x and NaN otherwise, as in StepArguments.Check). Not a test of their
+            // sum: that overflows for some finite numbers (a plane 9e307 m away), where the bound below still decides.
+            if ((g0 - g0) + (g1 - g1) + (d - d) + (r4 - r4) + (r5 - r5) + (margin - margin) != 0)
             {
                 return false;
             }
