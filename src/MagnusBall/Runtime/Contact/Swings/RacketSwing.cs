@@ -25,9 +25,10 @@ namespace MagnusBall.Contact.Swings
     /// effective mass acts along the face: string snap-back and the racket's rotation about its long axis are not
     /// modelled. A clamped racket (<see cref="Clamped"/>) has infinite effective mass. Cross &amp; Lindsey (Tennis
     /// Warehouse University, 2011) measured about 30 % less spin from a hand-held racket than from a clamped one for balls
-    /// arriving with backspin at about 23 m/s, 40 degrees from the normal; with that rig's -3820 rpm this model gives
-    /// 29.6-33.2 % less at the centre, and the clamped racket's 1649 rpm lies inside the rig's 1207-1803 rpm over 14 string
-    /// beds. For a ball arriving without spin it gives 8.9 % less for a gripping impact at the centre and 21.6 % less for
+    /// arriving with backspin at about 23 m/s, 40 degrees from the normal (the incoming spin not given); with the
+    /// -3820 rpm of Lindsey's clamped-racket table ("String Movement and Spin") this model gives 29.6-33.2 % less at the
+    /// centre (22.7-24.7 % for -3000 rpm), and the clamped racket's 1649 rpm lies inside that table's 1207-1803 rpm over 14
+    /// string beds. For a ball arriving without spin it gives 8.9 % less for a gripping impact at the centre and 21.6 % less for
     /// a sliding one (19.5 % and 40.5 % near the tip). The racket's twist about its long axis, which Lindsey (2011) found
     /// changes the spin with the impact point, is not modelled (docs/impacts.md).</para>
     /// <para><b>Geometry.</b> In a <see cref="LaunchFrame"/> (up, forward toward the target, side = up x forward): the
