@@ -106,9 +106,10 @@ namespace MagnusBall.Tests.Contact
         [Test]
         public void HandHeldRacket_GivesLessSpinThanAClampedOne()
         {
-            // Cross & Lindsey (2011) report about 30 % less spin from a hand-held racket (not traced to the paper here).
-            // This model (a free racket with the effective mass from the ACOR, the same along the face) gives less, by
-            // 1 - (1 + alpha)/(1 + alpha (1 + m/M)) for a gripping impact: the number is printed and documented.
+            // For a ball arriving without spin this model (a free racket with the effective mass from the ACOR, the same
+            // along the face) gives less spin by 1 - (1 + alpha)/(1 + alpha (1 + m/M)) for a gripping impact (printed and
+            // documented). Cross & Lindsey's measured 30 %, for a ball arriving with backspin, is checked in
+            // PublishedImpactChecksTests.HandHeldRacket_WithIncomingBackspin_GivesAbout30PercentLessSpin.
             var incoming = new Vector3d(-15, 0, -2);
             double ratio = 0;
             foreach (double path in new[] { 15.0, 30, 45 })

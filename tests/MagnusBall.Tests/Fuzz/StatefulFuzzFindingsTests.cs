@@ -210,6 +210,49 @@ namespace MagnusBall.Tests.Fuzz
             Assert.That(ordinary.PositionAt(t).Y, Is.EqualTo(plain));
         }
 
+        [TestCase(1.0)]
+        [TestCase(4.149515568880993e+180)] // 2^600: past 1e150, scaled back to exactly the k = 1 numbers
+        [TestCase(1.0715086071862673e+301)] // 2^1000
+        public void Crossing_OfACubicDipFarFromThePlane_IsFoundAsAtUnitScale(double k)
+        {
+            // A step whose height above the ground plane is k times the cubic f0 = 1, m0 = -6, f1 = 1, m1 = 5 (h = 1 s): it dips
+            // below the plane and comes back (-s^3 + 7 s^2 - 6 s + 1, -0.375 at mid-step), the same dip at every scale. The
+            // event search finds it through the cubic's turning points, and their discriminant squares the numbers, which
+            // overflows from about 1e154 (k = 2^600 and 2^1000): the turning points were lost and, both ends being above the
+            // plane, the crossing was missed. Now numbers past 1e150 are scaled first.
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            HermiteSegment unit = Fall(1);
+            Assert.That(unit.TryFindCrossing(ground, CrossingDirection.AgainstNormal, out double expected), Is.True);
+            HermiteSegment scaled = Fall(k);
+            Assert.That(scaled.TryFindCrossing(ground, CrossingDirection.AgainstNormal, out double time), Is.True, $"k = {k}");
+            // 2^600 is scaled back to the very same numbers: the same time to the bit; 2^1000 to the search's tolerance.
+            Assert.That(time, k == 4.149515568880993e+180 ? Is.EqualTo(expected) : Is.EqualTo(expected).Within(HermiteSegment.TimeTolerance));
+            Assert.That(HermiteSegment.SurelyNoCrossing(ground, CrossingDirection.AgainstNormal, scaled.Start, scaled.StartDerivative, scaled.End,
+                scaled.EndDerivative), Is.False, "the quick test before the segment is built must not rule it out");
+        }
+
+        [Test]
+        public void Crossing_OfAPlaneBetweenEndsNear1e308_IsFound()
+        {
+            // The linear fall through a plane 8e307 m above and below (speed -1.6e308 m/s): the four numbers are finite but
+            // sum to -3.2e308, and the test of their sum called the cubic not finite, with no crossing.
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            var top = new FlightState(new Vector3d(0, 0, 8e307), new Vector3d(0, 0, -1.6e308), Vector3d.Zero, 0);
+            var bottom = new FlightState(new Vector3d(0, 0, -8e307), new Vector3d(0, 0, -1.6e308), Vector3d.Zero, 1);
+            var straight = new HermiteSegment(top, new StateDerivative(top.Velocity, Vector3d.Zero, Vector3d.Zero),
+                bottom, new StateDerivative(bottom.Velocity, Vector3d.Zero, Vector3d.Zero));
+            Assert.That(straight.TryFindCrossing(ground, CrossingDirection.AgainstNormal, out double middle), Is.True);
+            Assert.That(middle, Is.EqualTo(0.5).Within(HermiteSegment.TimeTolerance));
+        }
+
+        private static HermiteSegment Fall(double k)
+        {
+            var start = new FlightState(new Vector3d(0, 0, k), new Vector3d(0, 0, -6 * k), Vector3d.Zero, 0);
+            var end = new FlightState(new Vector3d(0, 0, k), new Vector3d(0, 0, 5 * k), Vector3d.Zero, 1);
+            return new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
+                end, new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero));
+        }
+
         [Test]
         public void Reset_RefusedOnTheSurface_KeepsTheCounters()
         {

@@ -393,7 +393,9 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool CannotFall(double f0, double m0, double f1, double m1)
         {
-            if (!double.IsFinite(f0 + m0 + f1 + m1))
+            // Each number finite (x - x is 0 for a finite x and NaN otherwise). Not a test of their sum, which overflows for
+            // finite numbers near 1e308 (a plane that far away) and would call a real crossing impossible.
+            if ((f0 - f0) + (m0 - m0) + (f1 - f1) + (m1 - m1) != 0)
             {
                 return true; // FirstFall finds nothing on a cubic that is not finite
             }
@@ -430,6 +432,19 @@ namespace MagnusBall.Integration
             if (CannotFall(f0, m0, f1, m1))
             {
                 return false;
+            }
+
+            // Finite but huge (a plane 1e150 m or more away): the coefficients and the discriminant below would overflow (the
+            // discriminant squares them). Where the cubic falls does not depend on its scale, so the four numbers are scaled
+            // by 2^-600, which is exact except for numbers 2^-420 of the largest or smaller (they may round to a subnormal or
+            // 0). Smaller numbers are used as they are: ordinary steps bit for bit.
+            if (!(Math.Abs(f0) + Math.Abs(m0) + Math.Abs(f1) + Math.Abs(m1) < 1e150))
+            {
+                const double Down = 2.409919865102884e-181; // 2^-600
+                f0 *= Down;
+                m0 *= Down;
+                f1 *= Down;
+                m1 *= Down;
             }
 
             // f(s) = a s^3 + b s^2 + c s + d
