@@ -393,9 +393,10 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool CannotFall(double f0, double m0, double f1, double m1)
         {
-            // Each number finite (x - x is 0 for a finite x and NaN otherwise). Not a test of their sum, which overflows for
-            // finite numbers near 1e308 (a plane that far away) and would call a real crossing impossible.
-            if ((f0 - f0) + (m0 - m0) + (f1 - f1) + (m1 - m1) != 0)
+            // A finite sum means four finite numbers (the common case, one test). A sum that is not finite may still come from
+            // four finite numbers near 1e308 (a plane that far away), which must go on to the search: then each is tested
+            // (x - x is 0 for a finite x and NaN otherwise).
+            if (!double.IsFinite(f0 + m0 + f1 + m1) && ((f0 - f0) + (m0 - m0)) + ((f1 - f1) + (m1 - m1)) != 0)
             {
                 return true; // FirstFall finds nothing on a cubic that is not finite
             }
