@@ -245,6 +245,29 @@ namespace MagnusBall.Tests.Fuzz
             Assert.That(middle, Is.EqualTo(0.5).Within(HermiteSegment.TimeTolerance));
         }
 
+        [TestCase(1e-300, -1e151, false, true)] // starts just above the plane: a crossing at once
+        [TestCase(1e151, 1e-300, false, false)] // ends just above the plane: no crossing
+        [TestCase(-1e-300, -1e151, true, false)] // a flight starting just below the plane: no landing at its start
+        public void Crossing_OfAFallWithAnEndWithin1e300OfThePlane_IsAsUnscaled(double startHeight, double endHeight, bool startsFlight, bool crosses)
+        {
+            // A linear fall at 1e151 m/s for 1 s, one end 1e-300 m from the plane: its numbers sum past 1e150 and are scaled by
+            // 2^-600 before the search, and 1e-300 times 2^-600 rounds to 0, which put that end on the plane: the crossing
+            // from just above was missed (the search needs a start above 0), an end just above the plane was a landing
+            // (f1 <= 0), and a flight starting just below it landed at its start (the f0 == 0 rule). The unscaled cubic's
+            // answer, which the code before the scaling gave: the ends' signs decide. Found in review, 2026-12-02.
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            var start = new FlightState(new Vector3d(0, 0, startHeight), new Vector3d(0, 0, -1e151), Vector3d.Zero, 0);
+            var end = new FlightState(new Vector3d(0, 0, endHeight), new Vector3d(0, 0, -1e151), Vector3d.Zero, 1);
+            var fall = new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
+                end, new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero));
+            Assert.That(fall.TryFindCrossing(ground, CrossingDirection.AgainstNormal, startsFlight, out double time), Is.EqualTo(crosses));
+            if (crosses)
+            {
+                // The true crossing is 1e-451 s after the start: the search's tolerance from it.
+                Assert.That(time, Is.EqualTo(0).Within(HermiteSegment.TimeTolerance));
+            }
+        }
+
         private static HermiteSegment Fall(double k)
         {
             var start = new FlightState(new Vector3d(0, 0, k), new Vector3d(0, 0, -6 * k), Vector3d.Zero, 0);

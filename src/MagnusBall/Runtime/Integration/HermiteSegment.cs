@@ -437,15 +437,16 @@ namespace MagnusBall.Integration
 
             // Finite but huge (a plane 1e150 m or more away): the coefficients and the discriminant below would overflow (the
             // discriminant squares them). Where the cubic falls does not depend on its scale, so the four numbers are scaled
-            // by 2^-600, which is exact except for numbers 2^-420 of the largest or smaller (they may round to a subnormal or
-            // 0). Smaller numbers are used as they are: ordinary steps bit for bit.
+            // by 2^-600, which is exact for numbers of 2^-422 (about 1e-127) or more; smaller ones round to a subnormal, and
+            // those of 2^-475 (about 1e-143) or less would round to 0: they are kept at the smallest double of their sign, so the
+            // tests below of f0 == 0, f0 > 0, f1 <= 0 and of the slope's sign see each number's own sign. Sums under 1e150 are
+            // used as they are: ordinary steps bit for bit.
             if (!(Math.Abs(f0) + Math.Abs(m0) + Math.Abs(f1) + Math.Abs(m1) < 1e150))
             {
-                const double Down = 2.409919865102884e-181; // 2^-600
-                f0 *= Down;
-                m0 *= Down;
-                f1 *= Down;
-                m1 *= Down;
+                f0 = ScaledDown(f0);
+                m0 = ScaledDown(m0);
+                f1 = ScaledDown(f1);
+                m1 = ScaledDown(m1);
             }
 
             // f(s) = a s^3 + b s^2 + c s + d
@@ -521,6 +522,14 @@ namespace MagnusBall.Integration
             }
 
             return false;
+        }
+
+        // x times 2^-600, or the smallest double of x's sign where that product would round to 0 from a number that is not 0.
+        private static double ScaledDown(double x)
+        {
+            const double Down = 2.409919865102884e-181; // 2^-600
+            double y = x * Down;
+            return y != 0 || x == 0 ? y : x > 0 ? double.Epsilon : -double.Epsilon;
         }
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
