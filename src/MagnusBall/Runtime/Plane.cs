@@ -52,10 +52,36 @@ namespace MagnusBall
             return new Plane(point, model.Up);
         }
 
-        /// <summary>The signed distance of <paramref name="position"/> from the plane, m: positive on the normal's side.</summary>
+        /// <summary>
+        /// The signed distance of <paramref name="position"/> from the plane, m: positive on the normal's side. For finite
+        /// input never NaN: where the point and the plane's point are so far apart (near 1e308) that a component of their
+        /// difference overflows, the distance is formed from halves, so it is infinite only where it exceeds what a double
+        /// holds.
+        /// </summary>
         /// <param name="position">A point, m.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double SignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
+        public double SignedDistance(in Vector3d position)
+        {
+            double d = Vector3d.Dot(position - Point, Normal);
+            return double.IsFinite(d) ? d : HalvedDistance(position);
+        }
+
+        /// <summary>The plain formula, for the flight core's quick tests, which send a non-finite value on to a search that
+        /// uses <see cref="SignedDistance"/> (no check on the common step).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal double UncheckedSignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
+
+        // The plain formula was not finite: a component of position - Point overflowed, so its product is infinite where the true
+        // one may be finite, NaN beside a zero normal component (inf * 0), or two such products cancel (inf - inf). The same dot
+        // product of halves (each half-difference finite; exact but for subnormals, which cannot matter beside a component near
+        // 1e308), doubled: infinite only where the distance is. NaN only for a NaN input.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private double HalvedDistance(in Vector3d position)
+        {
+            Vector3d p = position, o = Point, n = Normal;
+            double half = (0.5 * p.X - 0.5 * o.X) * n.X + (0.5 * p.Y - 0.5 * o.Y) * n.Y + (0.5 * p.Z - 0.5 * o.Z) * n.Z;
+            return 2 * half;
+        }
 
         /// <summary>The rate at which a ball moving with <paramref name="velocity"/> moves along the normal, m/s.</summary>
         /// <param name="velocity">A velocity, m/s.</param>

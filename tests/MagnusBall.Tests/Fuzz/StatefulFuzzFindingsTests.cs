@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Batch;
 using MagnusBall.Contact;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
@@ -274,6 +275,82 @@ namespace MagnusBall.Tests.Fuzz
             var end = new FlightState(new Vector3d(0, 0, k), new Vector3d(0, 0, 5 * k), Vector3d.Zero, 1);
             return new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
                 end, new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero));
+        }
+
+        [Test]
+        public void SignedDistance_FromAPlanePointNear1e308Away_IsTheFiniteTrueDistance()
+        {
+            // Found in review (2026-12-02): position - Point overflows where the two are near 1e308 apart, and the plain dot
+            // product was then NaN (inf * 0 beside a zero normal component, inf - inf) or infinite where the true distance is
+            // finite. The halved form gives the true distance, and infinity only beyond double.MaxValue.
+            var beside = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitZ);
+            Assert.That(beside.SignedDistance(new Vector3d(1e308, 0, 5)), Is.EqualTo(5.0)); // was NaN
+            var slanted = new Plane(new Vector3d(-1e308, 1e308, 0), new Vector3d(0.6, 0.8, 0));
+            double across = slanted.SignedDistance(new Vector3d(1e308, -1e308, 0)); // 2e308 (0.6 - 0.8): was NaN (inf - inf)
+            Assert.That(across, Is.EqualTo(-0.4e308).Within(1e-15 * 0.4e308));
+            var tilted = new Plane(new Vector3d(-1e308, 0, 0), new Vector3d(0.6, 0, 0.8));
+            Assert.That(tilted.SignedDistance(new Vector3d(1e308, 0, 0)), Is.EqualTo(1.2e308).Within(1e-15 * 1.2e308)); // was +infinity
+            var facing = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitX);
+            Assert.That(facing.SignedDistance(new Vector3d(1e308, 0, 0)), Is.EqualTo(double.PositiveInfinity), "2e308: beyond a double");
+
+            // Ordinary distances are the plain formula, bit for bit.
+            var random = new Random(5);
+            for (int i = 0; i < 10000; i++)
+            {
+                var normal = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var plane = new Plane(new Vector3d(1e3 * (random.NextDouble() - 0.5), 1e3 * (random.NextDouble() - 0.5), random.NextDouble()), normal);
+                var point = new Vector3d(1e4 * (random.NextDouble() - 0.5), 1e4 * (random.NextDouble() - 0.5), 1e2 * (random.NextDouble() - 0.5));
+                Assert.That(plane.SignedDistance(point), Is.EqualTo(Vector3d.Dot(point - plane.Point, plane.Normal)));
+            }
+        }
+
+        [Test]
+        public void Landing_FarAlongAGroundWhosePointIsNear1e308Away_IsFound_ByTheStepperAndTheBatchAlike()
+        {
+            // A ball 1 m above a ground plane whose given point lies 2e308 m away along the ground: the landing's signed distance
+            // was NaN at every step, so the ball fell through the ground. Now the stepper lands it, and the batch (which tests
+            // its own vector bound first and must send such a lane to the scalar finish) lands it at the same state.
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var ground = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitZ);
+            var start = new FlightState(new Vector3d(1e308, 0, 1), new Vector3d(-5, 0, 2), new Vector3d(0, 100, 0), 0);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(model.Up, ground));
+            stepper.Reset(start);
+            var batch = new BallBatch(model, 1, ground);
+            batch.Add(start);
+            FlightEvent landing = default;
+            bool landed = false;
+            for (int i = 0; i < 480 && !landed; i++)
+            {
+                stepper.TryStep(1.0 / 240, FlightEventKinds.Landing);
+                landed = stepper.TryGetEvent(FlightEventKinds.Landing, out landing);
+            }
+
+            Assert.That(landed, Is.True, "the stepper lands the ball within 2 s");
+            Assert.That(landing.State.Position.Z, Is.EqualTo(0).Within(1e-9));
+            batch.Advance(1.0 / 240, 480);
+            Assert.That(batch.TryGetLanding(0, out FlightState batchLanding), Is.True, "the batch lands it too");
+            Assert.That(batchLanding.Position.Z, Is.EqualTo(landing.State.Position.Z));
+            Assert.That(batchLanding.Time, Is.EqualTo(landing.State.Time));
+            Assert.That(batchLanding.Velocity.Z, Is.EqualTo(landing.State.Velocity.Z));
+
+            // The adaptive steps (the aim solvers' trials) locate it on their own interpolant, through the same distance.
+            var adaptive = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(model.Up, ground));
+            adaptive.Reset(start);
+            var method = new DormandPrince54();
+            bool adaptiveLanded = false;
+            for (int i = 0; i < 1000 && !adaptiveLanded; i++)
+            {
+                adaptive.TryStepAdaptive(method, 0.1, FlightEventKinds.Landing);
+                adaptiveLanded = adaptive.TryGetEvent(FlightEventKinds.Landing, out FlightEvent adaptiveLanding) &&
+                    Math.Abs(adaptiveLanding.State.Position.Z) < 1e-9 && Math.Abs(adaptiveLanding.Time - landing.Time) < 1e-6;
+            }
+
+            Assert.That(adaptiveLanded, Is.True, "the adaptive stepper lands it at the same time (to 1e-6 s)");
         }
 
         [Test]
