@@ -54,16 +54,15 @@ namespace MagnusBall
 
         /// <summary>
         /// The signed distance of <paramref name="position"/> from the plane, m: positive on the normal's side. For finite
-        /// input never NaN: where the point and the plane's point are so far apart (near 1e308) that a component of their
-        /// difference overflows, the distance is formed from halves, so it is infinite only where it exceeds what a double
-        /// holds.
+        /// input never NaN: where the point and the plane's point are so far apart (near 1e308) that the plain formula
+        /// overflows, the distance is formed from quarters, so it is infinite only where it exceeds what a double holds.
         /// </summary>
         /// <param name="position">A point, m.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double SignedDistance(in Vector3d position)
         {
             double d = Vector3d.Dot(position - Point, Normal);
-            return double.IsFinite(d) ? d : HalvedDistance(position);
+            return double.IsFinite(d) ? d : 4 * QuarterDistance(position);
         }
 
         /// <summary>The plain formula, for the flight core's quick tests, which send a non-finite value on to a search that
@@ -71,16 +70,18 @@ namespace MagnusBall
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal double UncheckedSignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
 
-        // The plain formula was not finite: a component of position - Point overflowed, so its product is infinite where the true
-        // one may be finite, NaN beside a zero normal component (inf * 0), or two such products cancel (inf - inf). The same dot
-        // product of halves (each half-difference finite; exact but for subnormals, which cannot matter beside a component near
-        // 1e308), doubled: infinite only where the distance is. NaN only for a NaN input.
+        // A quarter of the signed distance, never overflowing for finite input; for where the plain formula was not finite: a
+        // component of position - Point overflowed (its product infinite where the true one may be finite, NaN beside a zero
+        // normal component, inf * 0, or two such products cancelling, inf - inf), or a partial sum of the products did. Each
+        // quarter-difference is at most double.MaxValue / 2, so the three products sum to at most sqrt(3) / 2 of it (a unit
+        // normal): no partial sum overflows (halves did: 1.7e308 (0.55 + 0.55) overflows before
+        // -1.7e308 0.63 is added, for a true distance of 1.6e308).
+        // Quartering is exact but for subnormals (an absolute error of a few times 4.9e-324 m). NaN only for a NaN input.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private double HalvedDistance(in Vector3d position)
+        private double QuarterDistance(in Vector3d position)
         {
             Vector3d p = position, o = Point, n = Normal;
-            double half = (0.5 * p.X - 0.5 * o.X) * n.X + (0.5 * p.Y - 0.5 * o.Y) * n.Y + (0.5 * p.Z - 0.5 * o.Z) * n.Z;
-            return 2 * half;
+            return (0.25 * p.X - 0.25 * o.X) * n.X + (0.25 * p.Y - 0.25 * o.Y) * n.Y + (0.25 * p.Z - 0.25 * o.Z) * n.Z;
         }
 
         /// <summary>The rate at which a ball moving with <paramref name="velocity"/> moves along the normal, m/s.</summary>

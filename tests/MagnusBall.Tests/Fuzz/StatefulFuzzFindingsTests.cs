@@ -282,7 +282,7 @@ namespace MagnusBall.Tests.Fuzz
         {
             // Found in review (2026-12-02): position - Point overflows where the two are near 1e308 apart, and the plain dot
             // product was then NaN (inf * 0 beside a zero normal component, inf - inf) or infinite where the true distance is
-            // finite. The halved form gives the true distance, and infinity only beyond double.MaxValue.
+            // finite. The form from quarters gives the true distance, and infinity only beyond double.MaxValue.
             var beside = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitZ);
             Assert.That(beside.SignedDistance(new Vector3d(1e308, 0, 5)), Is.EqualTo(5.0)); // was NaN
             var slanted = new Plane(new Vector3d(-1e308, 1e308, 0), new Vector3d(0.6, 0.8, 0));
@@ -306,6 +306,50 @@ namespace MagnusBall.Tests.Fuzz
                 var plane = new Plane(new Vector3d(1e3 * (random.NextDouble() - 0.5), 1e3 * (random.NextDouble() - 0.5), random.NextDouble()), normal);
                 var point = new Vector3d(1e4 * (random.NextDouble() - 0.5), 1e4 * (random.NextDouble() - 0.5), 1e2 * (random.NextDouble() - 0.5));
                 Assert.That(plane.SignedDistance(point), Is.EqualTo(Vector3d.Dot(point - plane.Point, plane.Normal)));
+            }
+        }
+
+        [Test]
+        public void SignedDistance_WhoseProductsOverflowInTheirPartialSum_IsTheFiniteTrueDistance()
+        {
+            // Found in review (2026-12-02): the halved form's first two products, 1.7e308 (0.55 + 0.55), overflow before the
+            // third, -1.7e308 0.6285, is added, so it gave +infinity for a true distance of 1.6e308. Quarters cannot overflow.
+            var plane = new Plane(new Vector3d(-1.7e308, -1.7e308, 1.7e308), new Vector3d(0.55, 0.55, Math.Sqrt(1 - 2 * 0.55 * 0.55)));
+            Vector3d n = plane.Normal;
+            double expected = 2 * (1.7e308 * ((n.X + n.Y) - n.Z)); // 3.4e308 (n.X + n.Y - n.Z), formed without overflow
+            double distance = plane.SignedDistance(new Vector3d(1.7e308, 1.7e308, -1.7e308));
+            // 1e-15 relative: a handful of roundings of 1.1e-16, the cancellation (n.X + n.Y) - n.Z amplifying n's by 1.73 / 0.47.
+            Assert.That(distance, Is.EqualTo(expected).Within(1e-15 * expected));
+
+            // Random points and planes with components up to double.MaxValue: never NaN, and finite wherever the true distance
+            // (from eighths, a scale neither path uses) is clearly under double.MaxValue, to 1e-14 of the numbers' size (a dot
+            // product of three terms rounds to a few ulp of the sum of their magnitudes, 2.2e-16 each).
+            var random = new Random(11);
+            double Huge() => (random.NextDouble() * 2 - 1) * double.MaxValue;
+            for (int i = 0; i < 100000; i++)
+            {
+                var normal = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var far = new Plane(new Vector3d(Huge(), Huge(), Huge()), normal);
+                var point = new Vector3d(Huge(), Huge(), Huge());
+                Vector3d u = far.Normal, o = far.Point;
+                double eighth = (0.125 * point.X - 0.125 * o.X) * u.X + (0.125 * point.Y - 0.125 * o.Y) * u.Y + (0.125 * point.Z - 0.125 * o.Z) * u.Z;
+                double size = Math.Abs(0.125 * point.X - 0.125 * o.X) * Math.Abs(u.X) + Math.Abs(0.125 * point.Y - 0.125 * o.Y) * Math.Abs(u.Y) +
+                    Math.Abs(0.125 * point.Z - 0.125 * o.Z) * Math.Abs(u.Z);
+                double d = far.SignedDistance(point);
+                Assert.That(double.IsNaN(d), Is.False, $"{far} {point}");
+                if (Math.Abs(eighth) < 0.124 * double.MaxValue)
+                {
+                    Assert.That(0.125 * d, Is.EqualTo(eighth).Within(1e-14 * size), $"{far} {point}");
+                }
+                else if (Math.Abs(eighth) > 0.126 * double.MaxValue)
+                {
+                    Assert.That(d, Is.EqualTo(eighth > 0 ? double.PositiveInfinity : double.NegativeInfinity), $"{far} {point}");
+                }
             }
         }
 
