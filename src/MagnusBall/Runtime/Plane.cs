@@ -92,9 +92,33 @@ namespace MagnusBall
         /// <summary>The same plane with its normal reversed.</summary>
         public Plane Flipped() => new Plane(Point, -Normal);
 
-        /// <summary>The foot of the perpendicular from <paramref name="position"/> onto the plane.</summary>
+        /// <summary>
+        /// The foot of the perpendicular from <paramref name="position"/> onto the plane. For finite input never NaN: a
+        /// component is infinite only where the foot's lies beyond what a double holds.
+        /// </summary>
         /// <param name="position">A point, m.</param>
-        public Vector3d Project(in Vector3d position) => position - Normal * SignedDistance(position);
+        public Vector3d Project(in Vector3d position)
+        {
+            double d = SignedDistance(position);
+            return double.IsFinite(d) ? position - Normal * d : ProjectFar(position);
+        }
+
+        // The foot where the distance exceeds double.MaxValue (the plain form gives inf * 0 = NaN beside a zero normal
+        // component, and an infinite component where the foot's is finite): each component moved by 4 n q (q the quarter
+        // distance, finite), and where 4 n q itself overflows, formed as 4 (p / 4 - n q) (p / 4 exact: |n q| > 2^1021 there,
+        // so a subnormal p cannot matter). A zero normal component leaves the position's component as it is.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private Vector3d ProjectFar(in Vector3d position)
+        {
+            double q = QuarterDistance(position);
+            return new Vector3d(Moved(position.X, Normal.X * q), Moved(position.Y, Normal.Y * q), Moved(position.Z, Normal.Z * q));
+
+            static double Moved(double p, double quarterShift)
+            {
+                double shift = 4 * quarterShift;
+                return double.IsFinite(shift) ? p - shift : 4 * (0.25 * p - quarterShift);
+            }
+        }
 
         /// <inheritdoc />
         public override string ToString() => $"Plane(point={Point}, normal={Normal})";

@@ -354,6 +354,54 @@ namespace MagnusBall.Tests.Fuzz
         }
 
         [Test]
+        public void Project_WhereTheDistanceExceedsADouble_IsTheFiniteFoot()
+        {
+            // Found in review (2026-12-02): Project is position - Normal * SignedDistance, and a distance beyond double.MaxValue
+            // (2e308 here) times a zero normal component is NaN (inf * 0), and times a non-zero one infinite where the foot is
+            // finite. The foot of (1e308, 5, 0) on the plane x = -1e308 is (-1e308, 5, 0).
+            var wall = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitX);
+            Vector3d foot = wall.Project(new Vector3d(1e308, 5, -3));
+            Assert.That(foot.X, Is.EqualTo(-1e308)); // was -infinity
+            Assert.That(foot.Y, Is.EqualTo(5.0)); // was NaN
+            Assert.That(foot.Z, Is.EqualTo(-3.0)); // was NaN
+
+            // Tilted: a distance of 2.8e308; the foot (1e308 - 0.6 2.8e308, 1e308 - 0.8 2.8e308) = (-0.68e308, -1.24e308, 7).
+            var slope = new Plane(new Vector3d(-1e308, -1e308, 0), new Vector3d(0.6, 0.8, 0));
+            Vector3d tilted = slope.Project(new Vector3d(1e308, 1e308, 7));
+            // 1e-15 relative: a few roundings (2.2e-16 each) of numbers near 1e308 (the normal's 0.6, 0.8 are rounded once).
+            Assert.That(tilted.X, Is.EqualTo(-0.68e308).Within(1e-15 * 1e308));
+            Assert.That(tilted.Y, Is.EqualTo(-1.24e308).Within(1e-15 * 1e308));
+            Assert.That(tilted.Z, Is.EqualTo(7.0));
+
+            // Random planes and points up to double.MaxValue: never NaN; where finite, on the plane (its distance within 1e-14 of
+            // the numbers' size: a few roundings each of the foot and of the distance).
+            var random = new Random(13);
+            double Huge() => (random.NextDouble() * 2 - 1) * double.MaxValue;
+            for (int i = 0; i < 100000; i++)
+            {
+                var normal = new Vector3d(random.Next(3) == 0 ? 0 : random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var far = new Plane(new Vector3d(Huge(), Huge(), Huge()), normal);
+                var point = new Vector3d(Huge(), Huge(), Huge());
+                Vector3d projected = far.Project(point);
+                Assert.That(double.IsNaN(projected.X) || double.IsNaN(projected.Y) || double.IsNaN(projected.Z), Is.False, $"{far} {point}");
+                if (far.Normal.X == 0)
+                {
+                    Assert.That(projected.X, Is.EqualTo(point.X), "a zero normal component leaves the position's");
+                }
+
+                if (projected.IsFinite)
+                {
+                    Assert.That(0.25 * far.SignedDistance(projected), Is.EqualTo(0).Within(1e-14 * 0.25 * double.MaxValue), $"{far} {point}");
+                }
+            }
+        }
+
+        [Test]
         public void Landing_FarAlongAGroundWhosePointIsNear1e308Away_IsFound_ByTheStepperAndTheBatchAlike()
         {
             // A ball 1 m above a ground plane whose given point lies 2e308 m away along the ground: the landing's signed distance
