@@ -233,7 +233,9 @@ namespace MagnusBall.Integration
         /// <summary>
         /// True when the segment from these ends surely holds no crossing of <paramref name="plane"/> in the given direction:
         /// <see cref="TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/> would return false (its own first
-        /// test, on the same numbers), so the flight core can skip building the segment.
+        /// test, on the same numbers wherever this can answer true: the plain distances here equal the checked ones the search
+        /// forms whenever they are finite, and a number that is not finite makes this false), so the flight core can skip
+        /// building the segment.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool SurelyNoCrossing(
