@@ -52,10 +52,37 @@ namespace MagnusBall
             return new Plane(point, model.Up);
         }
 
-        /// <summary>The signed distance of <paramref name="position"/> from the plane, m: positive on the normal's side.</summary>
+        /// <summary>
+        /// The signed distance of <paramref name="position"/> from the plane, m: positive on the normal's side. For finite
+        /// input never NaN: where the point and the plane's point are so far apart (near 1e308) that the plain formula
+        /// overflows, the distance is formed from quarters, so it is infinite only where it exceeds what a double holds.
+        /// </summary>
         /// <param name="position">A point, m.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double SignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
+        public double SignedDistance(in Vector3d position)
+        {
+            double d = Vector3d.Dot(position - Point, Normal);
+            return double.IsFinite(d) ? d : 4 * QuarterDistance(position);
+        }
+
+        /// <summary>The plain formula, for the flight core's quick tests, which send a non-finite value on to a search that
+        /// uses <see cref="SignedDistance"/> (no check on the common step).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal double UncheckedSignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
+
+        // A quarter of the signed distance, never overflowing for finite input; for where the plain formula was not finite: a
+        // component of position - Point overflowed (its product infinite where the true one may be finite, NaN beside a zero
+        // normal component, inf * 0, or two such products cancelling, inf - inf), or a partial sum of the products did. Each
+        // quarter-difference is at most double.MaxValue / 2, so the three products sum to at most sqrt(3) / 2 of it (a unit
+        // normal): no partial sum overflows (halves did: 1.7e308 (0.55 + 0.55) overflows before
+        // -1.7e308 0.63 is added, for a true distance of 1.6e308).
+        // Quartering is exact but for subnormals (an absolute error of a few times 4.9e-324 m). NaN only for a NaN input.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private double QuarterDistance(in Vector3d position)
+        {
+            Vector3d p = position, o = Point, n = Normal;
+            return (0.25 * p.X - 0.25 * o.X) * n.X + (0.25 * p.Y - 0.25 * o.Y) * n.Y + (0.25 * p.Z - 0.25 * o.Z) * n.Z;
+        }
 
         /// <summary>The rate at which a ball moving with <paramref name="velocity"/> moves along the normal, m/s.</summary>
         /// <param name="velocity">A velocity, m/s.</param>
@@ -65,9 +92,33 @@ namespace MagnusBall
         /// <summary>The same plane with its normal reversed.</summary>
         public Plane Flipped() => new Plane(Point, -Normal);
 
-        /// <summary>The foot of the perpendicular from <paramref name="position"/> onto the plane.</summary>
+        /// <summary>
+        /// The foot of the perpendicular from <paramref name="position"/> onto the plane. For finite input never NaN: a
+        /// component is infinite only where the foot's lies beyond what a double holds.
+        /// </summary>
         /// <param name="position">A point, m.</param>
-        public Vector3d Project(in Vector3d position) => position - Normal * SignedDistance(position);
+        public Vector3d Project(in Vector3d position)
+        {
+            double d = SignedDistance(position);
+            return double.IsFinite(d) ? position - Normal * d : ProjectFar(position);
+        }
+
+        // The foot where the distance exceeds double.MaxValue (the plain form gives inf * 0 = NaN beside a zero normal
+        // component, and an infinite component where the foot's is finite): each component moved by 4 n q (q the quarter
+        // distance, finite), and where 4 n q itself overflows, formed as 4 (p / 4 - n q) (p / 4 exact: |n q| > 2^1021 there,
+        // so a subnormal p cannot matter). A zero normal component leaves the position's component as it is.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private Vector3d ProjectFar(in Vector3d position)
+        {
+            double q = QuarterDistance(position);
+            return new Vector3d(Moved(position.X, Normal.X * q), Moved(position.Y, Normal.Y * q), Moved(position.Z, Normal.Z * q));
+
+            static double Moved(double p, double quarterShift)
+            {
+                double shift = 4 * quarterShift;
+                return double.IsFinite(shift) ? p - shift : 4 * (0.25 * p - quarterShift);
+            }
+        }
 
         /// <inheritdoc />
         public override string ToString() => $"Plane(point={Point}, normal={Normal})";

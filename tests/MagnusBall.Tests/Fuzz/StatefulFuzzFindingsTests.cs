@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Batch;
 using MagnusBall.Contact;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
@@ -274,6 +275,174 @@ namespace MagnusBall.Tests.Fuzz
             var end = new FlightState(new Vector3d(0, 0, k), new Vector3d(0, 0, 5 * k), Vector3d.Zero, 1);
             return new HermiteSegment(start, new StateDerivative(start.Velocity, Vector3d.Zero, Vector3d.Zero),
                 end, new StateDerivative(end.Velocity, Vector3d.Zero, Vector3d.Zero));
+        }
+
+        [Test]
+        public void SignedDistance_FromAPlanePointNear1e308Away_IsTheFiniteTrueDistance()
+        {
+            // Found in review (2026-12-02): position - Point overflows where the two are near 1e308 apart, and the plain dot
+            // product was then NaN (inf * 0 beside a zero normal component, inf - inf) or infinite where the true distance is
+            // finite. The form from quarters gives the true distance, and infinity only beyond double.MaxValue.
+            var beside = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitZ);
+            Assert.That(beside.SignedDistance(new Vector3d(1e308, 0, 5)), Is.EqualTo(5.0)); // was NaN
+            var slanted = new Plane(new Vector3d(-1e308, 1e308, 0), new Vector3d(0.6, 0.8, 0));
+            double across = slanted.SignedDistance(new Vector3d(1e308, -1e308, 0)); // 2e308 (0.6 - 0.8): was NaN (inf - inf)
+            Assert.That(across, Is.EqualTo(-0.4e308).Within(1e-15 * 0.4e308));
+            var tilted = new Plane(new Vector3d(-1e308, 0, 0), new Vector3d(0.6, 0, 0.8));
+            Assert.That(tilted.SignedDistance(new Vector3d(1e308, 0, 0)), Is.EqualTo(1.2e308).Within(1e-15 * 1.2e308)); // was +infinity
+            var facing = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitX);
+            Assert.That(facing.SignedDistance(new Vector3d(1e308, 0, 0)), Is.EqualTo(double.PositiveInfinity), "2e308: beyond a double");
+
+            // Ordinary distances are the plain formula, bit for bit.
+            var random = new Random(5);
+            for (int i = 0; i < 10000; i++)
+            {
+                var normal = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var plane = new Plane(new Vector3d(1e3 * (random.NextDouble() - 0.5), 1e3 * (random.NextDouble() - 0.5), random.NextDouble()), normal);
+                var point = new Vector3d(1e4 * (random.NextDouble() - 0.5), 1e4 * (random.NextDouble() - 0.5), 1e2 * (random.NextDouble() - 0.5));
+                Assert.That(plane.SignedDistance(point), Is.EqualTo(Vector3d.Dot(point - plane.Point, plane.Normal)));
+            }
+        }
+
+        [Test]
+        public void SignedDistance_WhoseProductsOverflowInTheirPartialSum_IsTheFiniteTrueDistance()
+        {
+            // Found in review (2026-12-02): the halved form's first two products, 1.7e308 (0.55 + 0.55), overflow before the
+            // third, -1.7e308 0.6285, is added, so it gave +infinity for a true distance of 1.6e308. Quarters cannot overflow.
+            var plane = new Plane(new Vector3d(-1.7e308, -1.7e308, 1.7e308), new Vector3d(0.55, 0.55, Math.Sqrt(1 - 2 * 0.55 * 0.55)));
+            Vector3d n = plane.Normal;
+            double expected = 2 * (1.7e308 * ((n.X + n.Y) - n.Z)); // 3.4e308 (n.X + n.Y - n.Z), formed without overflow
+            double distance = plane.SignedDistance(new Vector3d(1.7e308, 1.7e308, -1.7e308));
+            // 1e-15 relative: a handful of roundings of 1.1e-16, the cancellation (n.X + n.Y) - n.Z amplifying n's by 1.73 / 0.47.
+            Assert.That(distance, Is.EqualTo(expected).Within(1e-15 * expected));
+
+            // Random points and planes with components up to double.MaxValue: never NaN, and finite wherever the true distance
+            // (from eighths, a scale neither path uses) is clearly under double.MaxValue, to 1e-14 of the numbers' size (a dot
+            // product of three terms rounds to a few ulp of the sum of their magnitudes, 2.2e-16 each).
+            var random = new Random(11);
+            double Huge() => (random.NextDouble() * 2 - 1) * double.MaxValue;
+            for (int i = 0; i < 100000; i++)
+            {
+                var normal = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var far = new Plane(new Vector3d(Huge(), Huge(), Huge()), normal);
+                var point = new Vector3d(Huge(), Huge(), Huge());
+                Vector3d u = far.Normal, o = far.Point;
+                double eighth = (0.125 * point.X - 0.125 * o.X) * u.X + (0.125 * point.Y - 0.125 * o.Y) * u.Y + (0.125 * point.Z - 0.125 * o.Z) * u.Z;
+                double size = Math.Abs(0.125 * point.X - 0.125 * o.X) * Math.Abs(u.X) + Math.Abs(0.125 * point.Y - 0.125 * o.Y) * Math.Abs(u.Y) +
+                    Math.Abs(0.125 * point.Z - 0.125 * o.Z) * Math.Abs(u.Z);
+                double d = far.SignedDistance(point);
+                Assert.That(double.IsNaN(d), Is.False, $"{far} {point}");
+                if (Math.Abs(eighth) < 0.124 * double.MaxValue)
+                {
+                    Assert.That(0.125 * d, Is.EqualTo(eighth).Within(1e-14 * size), $"{far} {point}");
+                }
+                else if (Math.Abs(eighth) > 0.126 * double.MaxValue)
+                {
+                    Assert.That(d, Is.EqualTo(eighth > 0 ? double.PositiveInfinity : double.NegativeInfinity), $"{far} {point}");
+                }
+            }
+        }
+
+        [Test]
+        public void Project_WhereTheDistanceExceedsADouble_IsTheFiniteFoot()
+        {
+            // Found in review (2026-12-02): Project is position - Normal * SignedDistance, and a distance beyond double.MaxValue
+            // (2e308 here) times a zero normal component is NaN (inf * 0), and times a non-zero one infinite where the foot is
+            // finite. The foot of (1e308, 5, 0) on the plane x = -1e308 is (-1e308, 5, 0).
+            var wall = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitX);
+            Vector3d foot = wall.Project(new Vector3d(1e308, 5, -3));
+            Assert.That(foot.X, Is.EqualTo(-1e308)); // was -infinity
+            Assert.That(foot.Y, Is.EqualTo(5.0)); // was NaN
+            Assert.That(foot.Z, Is.EqualTo(-3.0)); // was NaN
+
+            // Tilted: a distance of 2.8e308; the foot (1e308 - 0.6 2.8e308, 1e308 - 0.8 2.8e308) = (-0.68e308, -1.24e308, 7).
+            var slope = new Plane(new Vector3d(-1e308, -1e308, 0), new Vector3d(0.6, 0.8, 0));
+            Vector3d tilted = slope.Project(new Vector3d(1e308, 1e308, 7));
+            // 1e-15 relative: a few roundings (2.2e-16 each) of numbers near 1e308 (the normal's 0.6, 0.8 are rounded once).
+            Assert.That(tilted.X, Is.EqualTo(-0.68e308).Within(1e-15 * 1e308));
+            Assert.That(tilted.Y, Is.EqualTo(-1.24e308).Within(1e-15 * 1e308));
+            Assert.That(tilted.Z, Is.EqualTo(7.0));
+
+            // Random planes and points up to double.MaxValue: never NaN; where finite, on the plane (its distance within 1e-14 of
+            // the numbers' size: a few roundings each of the foot and of the distance).
+            var random = new Random(13);
+            double Huge() => (random.NextDouble() * 2 - 1) * double.MaxValue;
+            for (int i = 0; i < 100000; i++)
+            {
+                var normal = new Vector3d(random.Next(3) == 0 ? 0 : random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5);
+                if (normal.Length < 0.1)
+                {
+                    continue;
+                }
+
+                var far = new Plane(new Vector3d(Huge(), Huge(), Huge()), normal);
+                var point = new Vector3d(Huge(), Huge(), Huge());
+                Vector3d projected = far.Project(point);
+                Assert.That(double.IsNaN(projected.X) || double.IsNaN(projected.Y) || double.IsNaN(projected.Z), Is.False, $"{far} {point}");
+                if (far.Normal.X == 0)
+                {
+                    Assert.That(projected.X, Is.EqualTo(point.X), "a zero normal component leaves the position's");
+                }
+
+                if (projected.IsFinite)
+                {
+                    Assert.That(0.25 * far.SignedDistance(projected), Is.EqualTo(0).Within(1e-14 * 0.25 * double.MaxValue), $"{far} {point}");
+                }
+            }
+        }
+
+        [Test]
+        public void Landing_FarAlongAGroundWhosePointIsNear1e308Away_IsFound_ByTheStepperAndTheBatchAlike()
+        {
+            // A ball 1 m above a ground plane whose given point lies 2e308 m away along the ground: the landing's signed distance
+            // was NaN at every step, so the ball fell through the ground. Now the stepper lands it, and the batch (which tests
+            // its own vector bound first and must send such a lane to the scalar finish) lands it at the same state.
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var ground = new Plane(new Vector3d(-1e308, 0, 0), Vector3d.UnitZ);
+            var start = new FlightState(new Vector3d(1e308, 0, 1), new Vector3d(-5, 0, 2), new Vector3d(0, 100, 0), 0);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(model.Up, ground));
+            stepper.Reset(start);
+            var batch = new BallBatch(model, 1, ground);
+            batch.Add(start);
+            FlightEvent landing = default;
+            bool landed = false;
+            for (int i = 0; i < 480 && !landed; i++)
+            {
+                stepper.TryStep(1.0 / 240, FlightEventKinds.Landing);
+                landed = stepper.TryGetEvent(FlightEventKinds.Landing, out landing);
+            }
+
+            Assert.That(landed, Is.True, "the stepper lands the ball within 2 s");
+            Assert.That(landing.State.Position.Z, Is.EqualTo(0).Within(1e-9));
+            batch.Advance(1.0 / 240, 480);
+            Assert.That(batch.TryGetLanding(0, out FlightState batchLanding), Is.True, "the batch lands it too");
+            Assert.That(batchLanding.Position.Z, Is.EqualTo(landing.State.Position.Z));
+            Assert.That(batchLanding.Time, Is.EqualTo(landing.State.Time));
+            Assert.That(batchLanding.Velocity.Z, Is.EqualTo(landing.State.Velocity.Z));
+
+            // The adaptive steps (the aim solvers' trials) locate it on their own interpolant, through the same distance.
+            var adaptive = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(model.Up, ground));
+            adaptive.Reset(start);
+            var method = new DormandPrince54();
+            bool adaptiveLanded = false;
+            for (int i = 0; i < 1000 && !adaptiveLanded; i++)
+            {
+                adaptive.TryStepAdaptive(method, 0.1, FlightEventKinds.Landing);
+                adaptiveLanded = adaptive.TryGetEvent(FlightEventKinds.Landing, out FlightEvent adaptiveLanding) &&
+                    Math.Abs(adaptiveLanding.State.Position.Z) < 1e-9 && Math.Abs(adaptiveLanding.Time - landing.Time) < 1e-6;
+            }
+
+            Assert.That(adaptiveLanded, Is.True, "the adaptive stepper lands it at the same time (to 1e-6 s)");
         }
 
         [Test]

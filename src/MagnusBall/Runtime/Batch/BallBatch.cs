@@ -420,7 +420,9 @@ namespace MagnusBall.Batch
             Vector<double> m1 = (nvx * nx + nvy * ny + nvz * nz) * h;
             Vector<double> reach = new Vector<double>(HermiteBound) * (Vector.Max(-m0, Vector<double>.Zero) + Vector.Max(m1, Vector<double>.Zero)) +
                 new Vector<double>(1e-9) * (Vector.Abs(f0) + Vector.Abs(f1) + Vector.Abs(m0) + Vector.Abs(m1));
-            Vector<long> near = Vector.LessThanOrEqual(Vector.Min(f0, f1), reach);
+            // Not "min(f0, f1) <= reach": a NaN distance (Plane.SignedDistance's overflow, which the scalar path forms
+            // without NaN) must go to the scalar finish too, and a NaN fails every comparison.
+            Vector<long> near = ~(Vector.GreaterThan(f0, reach) & Vector.GreaterThan(f1, reach));
             Vector<double> check = (npx - npx) + (npy - npy) + (npz - npz) + (nvx - nvx) + (nvy - nvy) + (nvz - nvz) +
                 (nwx - nwx) + (nwy - nwy) + (nwz - nwz) + (nax - nax) + (nay - nay) + (naz - naz) + (nsx - nsx) + (nsy - nsy) + (nsz - nsz);
             Vector<long> bad = ~Vector.Equals(check, Vector<double>.Zero);

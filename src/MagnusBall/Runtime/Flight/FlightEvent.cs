@@ -210,8 +210,9 @@ namespace MagnusBall.Flight
 
         /// <summary>
         /// True when a Hermite step between these ends surely holds none of this set's events (landing included): the
-        /// tests <see cref="Scan{TDense}"/> itself starts each search with, on the same numbers, so when this is true a scan
-        /// of the step's segment finds nothing. The flight core asks this before it builds the segment.
+        /// tests <see cref="Scan{TDense}"/> itself starts each search with, on the same numbers wherever this is true (a
+        /// number that is not finite makes it false, and the search forms it again), so when this is true a scan of the
+        /// step's segment finds nothing. The flight core asks this before it builds the segment.
         /// </summary>
         internal bool SurelyClear(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative)
         {

@@ -141,14 +141,14 @@ namespace MagnusBall.Integration
         internal readonly bool StaysClearOf(in Plane plane, CrossingDirection direction)
         {
             var condition = new PlaneDistance(plane, direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0);
-            return StaysClear(condition, condition.Value(Start), condition.Value(Stages.End));
+            return StaysClear(condition, condition.QuickValue(Start), condition.QuickValue(Stages.End));
         }
 
         /// <summary>True when the step provably holds no apex along <paramref name="up"/> (<see cref="TryFindApex"/> would find none).</summary>
         internal readonly bool StaysClearOfApex(in Vector3d up)
         {
             var condition = new UpSpeed(up);
-            return StaysClear(condition, condition.Value(Start), condition.Value(Stages.End));
+            return StaysClear(condition, condition.QuickValue(Start), condition.QuickValue(Stages.End));
         }
 
         /// <summary>
@@ -320,6 +320,10 @@ namespace MagnusBall.Integration
             // The condition at a state.
             double Value(in FlightState state);
 
+            // The same for the quick test (StaysClear), which treats a non-finite value as "not sure": a plane's distance
+            // without Plane.SignedDistance's overflow check, which the search (Value, At) then applies.
+            double QuickValue(in FlightState state);
+
             // The condition at fraction theta of the step: Value(InterpolateFraction(theta)) bit for bit, computing only the
             // part of the state it reads.
             double At(in DormandPrince54Step step, double theta);
@@ -344,6 +348,8 @@ namespace MagnusBall.Integration
 
             public double Value(in FlightState state) => _sign * _plane.SignedDistance(state.Position);
 
+            public double QuickValue(in FlightState state) => _sign * _plane.UncheckedSignedDistance(state.Position);
+
             public double At(in DormandPrince54Step step, double theta) => _sign * _plane.SignedDistance(step.PositionAt(theta));
 
             public double Linear(in StateDerivative coefficient) => _sign * Vector3d.Dot(coefficient.Velocity, _plane.Normal);
@@ -362,6 +368,8 @@ namespace MagnusBall.Integration
             public UpSpeed(in Vector3d up) => _up = up;
 
             public double Value(in FlightState state) => Vector3d.Dot(state.Velocity, _up);
+
+            public double QuickValue(in FlightState state) => Value(state);
 
             public double At(in DormandPrince54Step step, double theta) => Vector3d.Dot(step.VelocityAt(theta), _up);
 

@@ -197,7 +197,7 @@ namespace MagnusBall.Integration
         /// </returns>
         public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
-            CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, out double f0, out double m0, out double f1, out double m1);
+            CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, checkedDistance: true, out double f0, out double m0, out double f1, out double m1);
             return FirstFall(f0, m0, f1, m1, startsFlight, out time);
         }
 
@@ -205,13 +205,15 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void CrossingCubic(
             in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
-            in StateDerivative endDerivative, out double f0, out double m0, out double f1, out double m1)
+            in StateDerivative endDerivative, bool checkedDistance, out double f0, out double m0, out double f1, out double m1)
         {
             double h = end.Time - start.Time;
             double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
-            f0 = sign * plane.SignedDistance(start.Position);
+            // The quick test takes the plain distances: a non-finite one (a plane's point near 1e308 away) makes it answer
+            // "not sure", and the search then forms them with Plane.SignedDistance's overflow-safe path.
+            f0 = sign * (checkedDistance ? plane.SignedDistance(start.Position) : plane.UncheckedSignedDistance(start.Position));
             m0 = sign * plane.NormalSpeed(startDerivative.Velocity) * h;
-            f1 = sign * plane.SignedDistance(end.Position);
+            f1 = sign * (checkedDistance ? plane.SignedDistance(end.Position) : plane.UncheckedSignedDistance(end.Position));
             m1 = sign * plane.NormalSpeed(endDerivative.Velocity) * h;
         }
 
@@ -231,14 +233,16 @@ namespace MagnusBall.Integration
         /// <summary>
         /// True when the segment from these ends surely holds no crossing of <paramref name="plane"/> in the given direction:
         /// <see cref="TryFindCrossing(in Plane, CrossingDirection, bool, out double)"/> would return false (its own first
-        /// test, on the same numbers), so the flight core can skip building the segment.
+        /// test, on the same numbers wherever this can answer true: the plain distances here equal the checked ones the search
+        /// forms whenever they are finite, and a number that is not finite makes this false), so the flight core can skip
+        /// building the segment.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static bool SurelyNoCrossing(
             in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
             in StateDerivative endDerivative)
         {
-            CrossingCubic(plane, direction, start, startDerivative, end, endDerivative, out double f0, out double m0, out double f1, out double m1);
+            CrossingCubic(plane, direction, start, startDerivative, end, endDerivative, checkedDistance: false, out double f0, out double m0, out double f1, out double m1);
             return CannotFall(f0, m0, f1, m1);
         }
 
@@ -393,12 +397,13 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static bool CannotFall(double f0, double m0, double f1, double m1)
         {
-            // A finite sum means four finite numbers (the common case, one test). A sum that is not finite may still come from
-            // four finite numbers near 1e308 (a plane that far away), which must go on to the search: then each is tested
-            // (x - x is 0 for a finite x and NaN otherwise).
-            if (!double.IsFinite(f0 + m0 + f1 + m1) && ((f0 - f0) + (m0 - m0)) + ((f1 - f1) + (m1 - m1)) != 0)
+            // A finite sum means four finite numbers (the common case, one test). Otherwise: not sure. Four finite numbers near
+            // 1e308 (a plane that far away) must go on to the search, and so must a non-finite one, which from finite states
+            // is an overflow of the quick test's plain distance that the search forms again without it (Plane.SignedDistance);
+            // the search itself finds nothing on numbers that are still not finite.
+            if (!double.IsFinite(f0 + m0 + f1 + m1))
             {
-                return true; // FirstFall finds nothing on a cubic that is not finite
+                return false;
             }
 
             // On [0, 1] the Hermite basis functions h00 + h01 = 1 (both in [0, 1]), h10 in [0, 4/27] and h11 in [-4/27, 0]
@@ -430,6 +435,13 @@ namespace MagnusBall.Integration
         private bool FirstFall(double f0, double m0, double f1, double m1, bool fromZero, out double time)
         {
             time = 0;
+            // Nothing to find on a cubic that is not finite (x - x is 0 for a finite x and NaN otherwise); tested only where the
+            // sum is not finite, so the common step pays one test.
+            if (!double.IsFinite(f0 + m0 + f1 + m1) && ((f0 - f0) + (m0 - m0)) + ((f1 - f1) + (m1 - m1)) != 0)
+            {
+                return false;
+            }
+
             if (CannotFall(f0, m0, f1, m1))
             {
                 return false;
