@@ -197,7 +197,15 @@ namespace MagnusBall.Integration
         /// </returns>
         public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
-            CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, checkedDistance: true, out double f0, out double m0, out double f1, out double m1);
+            CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, out double f0, out double m0, out double f1, out double m1);
+            if (!double.IsFinite(f0) || !double.IsFinite(f1))
+            {
+                // The plain distance overflowed (a plane's point near 1e308 away): Plane.SignedDistance's safe form.
+                double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
+                f0 = sign * plane.SignedDistance(Start.Position);
+                f1 = sign * plane.SignedDistance(End.Position);
+            }
+
             return FirstFall(f0, m0, f1, m1, startsFlight, out time);
         }
 
@@ -205,15 +213,15 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void CrossingCubic(
             in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
-            in StateDerivative endDerivative, bool checkedDistance, out double f0, out double m0, out double f1, out double m1)
+            in StateDerivative endDerivative, out double f0, out double m0, out double f1, out double m1)
         {
             double h = end.Time - start.Time;
             double sign = direction == CrossingDirection.AgainstNormal ? 1.0 : -1.0;
-            // The quick test takes the plain distances: a non-finite one (a plane's point near 1e308 away) makes it answer
-            // "not sure", and the search then forms them with Plane.SignedDistance's overflow-safe path.
-            f0 = sign * (checkedDistance ? plane.SignedDistance(start.Position) : plane.UncheckedSignedDistance(start.Position));
+            // The plain distances (no overflow check on the common step): a non-finite one (a plane's point near 1e308 away)
+            // makes the quick test answer "not sure", and the search forms it again with Plane.SignedDistance's safe path.
+            f0 = sign * plane.UncheckedSignedDistance(start.Position);
             m0 = sign * plane.NormalSpeed(startDerivative.Velocity) * h;
-            f1 = sign * (checkedDistance ? plane.SignedDistance(end.Position) : plane.UncheckedSignedDistance(end.Position));
+            f1 = sign * plane.UncheckedSignedDistance(end.Position);
             m1 = sign * plane.NormalSpeed(endDerivative.Velocity) * h;
         }
 
@@ -242,7 +250,7 @@ namespace MagnusBall.Integration
             in Plane plane, CrossingDirection direction, in FlightState start, in StateDerivative startDerivative, in FlightState end,
             in StateDerivative endDerivative)
         {
-            CrossingCubic(plane, direction, start, startDerivative, end, endDerivative, checkedDistance: false, out double f0, out double m0, out double f1, out double m1);
+            CrossingCubic(plane, direction, start, startDerivative, end, endDerivative, out double f0, out double m0, out double f1, out double m1);
             return CannotFall(f0, m0, f1, m1);
         }
 
