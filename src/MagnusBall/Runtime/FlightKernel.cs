@@ -529,16 +529,16 @@ namespace MagnusBall
         // - Every other kernel: one evaluation site, a loop over the four evaluations k2, k3, k4 and the end (Rk4Loop), so
         //   the inlined laws appear once in the code (four inlined copies of Stepanek's laws made a 6 kB method with a
         //   1.6 kB stack frame, and were measured slower).
+        // - Under Mono, the thesis model's common case first takes the straight-line form (Rk4Straight), here rather than
+        //   inside Rk4Unrolled, whose large frame Mono zeroes on every call.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration) =>
-            (_drag.Reads | _lift.Reads | _decay.Reads) == AeroInputs.None
-                ? Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration)
-                : Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
-
-        private FlightState Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
         {
-            // The thesis model's common case (constant drag and lift, no spin decay, still air, spinning, no counter) in
-            // straight-line code; see Rk4Straight.
+            if ((_drag.Reads | _lift.Reads | _decay.Reads) != AeroInputs.None)
+            {
+                return Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
+            }
+
             if (PreferStraightLine && _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && _stillAir && Counter is null
                 && Rk4Straight(state, k1, step, out FlightState end, out endAcceleration))
             {
@@ -546,6 +546,11 @@ namespace MagnusBall
                 return end;
             }
 
+            return Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration);
+        }
+
+        private FlightState Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        {
             double half = 0.5 * step;
             double sixth = step / 6.0;
             bool spins = _decay.IsPresent;
