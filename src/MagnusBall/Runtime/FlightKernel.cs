@@ -599,7 +599,8 @@ namespace MagnusBall
         // chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
         // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, no spin):
         // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
-        // (FlightKernelTests: the same steps with a counter attached, which takes the general code).
+        // (FlightKernelTests: TryRk4StraightLine against the general step). The stages are written out, as in Rk4Unrolled:
+        // a shared stage method would hand its results back through out parameters, which Mono keeps in memory.
         private bool Rk4Straight(in FlightState state, in StateDerivative k1, double step, out FlightState end, out Vector3d endAcceleration)
         {
             double half = 0.5 * step;
