@@ -38,9 +38,12 @@ namespace MagnusBall.DeterminismCheck
 
             for (int i = 0; i < shots; i++)
             {
-                int p = i % presets.Count;
-                int n = (i / presets.Count) % integrators.Length;
-                SportPreset preset = presets[p];
+                // Every preset, and the thesis's model (constant coefficients), which Mono steps through RK4's straight-line
+                // form and CoreCLR through the general one (FlightKernel.PreferStraightLine): the same bits either way.
+                int p = i % (presets.Count + 1);
+                int n = (i / (presets.Count + 1)) % integrators.Length;
+                bool thesis = p == presets.Count;
+                SportPreset preset = presets[thesis ? 0 : p];
                 IIntegrator integrator = integrators[n];
                 bool yUp = Next() < 0.5;
                 Vector3d up = yUp ? Vector3d.UnitY : Vector3d.UnitZ;
@@ -50,7 +53,9 @@ namespace MagnusBall.DeterminismCheck
                 {
                     double h = 800.0 * altitude;
                     double density = Atmosphere.MoistAirDensity(Atmosphere.StandardTemperatureCelsius(h), Atmosphere.StandardPressure(h), 0.5);
-                    model = preset.CreateModel(new Air(density), Gravity.Along(up));
+                    model = thesis
+                        ? FlightModel.Thesis(Ball.Tennis, new Air(density), Gravity.Along(up))
+                        : preset.CreateModel(new Air(density), Gravity.Along(up));
                     models.Add((p, yUp ? 1 : 0, altitude), model);
                 }
 
@@ -109,7 +114,7 @@ namespace MagnusBall.DeterminismCheck
             }
 
             Console.WriteLine(
-                $"determinism: {shots} shots ({presets.Count} presets x {integrators.Length} integrators), {landed} landed, {diverged} diverged, " +
+                $"determinism: {shots} shots ({presets.Count} presets and the thesis model x {integrators.Length} integrators), {landed} landed, {diverged} diverged, " +
                 $"{bounced} bounced, {aimed} aimed ({solved} solved); hash 0x{_hash:X16}");
             return 0;
         }

@@ -15,6 +15,16 @@ namespace MagnusBall
         /// <summary>The test hook behind <see cref="FlightModel.CountedEvaluations"/>: null in every shipped use.</summary>
         internal EvaluationCount? Counter;
 
+        /// <summary>What a drag or lift law that reads nothing (Reads == None: a constant coefficient) is given.</summary>
+        private protected static readonly AeroConditions NoConditions = default;
+
+        /// <summary>
+        /// True under Mono (and Unity's IL2CPP, which carries Mono's class library): take RK4's straight-line form of the
+        /// thesis model's common case (see Rk4Straight). RyuJIT keeps the chain in registers across the branches anyway, and
+        /// measured the straight-line form 3-5 % slower; it folds this constant away. Both forms give the same bits.
+        /// </summary>
+        private protected static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
+
         /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the same as the general formula).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
 
@@ -33,6 +43,13 @@ namespace MagnusBall
         internal abstract FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count);
 
         /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
+        /// <summary>
+        /// Test hook: RK4's straight-line form of the thesis model's common case (see PreferStraightLine), whatever the
+        /// runtime. False where the model's laws or air are not that case or a stage leaves it (then end and endRates are
+        /// not meaningful); true with the RK4 step and its end rates otherwise.
+        /// </summary>
+        internal abstract bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates);
+
         internal abstract FlightState Heun(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
 
         /// <summary>
@@ -286,6 +303,16 @@ namespace MagnusBall
             return current;
         }
 
+        internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
+        {
+            bool applies = _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && (_drag.Reads | _lift.Reads) == AeroInputs.None && _stillAir;
+            end = default;
+            Vector3d acceleration = default;
+            bool taken = applies && Rk4Straight(state, k1, step, out end, out acceleration);
+            endRates = new StateDerivative(end.Velocity, acceleration, default);
+            return taken;
+        }
+
         internal override FlightState Heun(in FlightState state, in StateDerivative k1, double step, out StateDerivative end)
         {
             // Heun.Step's arithmetic: k2 at state.Advance(k1, step), then the average of the slopes.
@@ -502,11 +529,25 @@ namespace MagnusBall
         // - Every other kernel: one evaluation site, a loop over the four evaluations k2, k3, k4 and the end (Rk4Loop), so
         //   the inlined laws appear once in the code (four inlined copies of Stepanek's laws made a 6 kB method with a
         //   1.6 kB stack frame, and were measured slower).
+        // - Under Mono, the thesis model's common case first takes the straight-line form (Rk4Straight), here rather than
+        //   inside Rk4Unrolled, whose large frame Mono zeroes on every call.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration) =>
-            (_drag.Reads | _lift.Reads | _decay.Reads) == AeroInputs.None
-                ? Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration)
-                : Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
+        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        {
+            if ((_drag.Reads | _lift.Reads | _decay.Reads) != AeroInputs.None)
+            {
+                return Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
+            }
+
+            if (PreferStraightLine && _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && _stillAir && Counter is null
+                && Rk4Straight(state, k1, step, out FlightState end, out endAcceleration))
+            {
+                endSpinAcceleration = default;
+                return end;
+            }
+
+            return Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration);
+        }
 
         private FlightState Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
         {
@@ -549,6 +590,85 @@ namespace MagnusBall
             Vector3d we = spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
             Stage(pe, vex, vey, vez, we, ref spinRate, ref inverseSpinRate, out endAcceleration, out endSpinAcceleration);
             return new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
+        }
+
+        // Rk4Unrolled's arithmetic, operation for operation, for constant drag and lift, a constant spin, still air and
+        // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind, Vector3d.LengthOf's
+        // range test, the minimum speed, the lift's spin test) become one test at the end. Mono's JIT keeps no double in a
+        // register from one basic block to the next, so there every branch stored and reloaded the whole dependent
+        // chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
+        // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, no spin):
+        // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
+        // (FlightKernelTests: TryRk4StraightLine against the general step). The stages are written out, as in Rk4Unrolled:
+        // a shared stage method would hand its results back through out parameters, which Mono keeps in memory.
+        private bool Rk4Straight(in FlightState state, in StateDerivative k1, double step, out FlightState end, out Vector3d endAcceleration)
+        {
+            double half = 0.5 * step;
+            double sixth = step / 6.0;
+            Vector3d p = state.Position, w = state.AngularVelocity;
+            double wx = w.X, wy = w.Y, wz = w.Z;
+            double spinRate = Vector3d.LengthOf(wx, wy, wz);
+            double inverseSpinRate = 1.0 / spinRate;
+            // Rates' -_factor C_D speed and _factor C_L speed (1/|w|), whose first products are these (left to right).
+            double dragFactor = -_factor * _drag.Coefficient(NoConditions);
+            double liftFactor = _factor * _lift.Coefficient(NoConditions);
+            double gx = _gravity.X, gy = _gravity.Y, gz = _gravity.Z;
+            double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
+            Vector3d k1a = k1.Acceleration;
+            bool common = spinRate > 0;
+
+            // k2 at y + h/2 k1
+            double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
+            double squared = v2x * v2x + v2y * v2y + v2z * v2z;
+            double speed = System.Math.Sqrt(squared);
+            common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
+            double drag = dragFactor * speed, lift = liftFactor * speed * inverseSpinRate;
+            double a2x = gx + v2x * drag + (wy * v2z - wz * v2y) * lift;
+            double a2y = gy + v2y * drag + (wz * v2x - wx * v2z) * lift;
+            double a2z = gz + v2z * drag + (wx * v2y - wy * v2x) * lift;
+
+            // k3 at y + h/2 k2
+            double v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
+            squared = v3x * v3x + v3y * v3y + v3z * v3z;
+            speed = System.Math.Sqrt(squared);
+            common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
+            drag = dragFactor * speed;
+            lift = liftFactor * speed * inverseSpinRate;
+            double a3x = gx + v3x * drag + (wy * v3z - wz * v3y) * lift;
+            double a3y = gy + v3y * drag + (wz * v3x - wx * v3z) * lift;
+            double a3z = gz + v3z * drag + (wx * v3y - wy * v3x) * lift;
+
+            // k4 at y + h k3
+            double v4x = vx + step * a3x, v4y = vy + step * a3y, v4z = vz + step * a3z;
+            squared = v4x * v4x + v4y * v4y + v4z * v4z;
+            speed = System.Math.Sqrt(squared);
+            common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
+            drag = dragFactor * speed;
+            lift = liftFactor * speed * inverseSpinRate;
+            double a4x = gx + v4x * drag + (wy * v4z - wz * v4y) * lift;
+            double a4y = gy + v4y * drag + (wz * v4x - wx * v4z) * lift;
+            double a4z = gz + v4z * drag + (wx * v4y - wy * v4x) * lift;
+
+            // y + (k1 + 2 (k2 + k3) + k4) h/6, and the end rates
+            Vector3d k1v = k1.Velocity;
+            var pe = new Vector3d(
+                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
+                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
+                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
+            double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
+            double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
+            squared = vex * vex + vey * vey + vez * vez;
+            speed = System.Math.Sqrt(squared);
+            common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
+            drag = dragFactor * speed;
+            lift = liftFactor * speed * inverseSpinRate;
+            endAcceleration = new Vector3d(
+                gx + vex * drag + (wy * vez - wz * vey) * lift,
+                gy + vey * drag + (wz * vex - wx * vez) * lift,
+                gz + vez * drag + (wx * vey - wy * vex) * lift);
+            end = new FlightState(pe, new Vector3d(vex, vey, vez), w + k1.AngularAcceleration * sixth, state.Time + step);
+            return common;
         }
 
         // k2 + k3 is summed as soon as k3 is known (the same sum RungeKutta4 forms, fewer numbers live across the loop).

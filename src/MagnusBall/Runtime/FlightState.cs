@@ -54,7 +54,11 @@ namespace MagnusBall
         }
 
         /// <summary>True when every component, and the time, is finite.</summary>
-        public bool IsFinite => Position.IsFinite && Velocity.IsFinite && AngularVelocity.IsFinite && double.IsFinite(Time);
+        public bool IsFinite
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            get => Position.IsFinite && Velocity.IsFinite && AngularVelocity.IsFinite && double.IsFinite(Time);
+        }
 
         /// <summary>The state advanced along a derivative: <c>this + h * k</c>, with time <c>Time + h</c>.</summary>
         /// <param name="k">The derivative (rate of change of every component).</param>
@@ -105,7 +109,11 @@ namespace MagnusBall
         }
 
         /// <summary>True when every component is finite.</summary>
-        public bool IsFinite => Velocity.IsFinite && Acceleration.IsFinite && AngularAcceleration.IsFinite;
+        public bool IsFinite
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            get => Velocity.IsFinite && Acceleration.IsFinite && AngularAcceleration.IsFinite;
+        }
 
         /// <inheritdoc />
         public override string ToString() => $"dp={Velocity} dv={Acceleration} dw={AngularAcceleration}";

@@ -336,6 +336,49 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void StraightLineRk4_OfTheThesisModel_IsTheGeneralStep_BitForBit()
+        {
+            // Mono takes RK4's straight-line form for the thesis model's common case (FlightKernel.PreferStraightLine),
+            // CoreCLR the general one; this runs the straight-line form on every runtime against the general step and the
+            // reference RK4 on the kernel's derivative. It must take the common case for most states (it would be no use
+            // otherwise) and decline the ones outside it: no spin, wind, a spin-decay law.
+            var still = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var yUp = FlightModel.Thesis(Ball.Soccer, new Air(1.18), Gravity.YUp);
+            int taken = 0, declined = 0;
+            foreach (FlightModel model in new[] { still, yUp })
+            {
+                foreach (FlightState state in States())
+                {
+                    foreach (double step in new[] { 1.0 / 240, 0.03, 1e-9 })
+                    {
+                        StateDerivative k1 = model.Derivative(state);
+                        FlightState general = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative generalEnd, out _);
+                        if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
+                        {
+                            declined++;
+                            continue;
+                        }
+
+                        taken++;
+                        AssertSame(straight, general, state);
+                        AssertSame(straight, ReferenceRk4(model, state, k1, step, s => model.Derivative(s)), state);
+                        AssertSame(straightEnd.Acceleration, generalEnd.Acceleration, state);
+                        AssertSame(straightEnd.AngularAcceleration, generalEnd.AngularAcceleration, state);
+                    }
+                }
+            }
+
+            Assert.That(taken, Is.GreaterThan(0.9 * (taken + declined)), $"taken {taken}, declined {declined}");
+            var spinless = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), default);
+            var spinning = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            Assert.That(still.Kernel.TryRk4StraightLine(spinless, still.Derivative(spinless), 1.0 / 240, out _, out _), Is.False, "no spin");
+            var windy = FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(3, 0, 0)), Gravity.ZUp);
+            Assert.That(windy.Kernel.TryRk4StraightLine(spinning, windy.Derivative(spinning), 1.0 / 240, out _, out _), Is.False, "wind");
+            var decaying = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, ConstantDrag.CrossLindseyTennis, new ConstantLift(0.2), new ExponentialSpinDecay(3));
+            Assert.That(decaying.Kernel.TryRk4StraightLine(spinning, decaying.Derivative(spinning), 1.0 / 240, out _, out _), Is.False, "spin decay");
+        }
+
+        [Test]
         public void Rk4Steps_EqualsOneStepAtATime_BitForBit()
         {
             var model = new FlightModel(Ball.Tennis, new Air(1.21).WithLogarithmicWind(new Vector3d(5, 0, 0)), Gravity.ZUp,
