@@ -249,6 +249,27 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void ThePreview_DrawsNothing_BeforeALaunchOrAnAim()
+        {
+            // A new LineRenderer has two points in Unity, (0, 0, 0) and (0, 0, 1) (so has the stub's): a preview
+            // that kept them would draw a stray 1 m line at the world origin until the first launch.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset);
+            var holder = new GameObject("line");
+            LineRenderer line = holder.AddComponent<LineRenderer>();
+            Assert.That(line.positionCount, Is.EqualTo(2), "Unity's new LineRenderer");
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+            for (int i = 0; i < 3; i++)
+            {
+                Call(preview, "LateUpdate");
+            }
+
+            Assert.That(preview.Predictions, Is.EqualTo(0));
+            Assert.That(preview.PointCount, Is.EqualTo(0));
+            Assert.That(line.positionCount, Is.EqualTo(0), "nothing drawn before a launch or a Show");
+        }
+
+        [Test]
         public void ThePreview_AndTheFlight_AllocateNothingPerFrame()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true);

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Reflection;
@@ -129,6 +130,49 @@ namespace MagnusBall.UnityScripts.Tests
             var stub = new HashSet<string>(Signatures(), StringComparer.Ordinal);
             List<string> stale = Reference().Where(r => !stub.Contains(r)).ToList();
             Assert.That(stale, Is.Empty, "lines of unity-api-reference.txt the stub no longer has:\n" + string.Join("\n", stale));
+        }
+
+        [Test]
+        public void Vector3ToString_IsF2InTheInvariantCulture_WhateverTheMachinesCulture()
+        {
+            // UnityCsReference 6000.0, Runtime/Export/Math/Vector3.cs: ToString() is ToString("F2",
+            // CultureInfo.InvariantCulture.NumberFormat). The stub used the current culture: "(1,50, ...)" in German.
+            CultureInfo before = CultureInfo.CurrentCulture;
+            try
+            {
+                CultureInfo.CurrentCulture = new CultureInfo("de-DE");
+                Assert.That(new UnityEngine.Vector3(1.5f, -2f, 0.254f).ToString(), Is.EqualTo("(1.50, -2.00, 0.25)"));
+            }
+            finally
+            {
+                CultureInfo.CurrentCulture = before;
+            }
+        }
+
+        [Test]
+        public void RendererMaterialsSetter_IsSharedMaterialsSetter()
+        {
+            // Unity's Renderer.material and sharedMaterial setters both call the same native SetMaterial
+            // (Runtime/Export/Graphics/GraphicsRenderers.bindings.cs), so a later read of .material cannot tell
+            // which one assigned the material: both read a copy.
+            var shared = new UnityEngine.Material((UnityEngine.Shader)null!);
+            UnityEngine.MeshRenderer byMaterial = new UnityEngine.GameObject().AddComponent<UnityEngine.MeshRenderer>();
+            UnityEngine.MeshRenderer byShared = new UnityEngine.GameObject().AddComponent<UnityEngine.MeshRenderer>();
+            byMaterial.material = shared;
+            byShared.sharedMaterial = shared;
+            Assert.That(ReferenceEquals(byMaterial.material, shared), Is.EqualTo(ReferenceEquals(byShared.material, shared)));
+            Assert.That(ReferenceEquals(byMaterial.material, shared), Is.False, "read through .material: the renderer's own copy");
+        }
+
+        [Test]
+        public void TheKeyboardsIndexer_ThrowsForAKeyWithNoControl()
+        {
+            // The Input System's Keyboard[Key] (Devices/Keyboard.cs) throws ArgumentOutOfRangeException(nameof(key))
+            // for Key.None; the stub returned a control.
+            var keyboard = new UnityEngine.InputSystem.Keyboard();
+            var thrown = Assert.Throws<ArgumentOutOfRangeException>(() => _ = keyboard[UnityEngine.InputSystem.Key.None]);
+            Assert.That(thrown!.ParamName, Is.EqualTo("key"));
+            Assert.That(keyboard[UnityEngine.InputSystem.Key.Space].keyCode, Is.EqualTo(UnityEngine.InputSystem.Key.Space));
         }
 
         [Test]

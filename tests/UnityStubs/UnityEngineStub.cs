@@ -224,11 +224,9 @@ namespace UnityEngine
                 _instantiated = true;
                 return _material;
             }
-            set
-            {
-                _material = value;
-                _instantiated = true;
-            }
+            // Unity: the same native SetMaterial as sharedMaterial's setter (Renderer.material { set }), so
+            // what a later read of .material does cannot depend on which setter assigned it.
+            set => sharedMaterial = value;
         }
 
         public Material sharedMaterial
@@ -250,8 +248,9 @@ namespace UnityEngine
     {
         // Unity keeps the points natively; the stub keeps a buffer that only grows, so setting
         // positionCount allocates no managed memory once the buffer is large enough (as in Unity: none).
-        private Vector3[] _positions = new Vector3[0];
-        private int _count;
+        // Unity: a new LineRenderer has two points, (0, 0, 0) and (0, 0, 1), until a script sets positionCount.
+        private Vector3[] _positions = { new Vector3(0, 0, 0), new Vector3(0, 0, 1) };
+        private int _count = 2;
 
         public int positionCount
         {
@@ -321,7 +320,8 @@ namespace UnityEngine
 
         public Vector3 position { get; set; }
 
-        public float maxAngularVelocity { get; set; } = 7;
+        // Unity 6: a new body takes Physics.defaultMaxAngularSpeed, 50 rad/s in a new project (7 before Unity 2022).
+        public float maxAngularVelocity { get; set; } = 50;
 
         public void AddForce(Vector3 force) => AddForce(force, ForceMode.Force);
 
@@ -397,7 +397,8 @@ namespace UnityEngine
 
         internal Vector3 StubTimes(float s) => new Vector3(x * s, y * s, z * s);
 
-        public override string ToString() => $"({x:F2}, {y:F2}, {z:F2})";
+        // Unity: "F2" in the invariant culture, whatever the machine's culture.
+        public override string ToString() => FormattableString.Invariant($"({x:F2}, {y:F2}, {z:F2})");
     }
 
     public struct Quaternion
