@@ -176,6 +176,40 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void TransformPosition_IsTheWorldPosition_ThroughItsParents()
+        {
+            // Unity: position is the world position, localPosition the position in the parent's space (scaled,
+            // rotated, translated by it); without a parent they are one. The stub kept them as two unrelated values.
+            var parent = new UnityEngine.GameObject("parent").transform;
+            parent.position = new UnityEngine.Vector3(1, 2, 3);
+            parent.rotation = UnityEngine.Quaternion.AngleAxis(90, new UnityEngine.Vector3(0, 1, 0)); // +z turns to +x
+            parent.localScale = new UnityEngine.Vector3(2, 2, 2);
+            Assert.That(parent.localPosition, Is.EqualTo(parent.position), "a root's position is its localPosition");
+
+            var child = new UnityEngine.GameObject("child").transform;
+            child.SetParent(parent, false);
+            child.localPosition = new UnityEngine.Vector3(0, 0, 1);
+            // (1, 2, 3) + R (0, 0, 2) = (3, 2, 3); 1e-6: float rounding of sin/cos 45 degrees on numbers near 3.
+            AssertNear(child.position, 3, 2, 3, "the child's world position");
+            child.position = new UnityEngine.Vector3(1, 4, 3);
+            AssertNear(child.localPosition, 0, 1, 0, "set in world space, kept in the parent's");
+
+            var other = new UnityEngine.GameObject("other").transform;
+            other.position = new UnityEngine.Vector3(5, 0, 0);
+            other.SetParent(parent, true);
+            AssertNear(other.position, 5, 0, 0, "worldPositionStays keeps the world position");
+            // R^-1 ((5, 0, 0) - (1, 2, 3)) / 2 = R^-1 (4, -2, -3) / 2 = (3, -2, 4) / 2.
+            AssertNear(other.localPosition, 1.5f, -1, 2, "and changes the local one");
+        }
+
+        private static void AssertNear(UnityEngine.Vector3 v, float x, float y, float z, string what)
+        {
+            Assert.That(v.x, Is.EqualTo(x).Within(1e-6), what + ": x");
+            Assert.That(v.y, Is.EqualTo(y).Within(1e-6), what + ": y");
+            Assert.That(v.z, Is.EqualTo(z).Within(1e-6), what + ": z");
+        }
+
+        [Test]
         public void TheStubsTestHook_IsNotVisibleToScripts()
         {
             Type hook = Stub.GetType("MagnusBall.UnityStubs.StubControl", throwOnError: true)!;
