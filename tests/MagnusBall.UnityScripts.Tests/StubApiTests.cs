@@ -176,6 +176,17 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void CollisionGetContact_OutOfRange_IsAnArgumentOutOfRangeException()
+        {
+            // Modules/Physics/Managed/Collision.cs checks the index itself; the stub let the array throw
+            // IndexOutOfRangeException, which a script catching Unity's exception would not catch.
+            UnityEngine.Collision collision = MagnusBall.UnityStubs.StubControl.Collision(new UnityEngine.Vector3(0, 0, 0), new UnityEngine.Vector3(0, 1, 0));
+            Assert.That(collision.GetContact(0).normal.y, Is.EqualTo(1f));
+            Assert.Throws<ArgumentOutOfRangeException>(() => collision.GetContact(1));
+            Assert.Throws<ArgumentOutOfRangeException>(() => collision.GetContact(-1));
+        }
+
+        [Test]
         public void TransformPosition_IsTheWorldPosition_ThroughItsParents()
         {
             // Unity: position is the world position, localPosition the position in the parent's space (scaled,

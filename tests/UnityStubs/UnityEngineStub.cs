@@ -413,7 +413,11 @@ namespace UnityEngine
 
         public int contactCount => StubContacts.Length;
 
-        public ContactPoint GetContact(int index) => StubContacts[index];
+        // Unity: an index outside [0, contactCount) is an ArgumentOutOfRangeException (Collision.cs), not an array's.
+        public ContactPoint GetContact(int index) =>
+            index >= 0 && index < StubContacts.Length
+                ? StubContacts[index]
+                : throw new ArgumentOutOfRangeException($"Cannot get contact at index {index}. There are {StubContacts.Length} contact(s).");
     }
 
     public class Physics
