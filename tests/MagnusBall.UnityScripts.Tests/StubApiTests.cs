@@ -175,6 +175,42 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(keyboard[UnityEngine.InputSystem.Key.Space].keyCode, Is.EqualTo(UnityEngine.InputSystem.Key.Space));
         }
 
+        private sealed class DeltaRecorder : UnityEngine.MonoBehaviour
+        {
+            public float InUpdate, InFixedUpdate;
+
+            private void Update() => InUpdate = UnityEngine.Time.deltaTime;
+
+            private void FixedUpdate() => InFixedUpdate = UnityEngine.Time.deltaTime;
+        }
+
+        [Test]
+        [NonParallelizable] // Time is static, as in Unity
+        public void TimeDeltaTime_InsideFixedUpdate_IsFixedDeltaTime()
+        {
+            // Unity's Time.deltaTime "when called from inside FixedUpdate returns Time.fixedDeltaTime"; the stub
+            // returned the frame time there (no script here reads it in FixedUpdate yet; one that did would be wrong).
+            float before = UnityEngine.Time.fixedDeltaTime, frame = MagnusBall.UnityStubs.StubControl.DeltaTime;
+            try
+            {
+                UnityEngine.Time.fixedDeltaTime = 0.02f;
+                MagnusBall.UnityStubs.StubControl.DeltaTime = 1f / 144f;
+                DeltaRecorder script = new UnityEngine.GameObject().AddComponent<DeltaRecorder>();
+                UnityLoop.Call(script, "Update");
+                UnityLoop.Call(script, "FixedUpdate");
+                Assert.That(script.InUpdate, Is.EqualTo(1f / 144f));
+                Assert.That(script.InFixedUpdate, Is.EqualTo(0.02f));
+                UnityLoop.Message(script, "FixedUpdate")();
+                Assert.That(script.InFixedUpdate, Is.EqualTo(0.02f), "through the allocation-free delegate too");
+                Assert.That(UnityEngine.Time.deltaTime, Is.EqualTo(1f / 144f), "and the frame time again outside it");
+            }
+            finally
+            {
+                UnityEngine.Time.fixedDeltaTime = before;
+                MagnusBall.UnityStubs.StubControl.DeltaTime = frame;
+            }
+        }
+
         [Test]
         public void CollisionGetContact_OutOfRange_IsAnArgumentOutOfRangeException()
         {

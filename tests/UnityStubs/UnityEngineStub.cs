@@ -532,7 +532,8 @@ namespace UnityEngine
 
     public class Time
     {
-        public static float deltaTime => StubControl.DeltaTime;
+        // Unity: inside FixedUpdate, deltaTime is fixedDeltaTime.
+        public static float deltaTime => StubControl.InFixedUpdate ? fixedDeltaTime : StubControl.DeltaTime;
 
         public static float fixedDeltaTime { get; set; } = 0.02f;
     }
