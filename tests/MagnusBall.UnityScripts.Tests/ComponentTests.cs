@@ -197,6 +197,15 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(e!.ParamName, Is.EqualTo("topspinRpm"));
             var e2 = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(float.PositiveInfinity, 0, 0), SpinVector));
             Assert.That(e2!.ParamName, Is.EqualTo("start"));
+            // A vertical launch with spin has no spin axis across the flight: refused as the velocity (it named the
+            // core helpers' "direction" or "up", parameters the caller never gave).
+            var e4 = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(0, 20, 0), 2000f, 0f));
+            Assert.That(e4!.ParamName, Is.EqualTo("velocity"));
+            var e5 = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(0, -5, 0), 0f, -800f));
+            Assert.That(e5!.ParamName, Is.EqualTo("velocity"));
+            var e6 = Assert.Throws<ArgumentOutOfRangeException>(() => MagnusBallFlight.SpinByEffect(new Vector3d(20, 3, 0), double.NaN, 0));
+            Assert.That(e6!.ParamName, Is.EqualTo("topspinRpm"), "a NaN rate added no spin, silently");
+            Assert.That(MagnusBallFlight.SpinByEffect(new Vector3d(0, 20, 0), 0, 0), Is.EqualTo(Vector3d.Zero), "no spin: any velocity");
             flight.fixedStep = -1;
             var e3 = Assert.Throws<ArgumentOutOfRangeException>(() => flight.ApplySettings());
             Assert.That(e3!.ParamName, Is.EqualTo("fixedStep"));
@@ -246,6 +255,27 @@ namespace MagnusBall.UnityScripts.Tests
             // One prediction for the aim, one at the launch, one per bounce; none in the other frames.
             Assert.That(frames, Is.GreaterThan(100));
             Assert.That(preview.Predictions, Is.EqualTo(2 + bounces.Count));
+        }
+
+        [Test]
+        public void ThePreview_DrawsNothing_BeforeALaunchOrAnAim()
+        {
+            // A new LineRenderer has two points in Unity, (0, 0, 0) and (0, 0, 1) (so has the stub's): a preview
+            // that kept them would draw a stray 1 m line at the world origin until the first launch.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset);
+            var holder = new GameObject("line");
+            LineRenderer line = holder.AddComponent<LineRenderer>();
+            Assert.That(line.positionCount, Is.EqualTo(2), "Unity's new LineRenderer");
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+            for (int i = 0; i < 3; i++)
+            {
+                Call(preview, "LateUpdate");
+            }
+
+            Assert.That(preview.Predictions, Is.EqualTo(0));
+            Assert.That(preview.PointCount, Is.EqualTo(0));
+            Assert.That(line.positionCount, Is.EqualTo(0), "nothing drawn before a launch or a Show");
         }
 
         [Test]

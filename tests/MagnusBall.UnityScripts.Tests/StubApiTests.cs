@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Reflection;
@@ -129,6 +130,130 @@ namespace MagnusBall.UnityScripts.Tests
             var stub = new HashSet<string>(Signatures(), StringComparer.Ordinal);
             List<string> stale = Reference().Where(r => !stub.Contains(r)).ToList();
             Assert.That(stale, Is.Empty, "lines of unity-api-reference.txt the stub no longer has:\n" + string.Join("\n", stale));
+        }
+
+        [Test]
+        public void Vector3ToString_IsF2InTheInvariantCulture_WhateverTheMachinesCulture()
+        {
+            // UnityCsReference 6000.0, Runtime/Export/Math/Vector3.cs: ToString() is ToString("F2",
+            // CultureInfo.InvariantCulture.NumberFormat). The stub used the current culture: "(1,50, ...)" in German.
+            CultureInfo before = CultureInfo.CurrentCulture;
+            try
+            {
+                CultureInfo.CurrentCulture = new CultureInfo("de-DE");
+                Assert.That(new UnityEngine.Vector3(1.5f, -2f, 0.254f).ToString(), Is.EqualTo("(1.50, -2.00, 0.25)"));
+            }
+            finally
+            {
+                CultureInfo.CurrentCulture = before;
+            }
+        }
+
+        [Test]
+        public void RendererMaterialsSetter_IsSharedMaterialsSetter()
+        {
+            // Unity's Renderer.material and sharedMaterial setters both call the same native SetMaterial
+            // (Runtime/Export/Graphics/GraphicsRenderers.bindings.cs), so a later read of .material cannot tell
+            // which one assigned the material: both read a copy.
+            var shared = new UnityEngine.Material((UnityEngine.Shader)null!);
+            UnityEngine.MeshRenderer byMaterial = new UnityEngine.GameObject().AddComponent<UnityEngine.MeshRenderer>();
+            UnityEngine.MeshRenderer byShared = new UnityEngine.GameObject().AddComponent<UnityEngine.MeshRenderer>();
+            byMaterial.material = shared;
+            byShared.sharedMaterial = shared;
+            Assert.That(ReferenceEquals(byMaterial.material, shared), Is.EqualTo(ReferenceEquals(byShared.material, shared)));
+            Assert.That(ReferenceEquals(byMaterial.material, shared), Is.False, "read through .material: the renderer's own copy");
+        }
+
+        [Test]
+        public void TheKeyboardsIndexer_ThrowsForAKeyWithNoControl()
+        {
+            // The Input System's Keyboard[Key] (Devices/Keyboard.cs) throws ArgumentOutOfRangeException(nameof(key))
+            // for Key.None; the stub returned a control.
+            var keyboard = new UnityEngine.InputSystem.Keyboard();
+            var thrown = Assert.Throws<ArgumentOutOfRangeException>(() => _ = keyboard[UnityEngine.InputSystem.Key.None]);
+            Assert.That(thrown!.ParamName, Is.EqualTo("key"));
+            Assert.That(keyboard[UnityEngine.InputSystem.Key.Space].keyCode, Is.EqualTo(UnityEngine.InputSystem.Key.Space));
+        }
+
+        private sealed class DeltaRecorder : UnityEngine.MonoBehaviour
+        {
+            public float InUpdate, InFixedUpdate;
+
+            private void Update() => InUpdate = UnityEngine.Time.deltaTime;
+
+            private void FixedUpdate() => InFixedUpdate = UnityEngine.Time.deltaTime;
+        }
+
+        [Test]
+        [NonParallelizable] // Time is static, as in Unity
+        public void TimeDeltaTime_InsideFixedUpdate_IsFixedDeltaTime()
+        {
+            // Unity's Time.deltaTime "when called from inside FixedUpdate returns Time.fixedDeltaTime"; the stub
+            // returned the frame time there (no script here reads it in FixedUpdate yet; one that did would be wrong).
+            float before = UnityEngine.Time.fixedDeltaTime, frame = MagnusBall.UnityStubs.StubControl.DeltaTime;
+            try
+            {
+                UnityEngine.Time.fixedDeltaTime = 0.02f;
+                MagnusBall.UnityStubs.StubControl.DeltaTime = 1f / 144f;
+                DeltaRecorder script = new UnityEngine.GameObject().AddComponent<DeltaRecorder>();
+                UnityLoop.Call(script, "Update");
+                UnityLoop.Call(script, "FixedUpdate");
+                Assert.That(script.InUpdate, Is.EqualTo(1f / 144f));
+                Assert.That(script.InFixedUpdate, Is.EqualTo(0.02f));
+                UnityLoop.Message(script, "FixedUpdate")();
+                Assert.That(script.InFixedUpdate, Is.EqualTo(0.02f), "through the allocation-free delegate too");
+                Assert.That(UnityEngine.Time.deltaTime, Is.EqualTo(1f / 144f), "and the frame time again outside it");
+            }
+            finally
+            {
+                UnityEngine.Time.fixedDeltaTime = before;
+                MagnusBall.UnityStubs.StubControl.DeltaTime = frame;
+            }
+        }
+
+        [Test]
+        public void CollisionGetContact_OutOfRange_IsAnArgumentOutOfRangeException()
+        {
+            // Modules/Physics/Managed/Collision.cs checks the index itself; the stub let the array throw
+            // IndexOutOfRangeException, which a script catching Unity's exception would not catch.
+            UnityEngine.Collision collision = MagnusBall.UnityStubs.StubControl.Collision(new UnityEngine.Vector3(0, 0, 0), new UnityEngine.Vector3(0, 1, 0));
+            Assert.That(collision.GetContact(0).normal.y, Is.EqualTo(1f));
+            Assert.Throws<ArgumentOutOfRangeException>(() => collision.GetContact(1));
+            Assert.Throws<ArgumentOutOfRangeException>(() => collision.GetContact(-1));
+        }
+
+        [Test]
+        public void TransformPosition_IsTheWorldPosition_ThroughItsParents()
+        {
+            // Unity: position is the world position, localPosition the position in the parent's space (scaled,
+            // rotated, translated by it); without a parent they are one. The stub kept them as two unrelated values.
+            var parent = new UnityEngine.GameObject("parent").transform;
+            parent.position = new UnityEngine.Vector3(1, 2, 3);
+            parent.rotation = UnityEngine.Quaternion.AngleAxis(90, new UnityEngine.Vector3(0, 1, 0)); // +z turns to +x
+            parent.localScale = new UnityEngine.Vector3(2, 2, 2);
+            Assert.That(parent.localPosition, Is.EqualTo(parent.position), "a root's position is its localPosition");
+
+            var child = new UnityEngine.GameObject("child").transform;
+            child.SetParent(parent, false);
+            child.localPosition = new UnityEngine.Vector3(0, 0, 1);
+            // (1, 2, 3) + R (0, 0, 2) = (3, 2, 3); 1e-6: float rounding of sin/cos 45 degrees on numbers near 3.
+            AssertNear(child.position, 3, 2, 3, "the child's world position");
+            child.position = new UnityEngine.Vector3(1, 4, 3);
+            AssertNear(child.localPosition, 0, 1, 0, "set in world space, kept in the parent's");
+
+            var other = new UnityEngine.GameObject("other").transform;
+            other.position = new UnityEngine.Vector3(5, 0, 0);
+            other.SetParent(parent, true);
+            AssertNear(other.position, 5, 0, 0, "worldPositionStays keeps the world position");
+            // R^-1 ((5, 0, 0) - (1, 2, 3)) / 2 = R^-1 (4, -2, -3) / 2 = (3, -2, 4) / 2.
+            AssertNear(other.localPosition, 1.5f, -1, 2, "and changes the local one");
+        }
+
+        private static void AssertNear(UnityEngine.Vector3 v, float x, float y, float z, string what)
+        {
+            Assert.That(v.x, Is.EqualTo(x).Within(1e-6), what + ": x");
+            Assert.That(v.y, Is.EqualTo(y).Within(1e-6), what + ": y");
+            Assert.That(v.z, Is.EqualTo(z).Within(1e-6), what + ": z");
         }
 
         [Test]

@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Reflection;
+using MagnusBall.UnityStubs;
 using NUnit.Framework;
 using UnityEngine;
 
@@ -13,12 +14,40 @@ namespace MagnusBall.UnityScripts.Tests
         public static void Call(object script, string message, params object[] arguments)
         {
             MethodInfo? method = script.GetType().GetMethod(message, BindingFlags.Instance | BindingFlags.NonPublic | BindingFlags.Public);
-            method?.Invoke(script, arguments.Length == 0 ? null : arguments);
+            bool fixedUpdate = message == "FixedUpdate";
+            StubControl.InFixedUpdate = fixedUpdate; // Time.deltaTime is Time.fixedDeltaTime inside FixedUpdate
+            try
+            {
+                method?.Invoke(script, arguments.Length == 0 ? null : arguments);
+            }
+            finally
+            {
+                StubControl.InFixedUpdate = false;
+            }
         }
 
         /// <summary>A message as a delegate: calling it allocates nothing (MethodInfo.Invoke would).</summary>
-        public static Action Message(object script, string message) =>
-            (Action)Delegate.CreateDelegate(typeof(Action), script, script.GetType().GetMethod(message, BindingFlags.Instance | BindingFlags.NonPublic)!);
+        public static Action Message(object script, string message)
+        {
+            var call = (Action)Delegate.CreateDelegate(typeof(Action), script, script.GetType().GetMethod(message, BindingFlags.Instance | BindingFlags.NonPublic)!);
+            if (message != "FixedUpdate")
+            {
+                return call;
+            }
+
+            return () =>
+            {
+                StubControl.InFixedUpdate = true; // Time.deltaTime is Time.fixedDeltaTime inside FixedUpdate
+                try
+                {
+                    call();
+                }
+                finally
+                {
+                    StubControl.InFixedUpdate = false;
+                }
+            };
+        }
 
         /// <summary>AddComponent, then Awake, as Unity does.</summary>
         public static T Add<T>(GameObject holder)

@@ -29,8 +29,12 @@ namespace UnityEngine.InputSystem
 
         private readonly KeyControl[] _keys = new KeyControl[128];
 
-        // The package keeps one control per key; so does the stub (reading a key allocates nothing).
-        public KeyControl this[Key key] => _keys[(int)key] ?? (_keys[(int)key] = new KeyControl { keyCode = key });
+        // The package keeps one control per key; so does the stub (reading a key allocates nothing). As in the
+        // package, a key with no control (Key.None, or past the last key) throws ArgumentOutOfRangeException.
+        public KeyControl this[Key key] =>
+            key > Key.None && (int)key < _keys.Length
+                ? _keys[(int)key] ?? (_keys[(int)key] = new KeyControl { keyCode = key })
+                : throw new System.ArgumentOutOfRangeException(nameof(key));
     }
 }
 

@@ -14,6 +14,12 @@ namespace MagnusBall.UnityStubs
         /// <summary>What <c>Time.deltaTime</c> returns (Unity: get-only, set by the engine each frame).</summary>
         internal static float DeltaTime = 1f / 60f;
 
+        /// <summary>
+        /// True while a test calls a script's FixedUpdate (UnityLoop does): <c>Time.deltaTime</c> then returns
+        /// <c>Time.fixedDeltaTime</c>, as Unity's does inside FixedUpdate.
+        /// </summary>
+        internal static bool InFixedUpdate;
+
         /// <summary>Keys <c>Input.GetKeyDown</c> reports as pressed this frame (the Input Manager).</summary>
         internal static readonly HashSet<KeyCode> LegacyKeysDown = new HashSet<KeyCode>();
 

@@ -136,18 +136,52 @@ namespace UnityEngine
 
         internal Transform(GameObject owner) => StubGameObject = owner;
 
-        public Vector3 position { get; set; }
+        // Unity keeps the local position, rotation and scale; the world position and rotation are the parents'
+        // transforms applied in turn (the same as Unity's localToWorldMatrix for a point), so for a transform
+        // without a parent position is localPosition and rotation is the local rotation.
+        private Vector3 _localPosition;
+        private Quaternion _localRotation = Quaternion.identity;
 
-        public Vector3 localPosition { get; set; }
+        public Vector3 position
+        {
+            get => _parent == null ? _localPosition : _parent.StubToWorld(_localPosition);
+            set => _localPosition = _parent == null ? value : _parent.StubToLocal(value);
+        }
+
+        public Vector3 localPosition
+        {
+            get => _localPosition;
+            set => _localPosition = value;
+        }
 
         public Vector3 localScale { get; set; } = new Vector3(1, 1, 1);
 
-        public Quaternion rotation { get; set; } = Quaternion.identity;
+        public Quaternion rotation
+        {
+            get => _parent == null ? _localRotation : _parent.rotation * _localRotation;
+            set => _localRotation = _parent == null ? value : _parent.rotation.StubInverse() * value;
+        }
 
         public Transform parent
         {
             get => _parent;
             set => SetParent(value);
+        }
+
+        // A point in this transform's local space, in world space: scale, rotate, translate, then the parent's.
+        internal Vector3 StubToWorld(Vector3 local)
+        {
+            Vector3 s = localScale;
+            Vector3 inParent = _localRotation.StubRotate(new Vector3(local.x * s.x, local.y * s.y, local.z * s.z)).StubPlus(_localPosition);
+            return _parent == null ? inParent : _parent.StubToWorld(inParent);
+        }
+
+        internal Vector3 StubToLocal(Vector3 world)
+        {
+            Vector3 inParent = _parent == null ? world : _parent.StubToLocal(world);
+            Vector3 r = _localRotation.StubInverse().StubRotate(inParent.StubPlus(_localPosition.StubTimes(-1)));
+            Vector3 s = localScale;
+            return new Vector3(r.x / s.x, r.y / s.y, r.z / s.z);
         }
 
         public int childCount => StubChildren.Count;
@@ -169,11 +203,20 @@ namespace UnityEngine
 
         public void SetParent(Transform p) => SetParent(p, true);
 
+        // worldPositionStays: the world position and rotation are kept (the local ones change); Unity also adjusts
+        // localScale to keep the world scale, which the stub does not (no script here reparents a scaled object so).
         public void SetParent(Transform parent, bool worldPositionStays)
         {
+            Vector3 world = position;
+            Quaternion worldRotation = rotation;
             _parent?.StubChildren.Remove(this);
             _parent = parent;
             parent?.StubChildren.Add(this);
+            if (worldPositionStays)
+            {
+                position = world;
+                rotation = worldRotation;
+            }
         }
     }
 
@@ -224,11 +267,9 @@ namespace UnityEngine
                 _instantiated = true;
                 return _material;
             }
-            set
-            {
-                _material = value;
-                _instantiated = true;
-            }
+            // Unity: the same native SetMaterial as sharedMaterial's setter (Renderer.material { set }), so
+            // what a later read of .material does cannot depend on which setter assigned it.
+            set => sharedMaterial = value;
         }
 
         public Material sharedMaterial
@@ -250,8 +291,9 @@ namespace UnityEngine
     {
         // Unity keeps the points natively; the stub keeps a buffer that only grows, so setting
         // positionCount allocates no managed memory once the buffer is large enough (as in Unity: none).
-        private Vector3[] _positions = new Vector3[0];
-        private int _count;
+        // Unity: a new LineRenderer has two points, (0, 0, 0) and (0, 0, 1), until a script sets positionCount.
+        private Vector3[] _positions = { new Vector3(0, 0, 0), new Vector3(0, 0, 1) };
+        private int _count = 2;
 
         public int positionCount
         {
@@ -321,7 +363,8 @@ namespace UnityEngine
 
         public Vector3 position { get; set; }
 
-        public float maxAngularVelocity { get; set; } = 7;
+        // Unity 6: a new body takes Physics.defaultMaxAngularSpeed, 50 rad/s in a new project (7 before Unity 2022).
+        public float maxAngularVelocity { get; set; } = 50;
 
         public void AddForce(Vector3 force) => AddForce(force, ForceMode.Force);
 
@@ -370,7 +413,11 @@ namespace UnityEngine
 
         public int contactCount => StubContacts.Length;
 
-        public ContactPoint GetContact(int index) => StubContacts[index];
+        // Unity: an index outside [0, contactCount) is an ArgumentOutOfRangeException (Collision.cs), not an array's.
+        public ContactPoint GetContact(int index) =>
+            index >= 0 && index < StubContacts.Length
+                ? StubContacts[index]
+                : throw new ArgumentOutOfRangeException($"Cannot get contact at index {index}. There are {StubContacts.Length} contact(s).");
     }
 
     public class Physics
@@ -397,7 +444,8 @@ namespace UnityEngine
 
         internal Vector3 StubTimes(float s) => new Vector3(x * s, y * s, z * s);
 
-        public override string ToString() => $"({x:F2}, {y:F2}, {z:F2})";
+        // Unity: "F2" in the invariant culture, whatever the machine's culture.
+        public override string ToString() => FormattableString.Invariant($"({x:F2}, {y:F2}, {z:F2})");
     }
 
     public struct Quaternion
@@ -416,6 +464,19 @@ namespace UnityEngine
         }
 
         public static Quaternion identity => new Quaternion(0, 0, 0, 1);
+
+        // The conjugate: the inverse of a unit rotation.
+        internal Quaternion StubInverse() => new Quaternion(-x, -y, -z, w);
+
+        // v rotated by this unit quaternion: v + 2w (q x v) + 2 q x (q x v), q = (x, y, z).
+        internal Vector3 StubRotate(Vector3 v)
+        {
+            float tx = 2 * (y * v.z - z * v.y), ty = 2 * (z * v.x - x * v.z), tz = 2 * (x * v.y - y * v.x);
+            return new Vector3(
+                v.x + w * tx + (y * tz - z * ty),
+                v.y + w * ty + (z * tx - x * tz),
+                v.z + w * tz + (x * ty - y * tx));
+        }
 
         public static Quaternion AngleAxis(float angle, Vector3 axis)
         {
@@ -471,7 +532,8 @@ namespace UnityEngine
 
     public class Time
     {
-        public static float deltaTime => StubControl.DeltaTime;
+        // Unity: inside FixedUpdate, deltaTime is fixedDeltaTime.
+        public static float deltaTime => StubControl.InFixedUpdate ? fixedDeltaTime : StubControl.DeltaTime;
 
         public static float fixedDeltaTime { get; set; } = 0.02f;
     }

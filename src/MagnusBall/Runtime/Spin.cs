@@ -38,18 +38,23 @@ namespace MagnusBall
         /// <exception cref="ArgumentException">
         /// A vector is zero or not finite, the two are parallel (no curve direction is defined), or the rate is out of range.
         /// </exception>
-        public static Vector3d Toward(Vector3d velocity, Vector3d direction, double rate)
+        public static Vector3d Toward(Vector3d velocity, Vector3d direction, double rate) =>
+            Curve(velocity, direction, rate, direction, nameof(direction));
+
+        // Toward, with the errors naming the caller's parameter: Topspin and Backspin pass their up (and -up or up
+        // as the direction), so a vertical flight or a bad up is reported as "up", which is what the caller gave.
+        private static Vector3d Curve(Vector3d velocity, Vector3d direction, double rate, Vector3d given, string givenName)
         {
             Require.NonZero(velocity, nameof(velocity));
-            Require.NonZero(direction, nameof(direction));
+            Require.NonZero(given, givenName);
             Require.NonNegative(rate, nameof(rate));
             Vector3d axis = Vector3d.Cross(velocity.NormalizedOrZero(), direction.NormalizedOrZero());
             double sine = axis.Length;
             if (!(sine > 1e-12))
             {
                 throw new ArgumentException(
-                    $"direction must not be parallel to velocity (no curve direction across the flight is defined); got velocity {velocity}, direction {direction}.",
-                    nameof(direction));
+                    $"{givenName} must not be parallel to velocity (no curve direction across the flight is defined); got velocity {velocity}, {givenName} {given}.",
+                    givenName);
             }
 
             return Overflow.Multiply(axis, rate / sine);
@@ -59,14 +64,20 @@ namespace MagnusBall
         /// <param name="velocity">The ball's velocity; finite, not vertical.</param>
         /// <param name="up">The frame's up direction (for example -gravity); finite, non-zero.</param>
         /// <param name="rate">Spin rate, rad/s; finite and &gt;= 0.</param>
-        /// <exception cref="ArgumentException">As for <see cref="Toward"/>.</exception>
-        public static Vector3d Topspin(Vector3d velocity, Vector3d up, double rate) => Toward(velocity, -up, rate);
+        /// <exception cref="ArgumentException">
+        /// As for <see cref="Toward"/>, naming <paramref name="up"/> where it names the direction: up is zero or not
+        /// finite, or parallel to the velocity (a vertical flight has no topspin axis).
+        /// </exception>
+        public static Vector3d Topspin(Vector3d velocity, Vector3d up, double rate) => Curve(velocity, -up, rate, up, nameof(up));
 
         /// <summary>Backspin: spin that curves the ball up (toward <paramref name="up"/>), so it floats.</summary>
         /// <param name="velocity">The ball's velocity; finite, not vertical.</param>
         /// <param name="up">The frame's up direction (for example -gravity); finite, non-zero.</param>
         /// <param name="rate">Spin rate, rad/s; finite and &gt;= 0.</param>
-        /// <exception cref="ArgumentException">As for <see cref="Toward"/>.</exception>
-        public static Vector3d Backspin(Vector3d velocity, Vector3d up, double rate) => Toward(velocity, up, rate);
+        /// <exception cref="ArgumentException">
+        /// As for <see cref="Toward"/>, naming <paramref name="up"/> where it names the direction: up is zero or not
+        /// finite, or parallel to the velocity (a vertical flight has no backspin axis).
+        /// </exception>
+        public static Vector3d Backspin(Vector3d velocity, Vector3d up, double rate) => Curve(velocity, up, rate, up, nameof(up));
     }
 }

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
+using MagnusBall.Queries;
 using NUnit.Framework;
 
 namespace MagnusBall.Tests.Api
@@ -82,7 +83,13 @@ namespace MagnusBall.Tests.Api
             yield return new Case("spin toward parallel", "direction", "parallel", () => Spin.Toward(new Vector3d(1, 0, 0), new Vector3d(2, 0, 0), 10));
             yield return new Case("spin toward zero velocity", "velocity", "non-zero", () => Spin.Toward(Vector3d.Zero, Vector3d.UnitY, 10));
             yield return new Case("spin negative rate", "rate", ">= 0", () => Spin.Topspin(Vector3d.UnitX, Vector3d.UnitZ, -5));
-            yield return new Case("topspin on a vertical ball", "direction", "parallel", () => Spin.Topspin(Vector3d.UnitZ, Vector3d.UnitZ, 5));
+            // Topspin and Backspin name their own parameter, up (they named Toward's "direction", which the caller never gave).
+            yield return new Case("topspin on a vertical ball", "up", "parallel", () => Spin.Topspin(Vector3d.UnitZ, Vector3d.UnitZ, 5));
+            yield return new Case("backspin on a vertical ball", "up", "parallel", () => Spin.Backspin(-Vector3d.UnitZ, Vector3d.UnitZ, 5));
+            yield return new Case("topspin with a zero up", "up", "non-zero", () => Spin.Topspin(Vector3d.UnitX, Vector3d.Zero, 5));
+            yield return new Case("backspin with a NaN up", "up", "finite", () => Spin.Backspin(Vector3d.UnitX, new Vector3d(0, 0, double.NaN), 5));
+            // LaunchSpin.Backspin named "topspin" for a bad rate.
+            yield return new Case("launch backspin NaN", "rate", "finite", () => LaunchSpin.Backspin(double.NaN));
             yield return new Case("integrator unknown", "name", "rk4", () => Integrators.FromName("rk5"));
             yield return new Case("gravity along zero up", "up", "non-zero", () => Gravity.Along(Vector3d.Zero));
         }

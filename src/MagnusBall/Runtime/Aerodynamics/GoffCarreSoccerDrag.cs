@@ -23,6 +23,14 @@ namespace MagnusBall.Aerodynamics
         /// <summary>The shared instance (the law has no parameters).</summary>
         public static GoffCarreSoccerDrag Instance { get; } = new GoffCarreSoccerDrag();
 
+        /// <summary>
+        /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
+        /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
+        /// </summary>
+        public GoffCarreSoccerDrag()
+        {
+        }
+
         /// <inheritdoc />
         public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.Speed, conditions.SpinParameter);
 

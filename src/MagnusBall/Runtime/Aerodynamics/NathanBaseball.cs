@@ -13,6 +13,14 @@ namespace MagnusBall.Aerodynamics
         /// <summary>The shared instance (the law has no parameters).</summary>
         public static NathanBaseballDrag Instance { get; } = new NathanBaseballDrag();
 
+        /// <summary>
+        /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
+        /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
+        /// </summary>
+        public NathanBaseballDrag()
+        {
+        }
+
         /// <inheritdoc />
         public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinRpm);
 
@@ -35,6 +43,14 @@ namespace MagnusBall.Aerodynamics
     {
         /// <summary>The shared instance (the law has no parameters).</summary>
         public static NathanBaseballLift Instance { get; } = new NathanBaseballLift();
+
+        /// <summary>
+        /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
+        /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
+        /// </summary>
+        public NathanBaseballLift()
+        {
+        }
 
         /// <inheritdoc />
         public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);

@@ -15,6 +15,14 @@ namespace MagnusBall.Aerodynamics
         /// <summary>The shared instance (the law has no parameters).</summary>
         public static StepanekDrag Instance { get; } = new StepanekDrag();
 
+        /// <summary>
+        /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
+        /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
+        /// </summary>
+        public StepanekDrag()
+        {
+        }
+
         /// <inheritdoc />
         public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinParameter);
 
@@ -104,6 +112,14 @@ namespace MagnusBall.Aerodynamics
     {
         /// <summary>The shared instance (the law has no parameters).</summary>
         public static StepanekLift Instance { get; } = new StepanekLift();
+
+        /// <summary>
+        /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
+        /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
+        /// </summary>
+        public StepanekLift()
+        {
+        }
 
         /// <inheritdoc />
         public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);

@@ -10,6 +10,13 @@ namespace MagnusBall.Integration
         /// <summary>The shared instance (the method is stateless).</summary>
         public static ExplicitEuler Instance { get; } = new ExplicitEuler();
 
+        /// <summary>
+        /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
+        /// </summary>
+        public ExplicitEuler()
+        {
+        }
+
         /// <inheritdoc />
         public string Name => "euler";
 
@@ -41,6 +48,13 @@ namespace MagnusBall.Integration
     {
         /// <summary>The shared instance (the method is stateless).</summary>
         public static SemiImplicitEuler Instance { get; } = new SemiImplicitEuler();
+
+        /// <summary>
+        /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
+        /// </summary>
+        public SemiImplicitEuler()
+        {
+        }
 
         /// <inheritdoc />
         public string Name => "semi-implicit-euler";

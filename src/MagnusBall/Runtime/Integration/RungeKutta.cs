@@ -9,6 +9,13 @@ namespace MagnusBall.Integration
         /// <summary>The shared instance (the method is stateless).</summary>
         public static Heun Instance { get; } = new Heun();
 
+        /// <summary>
+        /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
+        /// </summary>
+        public Heun()
+        {
+        }
+
         /// <inheritdoc />
         public string Name => "heun";
 
@@ -37,6 +44,13 @@ namespace MagnusBall.Integration
     {
         /// <summary>The shared instance (the method is stateless).</summary>
         public static RungeKutta4 Instance { get; } = new RungeKutta4();
+
+        /// <summary>
+        /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
+        /// </summary>
+        public RungeKutta4()
+        {
+        }
 
         /// <inheritdoc />
         public string Name => "rk4";

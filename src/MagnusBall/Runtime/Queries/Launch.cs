@@ -105,7 +105,8 @@ namespace MagnusBall.Queries
 
         /// <summary>Pure backspin of <paramref name="rate"/> rad/s (the ball floats).</summary>
         /// <param name="rate">Rate, rad/s; finite.</param>
-        public static LaunchSpin Backspin(double rate) => new LaunchSpin(-rate);
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="rate"/> is not finite.</exception>
+        public static LaunchSpin Backspin(double rate) => new LaunchSpin(-Require.Finite(rate, nameof(rate)));
 
         /// <summary>
         /// The angular velocity this spin has for a ball launched along <paramref name="direction"/> in

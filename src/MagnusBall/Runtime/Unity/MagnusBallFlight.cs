@@ -227,7 +227,10 @@ namespace MagnusBall.Components
         /// <param name="velocity">Launch velocity, m/s, in world coordinates (not vertical when there is spin).</param>
         /// <param name="topspinRpm">Topspin, rev/min; negative for backspin.</param>
         /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left.</param>
-        /// <exception cref="ArgumentException">A value is not finite; nothing changes.</exception>
+        /// <exception cref="ArgumentException">
+        /// A value is not finite, or there is spin and the velocity is vertical or zero (no spin axis across the
+        /// flight is defined); nothing changes.
+        /// </exception>
         public void Launch(Vector3 velocity, float topspinRpm, float sidespinRpm)
         {
             RequireFinite(topspinRpm, nameof(topspinRpm));
@@ -274,10 +277,26 @@ namespace MagnusBall.Components
         /// <param name="velocity">Velocity, m/s.</param>
         /// <param name="topspinRpm">Topspin, rev/min; negative for backspin.</param>
         /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left of the direction of travel.</param>
+        /// <exception cref="ArgumentException">
+        /// There is spin and <paramref name="velocity"/> is vertical, zero or not finite (no spin axis across the
+        /// flight is defined), or a rate is not finite.
+        /// </exception>
         public static Vector3d SpinByEffect(Vector3d velocity, double topspinRpm, double sidespinRpm)
         {
+            RequireFinite(topspinRpm, nameof(topspinRpm)); // a NaN rate would otherwise add no spin, silently
+            RequireFinite(sidespinRpm, nameof(sidespinRpm));
             Vector3d up = UnityFrame.Up;
             Vector3d spin = Vector3d.Zero;
+            // The same test as Spin.Toward's (the sine of the angle between the velocity and up), made here so that
+            // a vertical launch is reported as this method's velocity, not as the helpers' up or direction.
+            if ((topspinRpm != 0 || sidespinRpm != 0) &&
+                !(velocity.IsFinite && Vector3d.Cross(velocity.NormalizedOrZero(), up).Length > 1e-12))
+            {
+                throw new ArgumentException(
+                    $"velocity must be finite and not vertical or zero when there is spin (no spin axis across the flight is defined); got {velocity}.",
+                    nameof(velocity));
+            }
+
             if (topspinRpm > 0)
             {
                 spin += Spin.Topspin(velocity, up, Spin.FromRpm(topspinRpm));
@@ -412,11 +431,12 @@ namespace MagnusBall.Components
             _maxFrameDelta = maxFrame;
         }
 
-        private static void RequireFinite(float value, string name)
+        private static void RequireFinite(double value, string name)
         {
-            if (float.IsNaN(value) || float.IsInfinity(value))
+            if (double.IsNaN(value) || double.IsInfinity(value))
             {
-                throw new ArgumentOutOfRangeException(name, value, $"{name} must be a finite number; got {value}.");
+                throw new ArgumentOutOfRangeException(
+                    name, value, $"{name} must be a finite number; got {value.ToString("R", System.Globalization.CultureInfo.InvariantCulture)}.");
             }
         }
     }

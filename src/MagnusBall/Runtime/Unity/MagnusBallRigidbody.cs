@@ -27,8 +27,9 @@ namespace MagnusBall.Components
     /// </summary>
     /// <remarks>
     /// <para><b>Spin.</b> The spin lives in this component (<see cref="Spin"/>), never in
-    /// <c>Rigidbody.angularVelocity</c>, which PhysX clips at <c>maxAngularVelocity</c> (7 rad/s by default; a
-    /// tennis ball spins at 100-400 rad/s). The Rigidbody's own angular velocity is left to PhysX.</para>
+    /// <c>Rigidbody.angularVelocity</c>, which PhysX clips at <c>maxAngularVelocity</c> (by default
+    /// <c>Physics.defaultMaxAngularSpeed</c>: 50 rad/s in a new project from Unity 2022, 7 rad/s before; a tennis ball
+    /// spins at 100-400 rad/s). The Rigidbody's own angular velocity is left to PhysX.</para>
     /// <para><b>Force.</b> The acceleration added is the model's total acceleration minus the gravity PhysX
     /// already applies (<c>Physics.gravity</c> when <c>useGravity</c>, else none), so the body accelerates as the
     /// model says even if <c>Physics.gravity</c> differs from the model's gravity (Unity's default -9.81 against

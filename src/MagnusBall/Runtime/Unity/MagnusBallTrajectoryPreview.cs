@@ -89,6 +89,7 @@ namespace MagnusBall.Components
         {
             _line = GetComponent<LineRenderer>();
             _line.useWorldSpace = true;
+            _line.positionCount = 0; // a new LineRenderer has two points, (0, 0, 0) and (0, 0, 1): draw nothing yet
             int n = Math.Max(2, maxPoints);
             _path = new Vector3d[n];
             _points = new Vector3[n];
