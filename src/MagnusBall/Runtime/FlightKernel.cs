@@ -657,16 +657,21 @@ namespace MagnusBall
             double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
+            // The end rates at the end spin w + k1's spin rate h/6, as Rk4Unrolled evaluates them (with the start's |w|):
+            // not w itself, which differs from it in the sign of a zero component (-0 + 0 is +0) and for a k1 whose spin
+            // rate is not zero.
+            Vector3d we = w + k1.AngularAcceleration * sixth;
+            double ex = we.X, ey = we.Y, ez = we.Z;
             squared = vex * vex + vey * vey + vez * vez;
             speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
             drag = dragFactor * speed;
             lift = liftFactor * speed * inverseSpinRate;
             endAcceleration = new Vector3d(
-                gx + vex * drag + (wy * vez - wz * vey) * lift,
-                gy + vey * drag + (wz * vex - wx * vez) * lift,
-                gz + vez * drag + (wx * vey - wy * vex) * lift);
-            end = new FlightState(pe, new Vector3d(vex, vey, vez), w + k1.AngularAcceleration * sixth, state.Time + step);
+                gx + vex * drag + (ey * vez - ez * vey) * lift,
+                gy + vey * drag + (ez * vex - ex * vez) * lift,
+                gz + vez * drag + (ex * vey - ey * vex) * lift);
+            end = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
             return common;
         }
 
