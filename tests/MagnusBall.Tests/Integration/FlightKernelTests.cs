@@ -594,6 +594,6 @@ namespace MagnusBall.Tests.Integration
             }
         }
 
-        private static bool Same(double a, double b) => a == b || (double.IsNaN(a) && double.IsNaN(b));
+        private static bool Same(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b) || (double.IsNaN(a) && double.IsNaN(b));
     }
 }
