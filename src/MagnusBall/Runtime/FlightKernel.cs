@@ -42,7 +42,6 @@ namespace MagnusBall
         /// </summary>
         internal abstract FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count);
 
-        /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
         /// <summary>
         /// Test hook: RK4's straight-line form of the thesis model's common case (see PreferStraightLine), whatever the
         /// runtime. False where the model's laws or air are not that case or a stage leaves it (then end and endRates are
@@ -50,6 +49,7 @@ namespace MagnusBall
         /// </summary>
         internal abstract bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates);
 
+        /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
         internal abstract FlightState Heun(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
 
         /// <summary>
