@@ -607,6 +607,14 @@ namespace MagnusBall
             Vector3d p = state.Position, w = state.AngularVelocity;
             double wx = w.X, wy = w.Y, wz = w.Z;
             double spinRate = Vector3d.LengthOf(wx, wy, wz);
+            if (!(spinRate > 0))
+            {
+                // No spin (no lift): known before the chain starts, so the general step is not paid on top of this one.
+                end = default;
+                endAcceleration = default;
+                return false;
+            }
+
             double inverseSpinRate = 1.0 / spinRate;
             // Rates' -_factor C_D speed and _factor C_L speed (1/|w|), whose first products are these (left to right).
             double dragFactor = -_factor * _drag.Coefficient(NoConditions);
@@ -614,7 +622,7 @@ namespace MagnusBall
             double gx = _gravity.X, gy = _gravity.Y, gz = _gravity.Z;
             double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
             Vector3d k1a = k1.Acceleration;
-            bool common = spinRate > 0;
+            bool common = true;
 
             // k2 at y + h/2 k1
             double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
