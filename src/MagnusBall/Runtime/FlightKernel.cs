@@ -594,12 +594,13 @@ namespace MagnusBall
 
         // Rk4Unrolled's arithmetic, operation for operation, for constant drag and lift, a constant spin, still air and
         // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind, Vector3d.LengthOf's
-        // range test, the minimum speed, the lift's spin test) become one test at the end. Mono's JIT keeps no double in a
-        // register from one basic block to the next, so there every branch stored and reloaded the whole dependent
-        // chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
+        // range test, the minimum speed, the lift's spin test) become one test at the end (a spinless state is declined
+        // first). Mono's JIT keeps no double in a register from one basic block to the next, so there every branch stored
+        // and reloaded the whole dependent chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
         // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, no spin):
         // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
-        // (FlightKernelTests: the same steps with a counter attached, which takes the general code).
+        // (FlightKernelTests.StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit: the same steps on a model with
+        // a counter attached, which takes the general code).
         private bool Rk4Straight(in FlightState state, in StateDerivative k1, double step, out FlightState end, out Vector3d endAcceleration)
         {
             double half = 0.5 * step;
