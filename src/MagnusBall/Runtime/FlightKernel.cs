@@ -42,7 +42,6 @@ namespace MagnusBall
         /// </summary>
         internal abstract FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count);
 
-        /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
         /// <summary>
         /// Test hook: RK4's straight-line form of the thesis model's common case (see PreferStraightLine), whatever the
         /// runtime. False where the model's laws or air are not that case or a stage leaves it (then end and endRates are
@@ -50,6 +49,7 @@ namespace MagnusBall
         /// </summary>
         internal abstract bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates);
 
+        /// <summary>One Heun step with its end derivative (2 evaluations). No argument checks.</summary>
         internal abstract FlightState Heun(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
 
         /// <summary>
@@ -594,13 +594,14 @@ namespace MagnusBall
 
         // Rk4Unrolled's arithmetic, operation for operation, for constant drag and lift, a constant spin, still air and
         // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind, Vector3d.LengthOf's
-        // range test, the minimum speed, the lift's spin test) become one test at the end. Mono's JIT keeps no double in a
-        // register from one basic block to the next, so there every branch stored and reloaded the whole dependent
-        // chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
+        // range test, the minimum speed, the lift's spin test) become one test at the end (a spinless state is declined
+        // first). Mono's JIT keeps no double in a register from one basic block to the next, so there every branch stored
+        // and reloaded the whole dependent chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
         // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, no spin):
         // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
-        // (FlightKernelTests: TryRk4StraightLine against the general step). The stages are written out, as in Rk4Unrolled:
-        // a shared stage method would hand its results back through out parameters, which Mono keeps in memory.
+        // (FlightKernelTests.StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit: the same steps on a model with
+        // a counter attached, which takes the general code). The stages are written out, as in Rk4Unrolled: a shared stage
+        // method would hand its results back through out parameters, which Mono keeps in memory.
         private bool Rk4Straight(in FlightState state, in StateDerivative k1, double step, out FlightState end, out Vector3d endAcceleration)
         {
             double half = 0.5 * step;
@@ -608,6 +609,14 @@ namespace MagnusBall
             Vector3d p = state.Position, w = state.AngularVelocity;
             double wx = w.X, wy = w.Y, wz = w.Z;
             double spinRate = Vector3d.LengthOf(wx, wy, wz);
+            if (!(spinRate > 0))
+            {
+                // No spin (no lift): known before the chain starts, so the general step is not paid on top of this one.
+                end = default;
+                endAcceleration = default;
+                return false;
+            }
+
             double inverseSpinRate = 1.0 / spinRate;
             // Rates' -_factor C_D speed and _factor C_L speed (1/|w|), whose first products are these (left to right).
             double dragFactor = -_factor * _drag.Coefficient(NoConditions);
@@ -615,7 +624,7 @@ namespace MagnusBall
             double gx = _gravity.X, gy = _gravity.Y, gz = _gravity.Z;
             double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
             Vector3d k1a = k1.Acceleration;
-            bool common = spinRate > 0;
+            bool common = true;
 
             // k2 at y + h/2 k1
             double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
@@ -658,16 +667,21 @@ namespace MagnusBall
             double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
+            // The end rates at the end spin w + k1's spin rate h/6, as Rk4Unrolled evaluates them (with the start's |w|):
+            // not w itself, which differs from it in the sign of a zero component (-0 + 0 is +0) and for a k1 whose spin
+            // rate is not zero.
+            Vector3d we = w + k1.AngularAcceleration * sixth;
+            double ex = we.X, ey = we.Y, ez = we.Z;
             squared = vex * vex + vey * vey + vez * vez;
             speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
             drag = dragFactor * speed;
             lift = liftFactor * speed * inverseSpinRate;
             endAcceleration = new Vector3d(
-                gx + vex * drag + (wy * vez - wz * vey) * lift,
-                gy + vey * drag + (wz * vex - wx * vez) * lift,
-                gz + vez * drag + (wx * vey - wy * vex) * lift);
-            end = new FlightState(pe, new Vector3d(vex, vey, vez), w + k1.AngularAcceleration * sixth, state.Time + step);
+                gx + vex * drag + (ey * vez - ez * vey) * lift,
+                gy + vey * drag + (ez * vex - ex * vez) * lift,
+                gz + vez * drag + (ex * vey - ey * vex) * lift);
+            end = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
             return common;
         }
 

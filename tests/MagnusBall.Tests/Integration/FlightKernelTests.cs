@@ -379,6 +379,90 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit()
+        {
+            // The corners of Rk4Straight against Rk4Unrolled, compared bit for bit (signed zeros too, unlike AssertSame):
+            // components +-0, subnormal, near the aerodynamic cut-off 1e-150, near 1e154 (where squares overflow) and
+            // huge; spins from subnormal (1/|w| overflows) to 1e308 (|w| through LengthOf's scaled path); gravity with -0
+            // components (Gravity.Along) and y-up; steps from 1e-300 to 1e3. A counter on the general model makes RK4 take
+            // Rk4Unrolled on every runtime (PreferStraightLine skips the straight form where a counter is attached).
+            double[] magnitudes =
+            {
+                0, 5e-324, 1e-310, 2.2250738585072014e-308, 1e-300, 1e-160, 1e-151, 1e-150, 1.0000000000000002e-150,
+                1.5e-150, 1e-100, 1e-5, 0.3, 5, 30, 150, 1e100, 1e153, 0.9e154, 1.0e154, 1.34e154, 1e200, 1e300, 1.7e308,
+            };
+            var random = new Random(11);
+            double Component() =>
+                random.NextDouble() < 0.3 ? (random.NextDouble() - 0.5) * 80 : (random.NextDouble() < 0.5 ? -1 : 1) * magnitudes[random.Next(magnitudes.Length)];
+            Vector3d Vector() => new Vector3d(Component(), Component(), Component());
+            var models = new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.Along(Vector3d.UnitZ)), // gravity (-0, -0, -9.8)
+                FlightModel.Thesis(Ball.Soccer, new Air(1.18), Gravity.Along(Vector3d.UnitY)),
+                FlightModel.Thesis(Ball.Tennis, new Air(1e-300), Gravity.Along(new Vector3d(1, -2, 3), 1e-3)),
+            };
+            double[] steps = { 1e-300, 1e-30, 1e-9, 1.0 / 240, 0.03, 1, 1e3 };
+            int taken = 0, compared = 0;
+            foreach (FlightModel model in models)
+            {
+                var general = new FlightModel(model.Ball, model.Air, model.Gravity, model.Drag, model.Lift, model.SpinDecay)
+                {
+                    CountedEvaluations = new EvaluationCount(),
+                };
+                for (int i = 0; i < 3000; i++)
+                {
+                    var state = new FlightState(Vector(), Vector(), Vector(), random.NextDouble());
+                    if (i % 5 == 0)
+                    {
+                        // a realistic flight with signed-zero spin components (a negated spin vector, e.g. -(0, -150, 0))
+                        state = new FlightState(
+                            new Vector3d(0, 0, 1), new Vector3d(30, 0, -5), -new Vector3d(0, random.Next(-300, 300), random.Next(-2, 2)));
+                    }
+
+                    StateDerivative k1 = general.Derivative(state);
+                    if (i % 7 == 3)
+                    {
+                        // a start spin rate the model does not have (outside IIntegrator.Step's contract; both forms still agree)
+                        k1 = new StateDerivative(k1.Velocity, k1.Acceleration, new Vector3d(random.NextDouble() - 0.5, -0.0, 40 * random.NextDouble()));
+                    }
+
+                    double step = steps[i % steps.Length];
+                    compared++;
+                    FlightState expected = RungeKutta4.Instance.Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
+                    if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
+                    {
+                        continue;
+                    }
+
+                    taken++;
+                    AssertBits(straight.Position, expected.Position, state, step);
+                    AssertBits(straight.Velocity, expected.Velocity, state, step);
+                    AssertBits(straight.AngularVelocity, expected.AngularVelocity, state, step);
+                    AssertBits(straightEnd.Velocity, expectedEnd.Velocity, state, step);
+                    AssertBits(straightEnd.Acceleration, expectedEnd.Acceleration, state, step);
+                    AssertBits(straightEnd.AngularAcceleration, expectedEnd.AngularAcceleration, state, step);
+                    Assert.That(BitConverter.DoubleToInt64Bits(straight.Time), Is.EqualTo(BitConverter.DoubleToInt64Bits(expected.Time)));
+                }
+            }
+
+            // Most random states leave the common case somewhere (a tiny or overflowing stage speed); enough take it.
+            Assert.That(taken, Is.GreaterThan(compared / 5), $"taken {taken} of {compared}");
+        }
+
+        private static void AssertBits(in Vector3d actual, in Vector3d expected, in FlightState from, double step)
+        {
+            if (BitConverter.DoubleToInt64Bits(actual.X) != BitConverter.DoubleToInt64Bits(expected.X)
+                || BitConverter.DoubleToInt64Bits(actual.Y) != BitConverter.DoubleToInt64Bits(expected.Y)
+                || BitConverter.DoubleToInt64Bits(actual.Z) != BitConverter.DoubleToInt64Bits(expected.Z))
+            {
+                Assert.Fail($"straight {Bits(actual)} != general {Bits(expected)} from {Bits(from.Position)} {Bits(from.Velocity)} {Bits(from.AngularVelocity)}, step {step:R}");
+            }
+        }
+
+        private static string Bits(in Vector3d v) => $"({v.X:R}, {v.Y:R}, {v.Z:R})";
+
+        [Test]
         public void Rk4Steps_EqualsOneStepAtATime_BitForBit()
         {
             var model = new FlightModel(Ball.Tennis, new Air(1.21).WithLogarithmicWind(new Vector3d(5, 0, 0)), Gravity.ZUp,
@@ -510,6 +594,6 @@ namespace MagnusBall.Tests.Integration
             }
         }
 
-        private static bool Same(double a, double b) => a == b || (double.IsNaN(a) && double.IsNaN(b));
+        private static bool Same(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b) || (double.IsNaN(a) && double.IsNaN(b));
     }
 }
