@@ -280,6 +280,64 @@ namespace MagnusBall.Cli.Tests.Api
             Assert.That(run.FirstResult().GetProperty("crossings").GetRawText(), Is.EqualTo(reference.FirstResult().GetProperty("crossings").GetRawText()));
         }
 
+        [TestCase(2.0, null, true, TestName = "FarBoundedNet_UnboundedWidth_IsInside")]
+        [TestCase(2.0, 6.4, false, TestName = "FarBoundedNet_FiniteWidth_IsOutside")]
+        [TestCase(0.914, null, false, TestName = "FarBoundedNet_BallAboveTheTape_IsNotInside")]
+        public void BoundedPlane_WhosePointIsBeyondDoubleRangeFromTheCrossing_ReportsInsideByItsLimits(double netHeight, double? halfWidth, bool inside)
+        {
+            // The drive flown at y = 1e308 past a net whose point is at y = -1e308: the crossing is 2e308 from the net's point
+            // along the width axis (0, -1, 0), so position - point overflows in y. The height was inf * 0 = NaN and every
+            // crossing was "not inside"; now the height is the true 1.35 m and the width -inf: outside a finite width limit,
+            // inside a missing one. Wind is zero and nothing depends on y, so the flight in x and z is the reference drive's.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 1e308, 1);
+            var bounds = new JsonObject { ["height"] = new JsonArray(0, netHeight) };
+            if (halfWidth is double w)
+            {
+                bounds["width"] = new JsonArray(-w, w);
+            }
+
+            S(root)["planes"]![0]!["point"] = new JsonArray(11.885, -1e308, 0);
+            S(root)["planes"]![0]!["bounds"] = bounds;
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement crossing = run.FirstResult().GetProperty("crossings")[0];
+            JsonElement reference = CliRun.Simulate(CliRun.DriveJson).FirstResult().GetProperty("crossings")[0];
+            Assert.That(crossing.GetProperty("time").GetDouble(), Is.EqualTo(reference.GetProperty("time").GetDouble()));
+            Assert.That(crossing.GetProperty("inside").GetBoolean(), Is.EqualTo(inside));
+        }
+
+        [Test]
+        public void PlaneBoundsCoordinates_OfFarPoints_AreNeverNaN_AndTheCommonCaseIsThePlainFormula()
+        {
+            double r = Math.Sqrt(0.5);
+            var bounds = new PlaneBounds(new Vector3d(r, -r, 0), new Vector3d(0, 0, 1), 0, 1, double.NegativeInfinity, double.PositiveInfinity);
+            // position - origin = (2e308, 2e308, 0) overflows to (inf, inf, 0): the plain height is inf - inf = NaN, the
+            // true one 0 (both components cancel; quartered, (5e307 r - 5e307 r) is exactly 0).
+            (double height, double width) = bounds.Coordinates(new Vector3d(1e308, 1e308, 0.5), new Vector3d(-1e308, -1e308, 0));
+            Assert.That(height, Is.EqualTo(0));
+            Assert.That(width, Is.EqualTo(0.5));
+            Assert.That(bounds.Contains(new Vector3d(1e308, 1e308, 0.5), new Vector3d(-1e308, -1e308, 0)), Is.True);
+
+            // Beyond what a double holds along an axis: infinite with the true sign, never NaN (the true height is
+            // 3.4e308 * 2 r = 4.8e308 > double.MaxValue; the plain formula gave inf - (-inf) = inf here only by luck of signs,
+            // so this pins the sign through the quarters).
+            (height, _) = bounds.Coordinates(new Vector3d(1.7e308, -1.7e308, 0), new Vector3d(-1.7e308, 1.7e308, 0));
+            Assert.That(height, Is.EqualTo(double.PositiveInfinity));
+
+            // Where the plain formula is finite, the result is it, to the bit.
+            var random = new Random(11);
+            for (int i = 0; i < 1000; i++)
+            {
+                double scale = Math.Pow(10, random.Next(-300, 308));
+                var p = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * scale;
+                var o = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * scale;
+                (double h, double w) = bounds.Coordinates(p, o);
+                Assert.That(h, Is.EqualTo(Vector3d.Dot(p - o, bounds.HeightAxis)));
+                Assert.That(w, Is.EqualTo(Vector3d.Dot(p - o, bounds.WidthAxis)));
+            }
+        }
+
         private static IEnumerable<TestCaseData> NullFields()
         {
             TestCaseData Case(string name, Action<JsonObject> mutate, string path) => new TestCaseData(mutate, path).SetName("Null_" + name);
