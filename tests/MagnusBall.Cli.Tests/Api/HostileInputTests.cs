@@ -338,6 +338,44 @@ namespace MagnusBall.Cli.Tests.Api
             }
         }
 
+        private static CliRun Aim(string ground, string position, string find)
+        {
+            string json = """{"aims": [{"name": "a", "ball": {"mass": 0.057, "radius": 0.033}, "air": {"density": 1.21}, "gravity": [0, 0, -9.81], """ +
+                          """ "integrator": "rk4", "step": 0.004166666666666667, "maxTime": 5, "ground": """ + ground +
+                          """, "launch": {"position": """ + position + """}, "find": """ + find + "}]}";
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            int code = Program.Run(new[] { "aim", "-" }, stdout, stderr, new StringReader(json));
+            return new CliRun(code, stdout.ToString(), stderr.ToString());
+        }
+
+        [Test]
+        public void AimClearance_BeyondDoubleRange_IsWrittenAsTheLargestDouble()
+        {
+            // A launch 1.7e308 m up over a ground 1.7e308 m down: every trial clears 1 m by 3.4e308 m, infinite in the
+            // library. The JSON writer refused the infinity and the tool ended with "internal error" (exit 1).
+            CliRun run = Aim("""{"point": [0, 0, -1.7e308], "normal": [0, 0, 1]}""", "[0, 0, 1.7e308]",
+                """{"kind": "minimum-elevation-to-clear", "speed": 30, "plane": {"point": [11.885, 0, 0], "normal": [1, 0, 0]}, "height": 1}""");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement r = run.FirstResult();
+            Assert.That(r.GetProperty("status").GetString(), Is.EqualTo("solved"));
+            Assert.That(r.GetProperty("elevationDegrees").GetDouble(), Is.EqualTo(-45), "the lowest elevation tried already clears");
+            Assert.That(r.GetProperty("miss").GetDouble(), Is.EqualTo(double.MaxValue));
+        }
+
+        [TestCase("elevation-to-reach", "\"speed\": 30")]
+        [TestCase("angles-to-reach", "\"speed\": 30")]
+        [TestCase("speed-to-reach", "\"elevationDegrees\": 10")]
+        public void AimAtATargetBeyondDoubleRange_IsUnreachable(string kind, string parameter)
+        {
+            // The launch at y = 1e308, the target at y = -1e308: their difference overflows. It was exit 2, "target must
+            // not be straight above or below the launch point (horizontal distance NaN m)".
+            CliRun run = Aim("""{"point": [0, 0, 0], "normal": [0, 0, 1]}""", "[0, 1e308, 1]",
+                "{\"kind\": \"" + kind + "\", " + parameter + ", \"target\": [20, -1e308, 0]}");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            Assert.That(run.FirstResult().GetProperty("status").GetString(), Is.EqualTo("unreachable"));
+        }
+
         private static IEnumerable<TestCaseData> NullFields()
         {
             TestCaseData Case(string name, Action<JsonObject> mutate, string path) => new TestCaseData(mutate, path).SetName("Null_" + name);

@@ -28,8 +28,8 @@ namespace MagnusBall.Queries
             MissToTarget = missToTarget;
         }
 
-        /// <summary>The target's height above the launch point, along up, m.</summary>
-        public double Rise => Vector3d.Dot(Target - Position, Frame.Up);
+        /// <summary>The target's height above the launch point, along up, m (infinite where it exceeds a double, never NaN).</summary>
+        public double Rise => Vector3d.DotOfDifference(Target, Position, Frame.Up);
     }
 
     /// <summary>
@@ -112,7 +112,7 @@ namespace MagnusBall.Queries
             double margin;
             if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out FlightState arrival, out bool landed))
             {
-                margin = Vector3d.Dot(arrival.Position - goal.Target, _up);
+                margin = Vector3d.DotOfDifference(arrival.Position, goal.Target, _up); // never NaN: the target may be near 1e308 away
             }
             else
             {
@@ -139,7 +139,7 @@ namespace MagnusBall.Queries
             double extended = double.NaN;
             if (toward > 0)
             {
-                extended = Vector3d.Dot(landing.Position - goal.Target, _up) - Vector3d.Dot(landing.Velocity, _up) * (distance / toward);
+                extended = Vector3d.DotOfDifference(landing.Position, goal.Target, _up) - Vector3d.Dot(landing.Velocity, _up) * (distance / toward);
             }
 
             return Math.Min(double.IsFinite(extended) ? extended : distance, -double.Epsilon);
