@@ -99,6 +99,27 @@ namespace MagnusBall.Cli.Tests.Api
         }
 
         [Test]
+        public void Svg_OfAnAxisSpanningTheWholeDoubleRange_HasOnlyFiniteTickLabels()
+        {
+            // A ball 1.7e308 m up over a ground 1.7e308 m down: the side view's height axis runs up to double.MaxValue, where
+            // the tick loop's end test (t <= max + 1e-9 step) rounded to infinity and let 25 "Infinity" ticks through.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 0, 1.7e308);
+            S(root)["ground"] = new JsonObject { ["point"] = new JsonArray(0, 0, -1.7e308), ["normal"] = new JsonArray(0, 0, 1) };
+            S(root)["maxTime"] = 0.5;
+            XDocument svg = DrawnSvg(root, out CliRun run);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            AssertCoordinatesFinite(svg);
+            XNamespace ns = "http://www.w3.org/2000/svg";
+            string[] labels = svg.Descendants(ns + "text").Where(t => (string?)t.Attribute("text-anchor") == "end").Select(t => t.Value).ToArray();
+            Assert.That(labels, Is.Not.Empty);
+            foreach (string label in labels)
+            {
+                Assert.That(double.IsFinite(double.Parse(label, CultureInfo.InvariantCulture)), Is.True, label);
+            }
+        }
+
+        [Test]
         public void Svg_WithControlCharactersInNames_IsWellFormedXml()
         {
             JsonObject root = CliRun.Drive();
@@ -251,6 +272,20 @@ namespace MagnusBall.Cli.Tests.Api
             CliRun run = CliRun.Simulate(root);
             AssertInputError(run, "scenarios[0].initial.time: time cannot advance");
             Assert.That(run.Stderr, Does.Not.Contain("diverged"));
+        }
+
+        [Test]
+        public void StartTimeWhoseEndOverflows_SaysTimeCannotAdvance_WithoutNaN()
+        {
+            // 1.7e308 s plus a maxTime of 1e308 s is past the largest double: the message said "at |t| = Infinity s a double
+            // resolves only NaN s".
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["time"] = 1.7e308;
+            S(root)["maxTime"] = 1e308;
+            S(root)["step"] = 1e307;
+            CliRun run = CliRun.Simulate(root);
+            AssertInputError(run, "scenarios[0].initial.time: time cannot advance: the flight would end past the largest double");
+            Assert.That(run.Stderr, Does.Not.Contain("NaN").And.Not.Contain("Infinity"));
         }
 
         [Test]

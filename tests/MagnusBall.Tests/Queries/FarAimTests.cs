@@ -127,6 +127,46 @@ namespace MagnusBall.Tests.Queries
 
         [TestCase(false)]
         [TestCase(true)]
+        public void Solves_WithSpinRatesNearTheLargestDouble_AreUnreachable_NotAnExceptionNamingState(bool adaptive)
+        {
+            // Finite rates of 1.7e308 rad/s each resolve, at most launch directions, to an angular velocity with an infinite
+            // component (its true length is 2.9e308): the trial's stepper refused the state with an ArgumentException
+            // naming "state", a parameter no solve has. Such a trial now fails like a diverged one.
+            AimSolver solver = Solver(adaptive, Plane.Ground(Model));
+            var spin = new LaunchSpin(1.7e308, 1.7e308, -1.7e308);
+            var start = new Vector3d(0, 0, 1);
+            var target = new Vector3d(20, 20, 0);
+            foreach (AimSolution s in new[]
+                     {
+                         solver.MinimumElevationToClear(start, 30, 0, spin, new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX), 0.914),
+                         solver.ElevationToReach(start, 30, spin, target),
+                         solver.AnglesToReach(start, 30, spin, target),
+                         solver.SpeedToReach(start, 0.2, 0, spin, target),
+                     })
+            {
+                Assert.That(s.Status, Is.EqualTo(AimStatus.Unreachable), s.ToString());
+                AssertNoNaN(s);
+            }
+        }
+
+        [Test]
+        public void TargetWhoseHorizontalPartIsRoundingBesideItsDistanceAlongUp_IsRefusedNamingTheTarget()
+        {
+            // From the stateful fuzz (seed 4242, with the check of parameter names): up is nearly -x (gravity
+            // (-1.4e56, 5e-324, -6074) m/s^2) and the target 1.8e308 m along it; the horizontal part left by the projection,
+            // 4e292 m, passed the 1e-6 m test and LaunchFrame refused it as "forward must not be parallel to up", naming
+            // a parameter no solve has.
+            var model = new FlightModel(new Ball(0.057, 0.033), new Air(1.21), new Vector3d(-1.4124989602019165E+56, 5E-324, -6073.55893625919));
+            var solver = new AimSolver(model, Plane.Ground(model));
+            var start = new Vector3d(-9.534145669295778E-262, 0, -7.9162698960304330E+174);
+            var target = new Vector3d(-1.7976931348623157E+308, -0.0, -2.660083871908367E-20);
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.ElevationToReach(start, 30, Topspin, target))!.ParamName, Is.EqualTo("target"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.AnglesToReach(start, 30, Topspin, target))!.ParamName, Is.EqualTo("target"));
+            Assert.That(Assert.Throws<ArgumentException>(() => solver.SpeedToReach(start, 0.2, 0, Topspin, target))!.ParamName, Is.EqualTo("target"));
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
         public void TargetSolve_WithLaunchAndTargetFarAlongTheSameLine_IsTheNearSolve(bool adaptive)
         {
             // Launch and target both at y = 1e308: their difference is finite (the near one); only the absolute positions

@@ -734,7 +734,21 @@ namespace MagnusBall.Queries
                     nameof(target));
             }
 
-            var frame = new LaunchFrame(up, horizontal);
+            LaunchFrame frame;
+            try
+            {
+                frame = new LaunchFrame(up, horizontal);
+            }
+            catch (ArgumentException)
+            {
+                // The horizontal part is over 1e-6 m but within LaunchFrame's 1e-9 of its own length of up: rounding left
+                // over from a target far along up (a horizontal of 4e292 m beside 1.8e308 m along a tilted up). The caller
+                // gave a target, not a forward: name it.
+                throw new ArgumentException(
+                    $"target must not be straight above or below the launch point (horizontal distance {Require.Format(length)} m is rounding beside its distance along up).",
+                    nameof(target));
+            }
+
             return new AimGoal(position, frame, spin, new Plane(target, frame.Forward), target, missToTarget: true);
         }
 

@@ -110,7 +110,17 @@ namespace MagnusBall.Queries
             Vector3d velocity = direction * speed;
             Vector3d spin = goal.Spin.AngularVelocity(direction, goal.Frame);
             double margin;
-            if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out FlightState arrival, out bool landed))
+            FlightState arrival;
+            bool landed;
+            if (!spin.IsFinite)
+            {
+                // Rates near double.MaxValue resolve to an angular velocity beyond what a double holds at this direction (the
+                // state would refuse it): the trial cannot be flown, and fails like a diverged one; not counted as a flight.
+                spin = Vector3d.Zero;
+                arrival = new FlightState(goal.Position, velocity, spin);
+                margin = double.NegativeInfinity;
+            }
+            else if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out arrival, out landed))
             {
                 margin = Vector3d.DotOfDifference(arrival.Position, goal.Target, _up); // never NaN: the target may be near 1e308 away
             }
