@@ -149,6 +149,50 @@ namespace MagnusBall.Tests.Queries
             }
         }
 
+        [TestCase(5e-324)]
+        [TestCase(1e-322)]
+        public void SpeedToReach_WithAMaximumSpeedWhoseOnePercentRoundsToZero_Ends(double maximumSpeed)
+        {
+            // The fallback scan steps up in 1 % of the maximum speed until past it: below about 1e-322 m/s that 1 % rounds to
+            // 0 and the loop never ended (found by hand, 2026-12-02). Now it also counts its passes.
+            var solver = new AimSolver(Model, Plane.Ground(Model), maximumSpeed: maximumSpeed);
+            AimSolution s = solver.SpeedToReach(new Vector3d(0, 0, 1), 0.2, 0, Topspin, new Vector3d(20, 0, 0));
+            Assert.That(s.Status, Is.EqualTo(AimStatus.Unreachable), s.ToString());
+            AssertNoNaN(s);
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void Solves_AtSpeedsNearTheLargestDouble_AreAnswered_NotAnExceptionNamingState(bool adaptive)
+        {
+            // Found by hand (2026-12-02): with a maximum speed of double.MaxValue, SpeedToReach's scan stepped past it to an
+            // infinite speed (its end test, MaximumSpeed (1 + 1e-12), was infinite), and the trial's stepper threw naming
+            // "state" on the infinite velocity (52 of 400 random solves of the four kinds in a throwaway probe). The scan now
+            // stops at double.MaxValue, and any trial whose velocity is not finite fails like a diverged one.
+            var solver = adaptive
+                ? new AimSolver(Model, Plane.Ground(Model), maximumSpeed: double.MaxValue)
+                : new AimSolver(Model, RungeKutta4.Instance, 1.0 / 120, Plane.Ground(Model), maximumSpeed: double.MaxValue);
+            var random = new Random(3);
+            var start = new Vector3d(0, 0, 1);
+            // Adaptive trials at 1e308 m/s shrink their steps until the solve's work cap (about 80 ms a solve): one of each.
+            int solves = adaptive ? 4 : 24;
+            for (int i = 0; i < solves; i++)
+            {
+                var target = new Vector3d(random.NextDouble() * 40 - 20, random.NextDouble() * 40 - 20, random.NextDouble() * 4);
+                double speed = double.MaxValue * (1 - random.NextDouble() * 1e-15);
+                AimSolution s = (i % 4) switch
+                {
+                    0 => solver.ElevationToReach(start, speed, LaunchSpin.None, target, random.NextDouble() - 0.5),
+                    1 => solver.AnglesToReach(start, speed, Topspin, target),
+                    2 => solver.SpeedToReach(start, random.NextDouble() - 0.5, random.NextDouble() - 0.5, LaunchSpin.None, target),
+                    _ => solver.MinimumElevationToClear(start, speed, random.NextDouble() - 0.5, LaunchSpin.None,
+                        new Plane(new Vector3d(11.885, 0, 0), new Vector3d(1, random.NextDouble() - 0.5, 0)), 0.9),
+                };
+                AssertNoNaN(s);
+                Assert.That(double.IsFinite(s.Speed), Is.True, s.ToString());
+            }
+        }
+
         [Test]
         public void TargetWhoseHorizontalPartIsRoundingBesideItsDistanceAlongUp_IsRefusedNamingTheTarget()
         {

@@ -63,6 +63,9 @@ namespace MagnusBall.Queries
         /// </summary>
         public const double TrialTolerance = 1e-8;
 
+        /// <summary>The most passes of <see cref="SpeedToReach"/>'s fallback scan (1 % steps up to the maximum speed take 99).</summary>
+        private const int MaximumSpeedScanPasses = 101;
+
         /// <summary>The longest adaptive trial step, s.</summary>
         private const double LongestAdaptiveStep = 0.5;
 
@@ -396,8 +399,12 @@ namespace MagnusBall.Queries
                 return WithFlights(atLo);
             }
 
-            // Bounded: at most 100 passes (1 % steps up to the maximum speed).
-            for (double v = lo + scan; v <= MaximumSpeed * (1 + 1e-12); v += scan)
+            // Bounded: at most 100 passes (1 % steps up to the maximum speed), by count too: a maximum speed below about
+            // 1e-322 m/s makes the 1 % step round to 0 (the loop stood still, for ever), and one near double.MaxValue
+            // makes the end test's MaximumSpeed (1 + 1e-12) infinite.
+            int passes = 0;
+            double last = Math.Min(double.MaxValue, MaximumSpeed * (1 + 1e-12)); // no trial at an infinite speed
+            for (double v = lo + scan; v <= last && passes < MaximumSpeedScanPasses; v += scan, passes++)
             {
                 double fv = margin.Evaluate(v, out AimSolution atV);
                 if (fv >= 0)

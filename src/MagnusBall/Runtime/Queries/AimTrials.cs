@@ -112,11 +112,13 @@ namespace MagnusBall.Queries
             double margin;
             FlightState arrival;
             bool landed;
-            if (!spin.IsFinite)
+            if (!spin.IsFinite || !velocity.IsFinite)
             {
-                // Rates near double.MaxValue resolve to an angular velocity beyond what a double holds at this direction (the
-                // state would refuse it): the trial cannot be flown, and fails like a diverged one; not counted as a flight.
+                // Rates near double.MaxValue resolve to an angular velocity beyond what a double holds at this direction, or
+                // a speed near double.MaxValue times the direction overflows (the state would refuse either): the trial
+                // cannot be flown, and fails like a diverged one; not counted as a flight.
                 spin = Vector3d.Zero;
+                velocity = Vector3d.Zero;
                 arrival = new FlightState(goal.Position, velocity, spin);
                 margin = double.NegativeInfinity;
             }
