@@ -216,7 +216,9 @@ namespace MagnusBall.Cli
                         WriteVector(w, "position", s.Arrival.Position);
                         WriteVector(w, "velocity", s.Arrival.Velocity);
                         w.WriteEndObject();
-                        w.WriteNumber("miss", s.Miss);
+                        // A clearance beyond what a double holds (a launch and a ground near 1e308 apart along up) is
+                        // infinite in the library; JSON has no infinity, so it is written as the largest double.
+                        w.WriteNumber("miss", Math.Clamp(s.Miss, -double.MaxValue, double.MaxValue));
                     }
 
                     w.WriteNumber("simulations", s.Simulations);

@@ -109,6 +109,13 @@ namespace MagnusBall.Cli
         internal static void CheckTimeAdvances(double time, FlightSetup setup, string path)
         {
             double latest = Math.Max(Math.Abs(time), Math.Abs(time + setup.MaxTime));
+            if (!double.IsFinite(latest))
+            {
+                // time + maxTime overflows (the message below would say "at |t| = Infinity s a double resolves only NaN s").
+                throw new InputError(path,
+                    $"time cannot advance: the flight would end past the largest double (t = {JsonFields.Format(time)} s plus maxTime {JsonFields.Format(setup.MaxTime)} s); start the flight nearer t = 0");
+            }
+
             double ulp = Math.BitIncrement(latest) - latest;
             if (!(ulp * MinimumStepInUlps <= setup.Step))
             {

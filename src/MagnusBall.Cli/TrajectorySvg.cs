@@ -380,7 +380,9 @@ namespace MagnusBall.Cli
             for (int i = 0; i < MaxTicksPerAxis; i++)
             {
                 double t = (first + i) * step;
-                if (!(t <= max + 1e-9 * step))
+                // Finite too: near double.MaxValue, max + 1e-9 step rounds to infinity and so would let every tick past
+                // the largest double through, each an "Infinity" label (an axis from -1.7e308 to 1.7e308 drew 25 of them).
+                if (!(t <= max + 1e-9 * step) || !double.IsFinite(t))
                 {
                     yield break;
                 }

@@ -99,6 +99,27 @@ namespace MagnusBall.Cli.Tests.Api
         }
 
         [Test]
+        public void Svg_OfAnAxisSpanningTheWholeDoubleRange_HasOnlyFiniteTickLabels()
+        {
+            // A ball 1.7e308 m up over a ground 1.7e308 m down: the side view's height axis runs up to double.MaxValue, where
+            // the tick loop's end test (t <= max + 1e-9 step) rounded to infinity and let 25 "Infinity" ticks through.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 0, 1.7e308);
+            S(root)["ground"] = new JsonObject { ["point"] = new JsonArray(0, 0, -1.7e308), ["normal"] = new JsonArray(0, 0, 1) };
+            S(root)["maxTime"] = 0.5;
+            XDocument svg = DrawnSvg(root, out CliRun run);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            AssertCoordinatesFinite(svg);
+            XNamespace ns = "http://www.w3.org/2000/svg";
+            string[] labels = svg.Descendants(ns + "text").Where(t => (string?)t.Attribute("text-anchor") == "end").Select(t => t.Value).ToArray();
+            Assert.That(labels, Is.Not.Empty);
+            foreach (string label in labels)
+            {
+                Assert.That(double.IsFinite(double.Parse(label, CultureInfo.InvariantCulture)), Is.True, label);
+            }
+        }
+
+        [Test]
         public void Svg_WithControlCharactersInNames_IsWellFormedXml()
         {
             JsonObject root = CliRun.Drive();
@@ -254,6 +275,20 @@ namespace MagnusBall.Cli.Tests.Api
         }
 
         [Test]
+        public void StartTimeWhoseEndOverflows_SaysTimeCannotAdvance_WithoutNaN()
+        {
+            // 1.7e308 s plus a maxTime of 1e308 s is past the largest double: the message said "at |t| = Infinity s a double
+            // resolves only NaN s".
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["time"] = 1.7e308;
+            S(root)["maxTime"] = 1e308;
+            S(root)["step"] = 1e307;
+            CliRun run = CliRun.Simulate(root);
+            AssertInputError(run, "scenarios[0].initial.time: time cannot advance: the flight would end past the largest double");
+            Assert.That(run.Stderr, Does.Not.Contain("NaN").And.Not.Contain("Infinity"));
+        }
+
+        [Test]
         public void StartTimeThatTheStepResolves_StillFlies()
         {
             // At 1e6 s a double resolves 1.2e-10 s: a 1/240 s step is 3.6e7 of those.
@@ -278,6 +313,102 @@ namespace MagnusBall.Cli.Tests.Api
             CliRun reference = CliRun.Simulate(CliRun.DriveJson);
             Assert.That(run.FirstResult().GetProperty("landing").GetRawText(), Is.EqualTo(reference.FirstResult().GetProperty("landing").GetRawText()));
             Assert.That(run.FirstResult().GetProperty("crossings").GetRawText(), Is.EqualTo(reference.FirstResult().GetProperty("crossings").GetRawText()));
+        }
+
+        [TestCase(2.0, null, true, TestName = "FarBoundedNet_UnboundedWidth_IsInside")]
+        [TestCase(2.0, 6.4, false, TestName = "FarBoundedNet_FiniteWidth_IsOutside")]
+        [TestCase(0.914, null, false, TestName = "FarBoundedNet_BallAboveTheTape_IsNotInside")]
+        public void BoundedPlane_WhosePointIsBeyondDoubleRangeFromTheCrossing_ReportsInsideByItsLimits(double netHeight, double? halfWidth, bool inside)
+        {
+            // The drive flown at y = 1e308 past a net whose point is at y = -1e308: the crossing is 2e308 from the net's point
+            // along the width axis (0, -1, 0), so position - point overflows in y. The height was inf * 0 = NaN and every
+            // crossing was "not inside"; now the height is the true 1.35 m and the width -inf: outside a finite width limit,
+            // inside a missing one. Wind is zero and nothing depends on y, so the flight in x and z is the reference drive's.
+            JsonObject root = CliRun.Drive();
+            S(root)["initial"]!["position"] = new JsonArray(0, 1e308, 1);
+            var bounds = new JsonObject { ["height"] = new JsonArray(0, netHeight) };
+            if (halfWidth is double w)
+            {
+                bounds["width"] = new JsonArray(-w, w);
+            }
+
+            S(root)["planes"]![0]!["point"] = new JsonArray(11.885, -1e308, 0);
+            S(root)["planes"]![0]!["bounds"] = bounds;
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement crossing = run.FirstResult().GetProperty("crossings")[0];
+            JsonElement reference = CliRun.Simulate(CliRun.DriveJson).FirstResult().GetProperty("crossings")[0];
+            Assert.That(crossing.GetProperty("time").GetDouble(), Is.EqualTo(reference.GetProperty("time").GetDouble()));
+            Assert.That(crossing.GetProperty("inside").GetBoolean(), Is.EqualTo(inside));
+        }
+
+        [Test]
+        public void PlaneBoundsCoordinates_OfFarPoints_AreNeverNaN_AndTheCommonCaseIsThePlainFormula()
+        {
+            double r = Math.Sqrt(0.5);
+            var bounds = new PlaneBounds(new Vector3d(r, -r, 0), new Vector3d(0, 0, 1), 0, 1, double.NegativeInfinity, double.PositiveInfinity);
+            // position - origin = (2e308, 2e308, 0) overflows to (inf, inf, 0): the plain height is inf - inf = NaN, the
+            // true one 0 (both components cancel; quartered, (5e307 r - 5e307 r) is exactly 0).
+            (double height, double width) = bounds.Coordinates(new Vector3d(1e308, 1e308, 0.5), new Vector3d(-1e308, -1e308, 0));
+            Assert.That(height, Is.EqualTo(0));
+            Assert.That(width, Is.EqualTo(0.5));
+            Assert.That(bounds.Contains(new Vector3d(1e308, 1e308, 0.5), new Vector3d(-1e308, -1e308, 0)), Is.True);
+
+            // Beyond what a double holds along an axis: infinite with the true sign, never NaN (the true height is
+            // 3.4e308 * 2 r = 4.8e308 > double.MaxValue; the plain formula gave inf - (-inf) = inf here only by luck of signs,
+            // so this pins the sign through the quarters).
+            (height, _) = bounds.Coordinates(new Vector3d(1.7e308, -1.7e308, 0), new Vector3d(-1.7e308, 1.7e308, 0));
+            Assert.That(height, Is.EqualTo(double.PositiveInfinity));
+
+            // Where the plain formula is finite, the result is it, to the bit.
+            var random = new Random(11);
+            for (int i = 0; i < 1000; i++)
+            {
+                double scale = Math.Pow(10, random.Next(-300, 308));
+                var p = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * scale;
+                var o = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * scale;
+                (double h, double w) = bounds.Coordinates(p, o);
+                Assert.That(h, Is.EqualTo(Vector3d.Dot(p - o, bounds.HeightAxis)));
+                Assert.That(w, Is.EqualTo(Vector3d.Dot(p - o, bounds.WidthAxis)));
+            }
+        }
+
+        private static CliRun Aim(string ground, string position, string find)
+        {
+            string json = """{"aims": [{"name": "a", "ball": {"mass": 0.057, "radius": 0.033}, "air": {"density": 1.21}, "gravity": [0, 0, -9.81], """ +
+                          """ "integrator": "rk4", "step": 0.004166666666666667, "maxTime": 5, "ground": """ + ground +
+                          """, "launch": {"position": """ + position + """}, "find": """ + find + "}]}";
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            int code = Program.Run(new[] { "aim", "-" }, stdout, stderr, new StringReader(json));
+            return new CliRun(code, stdout.ToString(), stderr.ToString());
+        }
+
+        [Test]
+        public void AimClearance_BeyondDoubleRange_IsWrittenAsTheLargestDouble()
+        {
+            // A launch 1.7e308 m up over a ground 1.7e308 m down: every trial clears 1 m by 3.4e308 m, infinite in the
+            // library. The JSON writer refused the infinity and the tool ended with "internal error" (exit 1).
+            CliRun run = Aim("""{"point": [0, 0, -1.7e308], "normal": [0, 0, 1]}""", "[0, 0, 1.7e308]",
+                """{"kind": "minimum-elevation-to-clear", "speed": 30, "plane": {"point": [11.885, 0, 0], "normal": [1, 0, 0]}, "height": 1}""");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement r = run.FirstResult();
+            Assert.That(r.GetProperty("status").GetString(), Is.EqualTo("solved"));
+            Assert.That(r.GetProperty("elevationDegrees").GetDouble(), Is.EqualTo(-45), "the lowest elevation tried already clears");
+            Assert.That(r.GetProperty("miss").GetDouble(), Is.EqualTo(double.MaxValue));
+        }
+
+        [TestCase("elevation-to-reach", "\"speed\": 30")]
+        [TestCase("angles-to-reach", "\"speed\": 30")]
+        [TestCase("speed-to-reach", "\"elevationDegrees\": 10")]
+        public void AimAtATargetBeyondDoubleRange_IsUnreachable(string kind, string parameter)
+        {
+            // The launch at y = 1e308, the target at y = -1e308: their difference overflows. It was exit 2, "target must
+            // not be straight above or below the launch point (horizontal distance NaN m)".
+            CliRun run = Aim("""{"point": [0, 0, 0], "normal": [0, 0, 1]}""", "[0, 1e308, 1]",
+                "{\"kind\": \"" + kind + "\", " + parameter + ", \"target\": [20, -1e308, 0]}");
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            Assert.That(run.FirstResult().GetProperty("status").GetString(), Is.EqualTo("unreachable"));
         }
 
         private static IEnumerable<TestCaseData> NullFields()

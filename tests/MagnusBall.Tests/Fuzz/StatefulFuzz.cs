@@ -41,7 +41,7 @@ namespace MagnusBall.Fuzz
         /// <summary>Calls made; calls that threw (documented); calls per type (FlightStepper, FixedStepDriver, BallBatch, TrajectoryPredictor, AimSolver, constructors).</summary>
         public long Calls, Throws, StepperCalls, DriverCalls, BatchCalls, PredictorCalls, AimCalls, ConstructorCalls;
 
-        /// <summary>Defects: state changed by a throwing call, undocumented exceptions, ArgumentExceptions without a parameter name, NaN or non-finite state after finite input, calls over 10 s.</summary>
+        /// <summary>Defects: state changed by a throwing call, undocumented exceptions, ArgumentExceptions without a parameter name (or, for the aim solves, naming one the call does not have), NaN or non-finite state after finite input, calls over 10 s.</summary>
         public long ChangedAfterThrow, UndocumentedExceptions, UnnamedArgumentErrors, NaNs, NonFiniteStates, Hangs;
 
         /// <summary>The slowest call and what it was.</summary>
@@ -449,24 +449,43 @@ namespace MagnusBall.Fuzz
                 var spin = new LaunchSpin(Number(moderate), Number(moderate), Number(moderate));
                 AimSolution solution = default;
                 Func<string> what = () => $"AimSolver({model}, {integrator.Name}, {step:R}, {flightTime:R} s, scan {scan:R}).solve({position}, {speed:R}, {target})";
-                Action call = _random.Next(4) switch
+                int kind = _random.Next(4);
+                Action call = kind switch
                 {
                     0 => () => solution = aim.ElevationToReach(position, speed, spin, target, Number(true)),
                     1 => () => solution = aim.AnglesToReach(position, speed, spin, target, 45 * _random.NextDouble()),
                     2 => () => solution = aim.SpeedToReach(position, Number(true) % 1.5, Number(true), spin, target),
                     _ => () => solution = aim.MinimumElevationToClear(position, speed, Number(true), spin, RandomPlane(), Number(moderate)),
                 };
+                // A refusal must name a parameter the solve has (a trial's own "state" leaking out is a defect).
+                _parameters = AimParameters[kind];
                 Call(() => { }, call, true, what, invalidOperation: false, result: _ =>
                 {
-                    if (solution.IsSolved)
-                    {
-                        Add(_after, solution.Velocity);
-                        Add(_after, solution.AngularVelocity);
-                        Add(_after, solution.Speed);
-                    }
+                    // Every field of every result (solved, unreachable, at the work cap) finite; the miss may be infinite
+                    // (a distance or clearance beyond a double, or an unreachable solve's +infinity), never NaN.
+                    Add(_after, solution.Velocity);
+                    Add(_after, solution.AngularVelocity);
+                    Add(_after, solution.Speed);
+                    Add(_after, solution.ElevationRadians);
+                    Add(_after, solution.AzimuthRadians);
+                    Add(_after, solution.Arrival);
+                    _derivatives.Add(_after.Count);
+                    Add(_after, solution.Miss);
                 });
+                _parameters = null;
             }
         }
+
+        private static readonly string[][] AimParameters =
+        {
+            new[] { "position", "speed", "spin", "target", "azimuthRadians" },
+            new[] { "position", "speed", "spin", "target", "maximumAzimuthDegrees" },
+            new[] { "position", "elevationRadians", "azimuthRadians", "spin", "target" },
+            new[] { "position", "speed", "azimuthRadians", "spin", "plane", "height" },
+        };
+
+        // The parameters of the call being judged, where the caller knows them (null: any name passes).
+        private string[]? _parameters;
 
         // ---- The judge ----
 
@@ -561,6 +580,11 @@ namespace MagnusBall.Fuzz
                 {
                     UnnamedArgumentErrors++;
                     Fail("unnamed", $"{what()}: ArgumentException without a parameter name: {a.Message}");
+                }
+                else if (_parameters != null && Array.IndexOf(_parameters, a.ParamName) < 0)
+                {
+                    UnnamedArgumentErrors++; // counted with the unnamed: the caller cannot tell which argument was wrong
+                    Fail("misnamed", $"{what()}: ArgumentException naming '{a.ParamName}', which the call does not have: {a.Message}");
                 }
             }
             else if (!(invalidOperation && e is InvalidOperationException))

@@ -211,6 +211,63 @@ namespace MagnusBall.Tests.Fuzz
             Assert.That(ordinary.PositionAt(t).Y, Is.EqualTo(plain));
         }
 
+        [Test]
+        public void CutOfAStepBetweenEndsNear1e308_HasAFiniteSlope()
+        {
+            // Found by the far-aim tests (2026-12-02): a cut's end slope, y0 d00 + m0 d10 + y1 d01 + m1 d11, has y0 d00 and
+            // y1 d01 each up to 1.5 |y| (at mid-step), which overflow for ends near 1.7e308 and cancel, inf - inf = NaN; the
+            // stepper refused the step that held the event (Diverged). A straight fall from 1.7e308 to 1.6e308 in 1 s: the
+            // slope is -1e307 m/s all along.
+            var top = new FlightState(new Vector3d(0, 0, 1.7e308), new Vector3d(0, 0, -1e307), Vector3d.Zero, 0);
+            var bottom = new FlightState(new Vector3d(0, 0, 1.6e308), new Vector3d(0, 0, -1e307), Vector3d.Zero, 1);
+            var fall = new HermiteSegment(top, new StateDerivative(top.Velocity, Vector3d.Zero, Vector3d.Zero),
+                bottom, new StateDerivative(bottom.Velocity, Vector3d.Zero, Vector3d.Zero));
+            Assert.That(fall.TryUntil(0.5, out HermiteSegment cut), Is.True);
+            // The scaled form's rounding: a few units in the last place of the terms it sums, 1.5 x 1.7e308 against a result
+            // of 1e307, so 1e-14 relative.
+            Assert.That(cut.EndDerivative.Velocity.Z, Is.EqualTo(-1e307).Within(1e-14 * 1e307));
+            Assert.That(cut.End.Position.Z, Is.EqualTo(1.65e308).Within(1e-14 * 1.65e308));
+
+            // Ordinary cuts are the plain formula, bit for bit.
+            var a = new FlightState(new Vector3d(1, 2, 3), new Vector3d(4, 5, 6), new Vector3d(7, 8, 9), 0);
+            var b = new FlightState(new Vector3d(2, 3, 1), new Vector3d(3, 2, 1), new Vector3d(9, 8, 7), 0.25);
+            var da = new StateDerivative(a.Velocity, new Vector3d(-1, 0, -9.8), new Vector3d(0.1, 0.2, 0.3));
+            var db = new StateDerivative(b.Velocity, new Vector3d(-2, 1, -9.8), new Vector3d(0.3, 0.2, 0.1));
+            Assert.That(new HermiteSegment(a, da, b, db).TryUntil(0.1, out HermiteSegment ordinary), Is.True);
+            double h = 0.25, sf = 0.1 / h, s2 = sf * sf;
+            double plain = (a.Position.Y * (6 * s2 - 6 * sf) + (a.Velocity.Y * h) * (3 * s2 - 4 * sf + 1) + b.Position.Y * (6 * sf - 6 * s2)
+                            + (b.Velocity.Y * h) * (3 * s2 - 2 * sf)) / h;
+            Assert.That(ordinary.EndDerivative.Velocity.Y, Is.EqualTo(plain));
+        }
+
+        [Test]
+        public void Crossing_AtMidStepOfAFlightNear1e308Up_IsFound_NotRefused()
+        {
+            // The same through the stepper: a ball 1.7e308 m up (its height cannot change at that scale) flown at 1/240 s
+            // toward a net at x = 11.885 m. At -45 degrees the step holding the crossing was refused as diverged (the cut's
+            // slope overflowed); at -44 degrees, the crossing fell where the slope's terms stayed finite.
+            var model = new FlightModel(new Ball(0.057, 0.033), new Air(1.21), new Vector3d(0, 0, -9.81));
+            var ground = new Plane(new Vector3d(0, 0, -1.7e308), Vector3d.UnitZ);
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            foreach (double degrees in new[] { -45.0, -44.5, -44.0 })
+            {
+                var stepper = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(Vector3d.UnitZ, ground, new[] { net }));
+                double e = degrees * Math.PI / 180;
+                stepper.Reset(new FlightState(new Vector3d(0, 0, 1.7e308), new Vector3d(30 * Math.Cos(e), 0, 30 * Math.Sin(e)), Vector3d.Zero));
+                StepOutcome outcome = StepOutcome.Taken;
+                for (int i = 0; i < 1000 && outcome == StepOutcome.Taken && !stepper.IsStopped; i++)
+                {
+                    outcome = stepper.TryStep(1.0 / 240, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing);
+                }
+
+                Assert.That(stepper.IsStopped, Is.True, $"{degrees} deg: {outcome}");
+                Assert.That(stepper.StopEvent.Kind, Is.EqualTo(FlightEventKinds.PlaneCrossing));
+                Assert.That(stepper.StopEvent.State.IsFinite, Is.True);
+                // The crossing is located to the search's time tolerance; at 30 m/s or less that moves x by under 30 x it.
+                Assert.That(stepper.StopEvent.State.Position.X, Is.EqualTo(11.885).Within(30 * HermiteSegment.TimeTolerance));
+            }
+        }
+
         [TestCase(1.0)]
         [TestCase(4.149515568880993e+180)] // 2^600: past 1e150, scaled back to exactly the k = 1 numbers
         [TestCase(1.0715086071862673e+301)] // 2^1000

@@ -349,6 +349,10 @@ namespace MagnusBall.Integration
             return new HermiteSegment(Start, StartDerivative, end, endDerivative);
         }
 
+        // The slope (times h) of the cubic Hermite at fraction s, for a cut's end. A component that overflows although its
+        // inputs are finite (ends near 1e308: y0 d00 and y1 d01 are each up to 1.5 |y|, and cancel, inf - inf) is evaluated
+        // again with its inputs scaled by 2^-600 and the result scaled back (infinite only where the slope itself exceeds a
+        // double). Finite results are the plain formula's, bit for bit.
         private static Vector3d CubicSlope(in Vector3d y0, in Vector3d m0, in Vector3d y1, in Vector3d m1, double s)
         {
             double s2 = s * s;
@@ -356,7 +360,25 @@ namespace MagnusBall.Integration
             double d10 = 3 * s2 - 4 * s + 1;
             double d01 = 6 * s - 6 * s2;
             double d11 = 3 * s2 - 2 * s;
-            return y0 * d00 + m0 * d10 + y1 * d01 + m1 * d11;
+            double x = y0.X * d00 + m0.X * d10 + y1.X * d01 + m1.X * d11;
+            double y = y0.Y * d00 + m0.Y * d10 + y1.Y * d01 + m1.Y * d11;
+            double z = y0.Z * d00 + m0.Z * d10 + y1.Z * d01 + m1.Z * d11;
+            if (!double.IsFinite(x + y + z))
+            {
+                x = double.IsFinite(x) ? x : ScaledSlope(d00, d10, d01, d11, y0.X, m0.X, y1.X, m1.X);
+                y = double.IsFinite(y) ? y : ScaledSlope(d00, d10, d01, d11, y0.Y, m0.Y, y1.Y, m1.Y);
+                z = double.IsFinite(z) ? z : ScaledSlope(d00, d10, d01, d11, y0.Z, m0.Z, y1.Z, m1.Z);
+            }
+
+            return new Vector3d(x, y, z);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static double ScaledSlope(double d00, double d10, double d01, double d11, double y0, double m0, double y1, double m1)
+        {
+            const double Down = 2.409919865102884e-181; // 2^-600
+            const double Up = 4.149515568880993e+180;    // 2^600
+            return ((y0 * Down) * d00 + (m0 * Down) * d10 + (y1 * Down) * d01 + (m1 * Down) * d11) * Up;
         }
 
         // The cubic Hermite through (y0, d0) and (y1, d1) over a step h, at fraction s. A component that overflows although

@@ -63,6 +63,9 @@ namespace MagnusBall.Queries
         /// </summary>
         public const double TrialTolerance = 1e-8;
 
+        /// <summary>The most passes of <see cref="SpeedToReach"/>'s fallback scan (1 % steps up to the maximum speed take 99).</summary>
+        private const int MaximumSpeedScanPasses = 101;
+
         /// <summary>The longest adaptive trial step, s.</summary>
         private const double LongestAdaptiveStep = 0.5;
 
@@ -237,8 +240,8 @@ namespace MagnusBall.Queries
         /// <param name="azimuthRadians">Azimuth from the plane's normal (its horizontal part) toward the frame's side, rad; finite.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="plane">The plane to clear (a net); its normal must not be vertical.</param>
-        /// <param name="height">Height above the ground the ball's centre must pass at, m; finite.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable.</returns>
+        /// <param name="height">Height above the ground the ball's centre must pass at, m; finite, and such that the ground's point plus its normal times the height is finite.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the clearance above the height) or Unreachable. Points near 1e308 m apart give no NaN: a plane beyond what a double holds is Unreachable.</returns>
         /// <exception cref="ArgumentException">An argument is out of range, or the position is not on the plane's negative side; the message names it.</exception>
         public AimSolution MinimumElevationToClear(
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height) =>
@@ -270,8 +273,16 @@ namespace MagnusBall.Queries
                     nameof(position));
             }
 
+            Vector3d required = Ground.Point + Ground.Normal * height;
+            if (!required.IsFinite)
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(height), height,
+                    $"height must keep the required point, the ground's point plus its normal times the height, within the range of a double; got {Require.Format(height)} m from a ground point {Ground.Point}.");
+            }
+
             var frame = new LaunchFrame(up, plane.Normal);
-            var goal = new AimGoal(position, frame, spin, plane, Ground.Point + Ground.Normal * height, missToTarget: false);
+            var goal = new AimGoal(position, frame, spin, plane, required, missToTarget: false);
             // The vacuum guess: the horizontal path to the plane along the launch's horizontal direction.
             double along = Vector3d.Dot(plane.Normal, frame.Direction(0, azimuthRadians));
             double path = along > 0 ? -side / along : double.NaN;
@@ -388,8 +399,12 @@ namespace MagnusBall.Queries
                 return WithFlights(atLo);
             }
 
-            // Bounded: at most 100 passes (1 % steps up to the maximum speed).
-            for (double v = lo + scan; v <= MaximumSpeed * (1 + 1e-12); v += scan)
+            // Bounded: at most 100 passes (1 % steps up to the maximum speed), by count too: a maximum speed below about
+            // 1e-322 m/s makes the 1 % step round to 0 (the loop stood still, for ever), and one near double.MaxValue
+            // makes the end test's MaximumSpeed (1 + 1e-12) infinite.
+            int passes = 0;
+            double last = Math.Min(double.MaxValue, MaximumSpeed * (1 + 1e-12)); // no trial at an infinite speed
+            for (double v = lo + scan; v <= last && passes < MaximumSpeedScanPasses; v += scan, passes++)
             {
                 double fv = margin.Evaluate(v, out AimSolution atV);
                 if (fv >= 0)
@@ -526,7 +541,7 @@ namespace MagnusBall.Queries
         private bool TryBothAngles(in AimGoal goal, double speed, double azimuthLimit, out AimSolution solved)
         {
             solved = default;
-            double distance = Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward);
+            double distance = Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward);
             double e = VacuumAim.LowElevation(_gravity, speed, distance, goal.Rise, out double slope);
             if (double.IsNaN(e) || !(slope > 0))
             {
@@ -568,7 +583,7 @@ namespace MagnusBall.Queries
                     return false;
                 }
 
-                double lateral = Vector3d.Dot(s.Arrival.Position - goal.Target, goal.Frame.Side);
+                double lateral = Vector3d.DotOfDifference(s.Arrival.Position, goal.Target, goal.Frame.Side);
                 if (update)
                 {
                     // Broyden's update with the step taken and the change of the residual.
@@ -637,7 +652,7 @@ namespace MagnusBall.Queries
 
             // The lateral miss grows with azimuth (about distance x azimuth): step toward zero by that estimate,
             // widening until the sign changes.
-            double distance = Math.Max(1e-3, Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward));
+            double distance = Math.Max(1e-3, Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward));
             double direction = f0 > 0 ? -1 : 1;
             double stride = Math.Min(limit, Math.Max(Math.Abs(f0) / distance * 1.5, 1e-3));
             double a1 = a0, f1 = f0;
@@ -709,14 +724,38 @@ namespace MagnusBall.Queries
             Vector3d up = Model.Up;
             Vector3d toTarget = target - position;
             Vector3d horizontal = toTarget - up * Vector3d.Dot(toTarget, up);
-            if (!(horizontal.Length > 1e-6))
+            double length = horizontal.Length;
+            if (!double.IsFinite(length))
+            {
+                // The target near 1e308 away: the difference (or its part along up) overflowed. Its quarter does not
+                // (quartering is exact but for subnormals), and the frame needs only the direction.
+                Vector3d quarter = 0.25 * target - 0.25 * position;
+                horizontal = quarter - up * Vector3d.Dot(quarter, up);
+                length = 4 * horizontal.Length;
+            }
+
+            if (!(length > 1e-6))
             {
                 throw new ArgumentException(
-                    $"target must not be straight above or below the launch point (horizontal distance {Require.Format(horizontal.Length)} m).",
+                    $"target must not be straight above or below the launch point (horizontal distance {Require.Format(length)} m).",
                     nameof(target));
             }
 
-            var frame = new LaunchFrame(up, horizontal);
+            LaunchFrame frame;
+            try
+            {
+                frame = new LaunchFrame(up, horizontal);
+            }
+            catch (ArgumentException)
+            {
+                // The horizontal part is over 1e-6 m but within LaunchFrame's 1e-9 of its own length of up: rounding left
+                // over from a target far along up (a horizontal of 4e292 m beside 1.8e308 m along a tilted up). The caller
+                // gave a target, not a forward: name it.
+                throw new ArgumentException(
+                    $"target must not be straight above or below the launch point (horizontal distance {Require.Format(length)} m is rounding beside its distance along up).",
+                    nameof(target));
+            }
+
             return new AimGoal(position, frame, spin, new Plane(target, frame.Forward), target, missToTarget: true);
         }
 
@@ -724,7 +763,7 @@ namespace MagnusBall.Queries
         private static double PathToTarget(in AimGoal goal, double azimuth)
         {
             double along = Vector3d.Dot(goal.Frame.Forward, goal.Frame.Direction(0, azimuth));
-            return along > 0 ? Vector3d.Dot(goal.Target - goal.Position, goal.Frame.Forward) / along : double.NaN;
+            return along > 0 ? Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward) / along : double.NaN;
         }
 
         private struct ElevationMargin : IAimMargin
@@ -788,7 +827,7 @@ namespace MagnusBall.Queries
                 }
 
                 _hint = elevation;
-                return Vector3d.Dot(solution.Arrival.Position - _goal.Target, _goal.Frame.Side);
+                return Vector3d.DotOfDifference(solution.Arrival.Position, _goal.Target, _goal.Frame.Side);
             }
         }
     }

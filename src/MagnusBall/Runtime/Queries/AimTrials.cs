@@ -28,8 +28,8 @@ namespace MagnusBall.Queries
             MissToTarget = missToTarget;
         }
 
-        /// <summary>The target's height above the launch point, along up, m.</summary>
-        public double Rise => Vector3d.Dot(Target - Position, Frame.Up);
+        /// <summary>The target's height above the launch point, along up, m (infinite where it exceeds a double, never NaN).</summary>
+        public double Rise => Vector3d.DotOfDifference(Target, Position, Frame.Up);
     }
 
     /// <summary>
@@ -110,9 +110,21 @@ namespace MagnusBall.Queries
             Vector3d velocity = direction * speed;
             Vector3d spin = goal.Spin.AngularVelocity(direction, goal.Frame);
             double margin;
-            if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out FlightState arrival, out bool landed))
+            FlightState arrival;
+            bool landed;
+            if (!spin.IsFinite || !velocity.IsFinite)
             {
-                margin = Vector3d.Dot(arrival.Position - goal.Target, _up);
+                // Rates near double.MaxValue resolve to an angular velocity beyond what a double holds at this direction, or
+                // a speed near double.MaxValue times the direction overflows (the state would refuse either): the trial
+                // cannot be flown, and fails like a diverged one; not counted as a flight.
+                spin = Vector3d.Zero;
+                velocity = Vector3d.Zero;
+                arrival = new FlightState(goal.Position, velocity, spin);
+                margin = double.NegativeInfinity;
+            }
+            else if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out arrival, out landed))
+            {
+                margin = Vector3d.DotOfDifference(arrival.Position, goal.Target, _up); // never NaN: the target may be near 1e308 away
             }
             else
             {
@@ -139,7 +151,7 @@ namespace MagnusBall.Queries
             double extended = double.NaN;
             if (toward > 0)
             {
-                extended = Vector3d.Dot(landing.Position - goal.Target, _up) - Vector3d.Dot(landing.Velocity, _up) * (distance / toward);
+                extended = Vector3d.DotOfDifference(landing.Position, goal.Target, _up) - Vector3d.Dot(landing.Velocity, _up) * (distance / toward);
             }
 
             return Math.Min(double.IsFinite(extended) ? extended : distance, -double.Epsilon);
