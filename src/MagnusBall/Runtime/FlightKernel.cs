@@ -199,7 +199,7 @@ namespace MagnusBall
                     az += rz * dragScale;
                 }
 
-                if (_lift.IsPresent && spinRate > 0)
+                if (_lift.IsPresent && spinRate > FlightModel.MinimumLiftSpinRate)
                 {
                     // F_M / m = (rho A / 2m) C_L s^2 (w x v_hat) / |w|  (transverse-spin form)
                     double liftScale = _factor * _lift.Coefficient(conditions) * speed * speed / spinRate;
@@ -245,7 +245,7 @@ namespace MagnusBall
                     az += rz * dragScale;
                 }
 
-                if (_lift.IsPresent && spinRate > 0)
+                if (_lift.IsPresent && spinRate > FlightModel.MinimumLiftSpinRate)
                 {
                     double liftScale = _factor * _lift.Coefficient(plain) * speed * inverseSpinRate;
                     // (w x v_rel) liftScale, Vector3d.Cross's formula
@@ -271,7 +271,7 @@ namespace MagnusBall
         {
             AeroInputs reads = _drag.Reads | _lift.Reads | _decay.Reads;
             spinRate = _lift.IsPresent || (reads & AeroInputs.SpinRate) != 0 ? Vector3d.LengthOf(wx, wy, wz) : 0;
-            inverseSpinRate = reads == AeroInputs.None && _lift.IsPresent && spinRate > 0 ? 1.0 / spinRate : 0;
+            inverseSpinRate = reads == AeroInputs.None && _lift.IsPresent && spinRate > FlightModel.MinimumLiftSpinRate ? 1.0 / spinRate : 0;
         }
 
         internal override StateDerivative Derivative(in FlightState state)
@@ -597,7 +597,8 @@ namespace MagnusBall
         // range test, the minimum speed, the lift's spin test) become one test at the end (a spinless state is declined
         // first). Mono's JIT keeps no double in a register from one basic block to the next, so there every branch stored
         // and reloaded the whole dependent chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
-        // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, no spin):
+        // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, a spin rate at or below
+        // FlightModel.MinimumLiftSpinRate):
         // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
         // (FlightKernelTests.StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit: the same steps on a model with
         // a counter attached, which takes the general code). The stages are written out, as in Rk4Unrolled: a shared stage
@@ -609,9 +610,9 @@ namespace MagnusBall
             Vector3d p = state.Position, w = state.AngularVelocity;
             double wx = w.X, wy = w.Y, wz = w.Z;
             double spinRate = Vector3d.LengthOf(wx, wy, wz);
-            if (!(spinRate > 0))
+            if (!(spinRate > FlightModel.MinimumLiftSpinRate))
             {
-                // No spin (no lift): known before the chain starts, so the general step is not paid on top of this one.
+                // No lift (no spin, or at most FlightModel.MinimumLiftSpinRate): known before the chain starts, so the general step is not paid on top of this one.
                 end = default;
                 endAcceleration = default;
                 return false;

@@ -33,6 +33,15 @@ namespace MagnusBall
         /// </summary>
         public const double MinimumAerodynamicSpeed = 1e-150;
 
+        /// <summary>
+        /// At or below this spin rate (rad/s) the lift is taken as exactly zero. A lift law that grows with spin gives
+        /// far less than double precision's resolution of gravity there; a constant C_L (the thesis model) would give its
+        /// full Magnus force for any spin however small, and its direction, (w x v_hat) / |w|, from a reciprocal that
+        /// overflows for spin rates below about 2e-308 rad/s. The same cut-off everywhere: the general formula, the
+        /// kernel, the ball batch.
+        /// </summary>
+        public const double MinimumLiftSpinRate = 1e-150;
+
         private readonly double _dragFactor; // rho A / (2 m), 1/m
         private readonly double _kinematicRadius;
         private readonly double _viscosity;
@@ -228,7 +237,7 @@ namespace MagnusBall
                             acceleration += relative * dragScale;
                         }
 
-                        if (Lift != null && spinRate > 0)
+                        if (Lift != null && spinRate > MinimumLiftSpinRate)
                         {
                             // F_M / m = (rho A / 2m) C_L s^2 (w x v_hat) / |w|  (transverse-spin form)
                             double liftScale = _dragFactor * Lift.LiftCoefficient(conditions) * speed * speed / spinRate;
@@ -312,7 +321,7 @@ namespace MagnusBall
                         acceleration = Overflow.Add(acceleration, Overflow.Multiply(direction, -drag));
                     }
 
-                    if (Lift != null && spinRate > 0)
+                    if (Lift != null && spinRate > MinimumLiftSpinRate)
                     {
                         double lift = Overflow.Multiply(pressure, Lift.LiftCoefficient(conditions));
                         acceleration = Overflow.Add(acceleration, Overflow.Multiply(liftAxis, lift));
@@ -399,7 +408,7 @@ namespace MagnusBall
             if (_hasAero && speed > 0)
             {
                 double drag = Drag?.DragCoefficient(conditions) ?? 0;
-                double lift = Lift != null && spinRate > 0 ? Math.Abs(Lift.LiftCoefficient(conditions)) : 0;
+                double lift = Lift != null && spinRate > MinimumLiftSpinRate ? Math.Abs(Lift.LiftCoefficient(conditions)) : 0;
                 rate = 2 * _dragFactor * speed * (Math.Abs(drag) + lift);
             }
 

@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Batch;
 using NUnit.Framework;
 
 namespace MagnusBall.Tests.Robustness
@@ -14,6 +15,40 @@ namespace MagnusBall.Tests.Robustness
         private static bool NoNaN(in StateDerivative d) =>
             !double.IsNaN(d.Acceleration.X) && !double.IsNaN(d.Acceleration.Y) && !double.IsNaN(d.Acceleration.Z) &&
             !double.IsNaN(d.AngularAcceleration.X) && !double.IsNaN(d.AngularAcceleration.Y) && !double.IsNaN(d.AngularAcceleration.Z);
+
+        [Test]
+        public void LiftAtSubnormalSpin_IsZero_AndTheStepFinite()
+        {
+            // A constant C_L (the thesis model) formed 1/|w|, which overflows below about 2.2e-308 rad/s: the kernel's
+            // derivative was (NaN, -inf, inf) and the RK4 step not finite. At or below FlightModel.MinimumLiftSpinRate the
+            // lift is zero in the general formula, the kernel and the batch alike, so such a spin flies as no spin.
+            Assert.That(FlightModel.MinimumLiftSpinRate, Is.EqualTo(1e-150));
+            var model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var spinless = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), default);
+            StateDerivative k0 = model.Derivative(spinless);
+            FlightState expected = MagnusBall.Integration.RungeKutta4.Instance.Step(model, spinless, k0, 1.0 / 240, out StateDerivative expectedEnd, out _);
+            foreach (Vector3d spin in new[] { new Vector3d(1e-310, 0, 0), new Vector3d(5e-324, 0, 0), new Vector3d(0, -1e-200, 3e-160), new Vector3d(1e-150, 0, 0) })
+            {
+                var state = new FlightState(spinless.Position, spinless.Velocity, spin);
+                StateDerivative kernel = model.Kernel.Derivative(state);
+                Assert.That(kernel.Acceleration, Is.EqualTo(k0.Acceleration), $"kernel derivative at w = {spin}");
+                Assert.That(model.GeneralDerivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"general formula at w = {spin}");
+                FlightState next = MagnusBall.Integration.RungeKutta4.Instance.Step(model, state, model.Derivative(state), 1.0 / 240, out StateDerivative end, out _);
+                Assert.That(next.Position, Is.EqualTo(expected.Position), $"RK4 at w = {spin}");
+                Assert.That(next.Velocity, Is.EqualTo(expected.Velocity), $"RK4 at w = {spin}");
+                Assert.That(end.Acceleration, Is.EqualTo(expectedEnd.Acceleration), $"RK4's end rates at w = {spin}");
+
+                var batch = new BallBatch(model, 1);
+                batch.Add(state);
+                batch.Advance(1.0 / 240);
+                Assert.That(batch.GetState(0).Velocity, Is.EqualTo(expected.Velocity), $"batch at w = {spin}");
+            }
+
+            // Just above the cut-off the lift is the constant C_L's full force again (the thesis model's own behaviour).
+            var above = new FlightState(spinless.Position, spinless.Velocity, new Vector3d(0, 2e-150, 0));
+            Assert.That(model.Derivative(above).Acceleration.X, Is.Not.EqualTo(k0.Acceleration.X));
+            Assert.That(model.Derivative(above).Acceleration.IsFinite, Is.True);
+        }
 
         [Test]
         public void Length_ScalesBeforeSquaring()

@@ -187,7 +187,7 @@ namespace MagnusBall.Batch
                 // No law reads a spin parameter: the kernel's folded form, ((rho A / 2m) C_L s / |w|) (w x v_rel).
                 Vector<double> cx = wy * rz - wz * ry, cy = wz * rx - wx * rz, cz = wx * ry - wy * rx;
                 Vector<double> liftScale = new Vector<double>(_liftConstant) * speed * (Vector<double>.One / spinRate);
-                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, Vector<double>.Zero);
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
                 ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
                 ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
                 az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
@@ -211,7 +211,7 @@ namespace MagnusBall.Batch
                 }
 
                 Vector<double> liftScale = liftTimesFactor * speed * speed / spinRate;
-                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, Vector<double>.Zero);
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
                 ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
                 ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
                 az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
