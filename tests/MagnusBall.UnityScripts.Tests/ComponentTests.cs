@@ -115,6 +115,26 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void ASubnormalSpin_LeavesTheDrawnRotationFinite()
+        {
+            // rotateWithSpin turned the ball about w / |w|, which divides by multiplying with 1/|w|: +inf for |w| below
+            // 1/double.MaxValue = 5.6e-309 rad/s, so the axis was (inf, NaN, NaN) and the transform's rotation NaN from the
+            // first frame (a finite launch). The turn there is 0 degrees: the rotation must stay the identity.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            StubControl.DeltaTime = 1f / 60f;
+            var start = new FlightState(new Vector3d(Start.x, Start.y, Start.z), new Vector3d(Velocity.x, Velocity.y, Velocity.z), new Vector3d(1e-310, 0, 0));
+            flight.Launch(start);
+            for (int frame = 0; frame < 5; frame++)
+            {
+                Call(flight, "Update");
+            }
+
+            Quaternion r = flight.transform.rotation;
+            Assert.That(flight.IsFlying, Is.True);
+            Assert.That((r.x, r.y, r.z, r.w), Is.EqualTo((0f, 0f, 0f, 1f)), "a 0-degree turn about a unit axis");
+        }
+
+        [Test]
         public void AfterTheFlight_TheBallIsDrawnWhereItEnded()
         {
             // The driver draws the ball a step behind the simulation, so the frame that takes the landing step can leave the

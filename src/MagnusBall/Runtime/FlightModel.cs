@@ -34,11 +34,12 @@ namespace MagnusBall
         public const double MinimumAerodynamicSpeed = 1e-150;
 
         /// <summary>
-        /// At or below this spin rate (rad/s) the lift is taken as exactly zero. A lift law that grows with spin gives
-        /// far less than double precision's resolution of gravity there; a constant C_L (the thesis model) would give its
-        /// full Magnus force for any spin however small, and its direction, (w x v_hat) / |w|, from a reciprocal that
-        /// overflows for spin rates below about 2e-308 rad/s. The same cut-off everywhere: the general formula, the
-        /// kernel, the ball batch.
+        /// At or below this spin rate (rad/s) the lift is taken as exactly zero. A lift law whose C_L vanishes like the
+        /// spin parameter (Stepanek's, Nathan's, a linear one) gives far less than double precision's resolution of
+        /// gravity there; a C_L that does not vanish at S = 0 (a constant, as in the thesis model, or a table whose first
+        /// C_L is not 0) would give its full Magnus force for any spin however small, and its direction, (w x v_hat) / |w|,
+        /// from a quotient by |w| that overflows near 1e-308 rad/s (1/|w| below 1/double.MaxValue = 5.6e-309 rad/s): such
+        /// a law's lift jumps to 0 here. The same cut-off everywhere: the general formula, the kernel, the ball batch.
         /// </summary>
         public const double MinimumLiftSpinRate = 1e-150;
 

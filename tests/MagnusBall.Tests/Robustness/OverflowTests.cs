@@ -1,6 +1,9 @@
 using System;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Batch;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+using MagnusBall.Queries;
 using NUnit.Framework;
 
 namespace MagnusBall.Tests.Robustness
@@ -19,7 +22,7 @@ namespace MagnusBall.Tests.Robustness
         [Test]
         public void LiftAtSubnormalSpin_IsZero_AndTheStepFinite()
         {
-            // A constant C_L (the thesis model) formed 1/|w|, which overflows below about 2.2e-308 rad/s: the kernel's
+            // A constant C_L (the thesis model) formed 1/|w|, which overflows below 1/double.MaxValue = 5.6e-309 rad/s: the kernel's
             // derivative was (NaN, -inf, inf) and the RK4 step not finite. At or below FlightModel.MinimumLiftSpinRate the
             // lift is zero in the general formula, the kernel and the batch alike, so such a spin flies as no spin.
             Assert.That(FlightModel.MinimumLiftSpinRate, Is.EqualTo(1e-150));
@@ -48,6 +51,120 @@ namespace MagnusBall.Tests.Robustness
             var above = new FlightState(spinless.Position, spinless.Velocity, new Vector3d(0, 2e-150, 0));
             Assert.That(model.Derivative(above).Acceleration.X, Is.Not.EqualTo(k0.Acceleration.X));
             Assert.That(model.Derivative(above).Acceleration.IsFinite, Is.True);
+        }
+
+        [Test]
+        public void LiftAtSubnormalSpin_EveryIntegratorAndDriver_FliesAsNoSpin()
+        {
+            // The same cut-off through every other way a step is taken: DP54's fixed step (the kernel's stages; before the
+            // cut-off its NaN check sent the step to the general stages, whose scaled fallback gave the constant C_L's full
+            // lift), DP54's adaptive steps, Heun (the kernel's own Heun, NaN before), a FlightStepper and a
+            // TrajectoryPredictor end to end (refused at the first step before). A spin at or below the cut-off must give
+            // the spinless flight's very numbers: with no spin decay the spin is carried unchanged and read by nothing else.
+            var model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var spinless = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), default);
+            const double h = 1.0 / 240;
+            foreach (Vector3d spin in new[] { new Vector3d(1e-310, 0, 0), new Vector3d(5e-324, -5e-324, 0), new Vector3d(0, 7e-151, -7e-151) })
+            {
+                var state = new FlightState(spinless.Position, spinless.Velocity, spin);
+                foreach (IIntegrator method in new IIntegrator[] { DormandPrince54.Instance, Heun.Instance })
+                {
+                    FlightState expected = method.Step(model, spinless, model.Derivative(spinless), h, out StateDerivative expectedEnd, out _);
+                    FlightState next = method.Step(model, state, model.Derivative(state), h, out StateDerivative end, out _);
+                    Assert.That(next.Velocity, Is.EqualTo(expected.Velocity), $"{method} at w = {spin}");
+                    Assert.That(next.Position, Is.EqualTo(expected.Position), $"{method} at w = {spin}");
+                    Assert.That(end.Acceleration, Is.EqualTo(expectedEnd.Acceleration), $"{method}'s end rates at w = {spin}");
+                }
+
+                var reference = new FlightStepper(model, DormandPrince54.Instance);
+                var adaptive = new FlightStepper(model, DormandPrince54.Instance);
+                reference.Reset(spinless);
+                adaptive.Reset(state);
+                for (int i = 0; i < 20; i++)
+                {
+                    Assert.That(reference.TryStepAdaptive(DormandPrince54.Instance, 0.05), Is.EqualTo(StepOutcome.Taken));
+                    Assert.That(adaptive.TryStepAdaptive(DormandPrince54.Instance, 0.05), Is.EqualTo(StepOutcome.Taken), $"adaptive step {i} at w = {spin}");
+                    Assert.That(adaptive.State.Velocity, Is.EqualTo(reference.State.Velocity), $"adaptive step {i} at w = {spin}");
+                    Assert.That(adaptive.State.Time, Is.EqualTo(reference.State.Time), $"adaptive step {i} at w = {spin}");
+                }
+
+                var events = new FlightEventSet(model.Up, Plane.Ground(model));
+                var expectedRun = new TrajectoryPredictor(model, RungeKutta4.Instance, h, events).Predict(spinless, 5, Span<Vector3d>.Empty);
+                Prediction run = new TrajectoryPredictor(model, RungeKutta4.Instance, h, events).Predict(state, 5, Span<Vector3d>.Empty);
+                Assert.That(expectedRun.Stopped, Is.True, "the spinless serve lands within 5 s");
+                Assert.That(run.Diverged, Is.False, $"predictor at w = {spin}");
+                Assert.That(run.Stopped, Is.True, $"predictor at w = {spin}");
+                Assert.That(run.EndState.Position, Is.EqualTo(expectedRun.EndState.Position), $"predictor's landing at w = {spin}");
+                Assert.That(run.Steps, Is.EqualTo(expectedRun.Steps), $"predictor at w = {spin}");
+            }
+        }
+
+        [Test]
+        public void ConstantLift_WithSpinDecayingThroughTheCutOff_FliesOnFinite()
+        {
+            // A constant C_L with exponential spin decay (tau = 5 ms, well inside RK4's stability limit at 1/240 s): the spin
+            // falls from 100 rad/s through the cut-off (after tau ln(1e152) = 1.75 s) and on through the subnormals (below
+            // about 5e-309 rad/s after 3.5 s, where 1/|w| overflows) to 0. Every RK4 step, every adaptive DP54 step and the
+            // batch must go on finite; before the cut-off the RK4 step went non-finite once the spin was subnormal.
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Vector3d.Zero).WithSpinDecay(new ExponentialSpinDecay(0.005));
+            var start = new FlightState(Vector3d.Zero, new Vector3d(30, 1, 5), new Vector3d(0, 100, 20));
+            var rk4 = new FlightStepper(model, RungeKutta4.Instance);
+            rk4.Reset(start);
+            var batch = new BallBatch(model, 1, new Plane(new Vector3d(0, 0, -1e6), Vector3d.UnitZ));
+            batch.Add(start);
+            bool crossed = false, subnormal = false;
+            for (int i = 0; i < 5 * 240; i++)
+            {
+                Assert.That(rk4.TryStep(1.0 / 240), Is.EqualTo(StepOutcome.Taken), $"RK4 step {i}, w = {rk4.State.AngularVelocity}");
+                double rate = rk4.State.AngularVelocity.Length;
+                crossed |= rate > 0 && rate <= FlightModel.MinimumLiftSpinRate;
+                subnormal |= rate > 0 && rate < 2.2250738585072014e-308;
+            }
+
+            batch.Advance(1.0 / 240, 5 * 240);
+            Assert.That(crossed && subnormal, Is.True, "the spin passed the cut-off and the subnormals");
+            Assert.That(rk4.State.IsFinite, Is.True);
+            Assert.That(batch.HasDiverged(0), Is.False);
+            Assert.That(batch.GetState(0).Velocity, Is.EqualTo(rk4.State.Velocity), "the batch is the single-ball path");
+
+            var dp = new FlightStepper(model, DormandPrince54.Instance);
+            dp.Reset(start);
+            // 5 s at most 0.05 s a step is 100 steps; the lift's jump at the cut-off costs a few rejections inside a step.
+            for (int i = 0; i < 1000 && dp.State.Time < 5; i++)
+            {
+                Assert.That(dp.TryStepAdaptive(DormandPrince54.Instance, 0.05), Is.EqualTo(StepOutcome.Taken), $"DP54 step {i}, w = {dp.State.AngularVelocity}");
+            }
+
+            Assert.That(dp.State.Time, Is.GreaterThanOrEqualTo(5));
+            Assert.That(dp.State.IsFinite, Is.True);
+            Assert.That(dp.State.AngularVelocity.Length, Is.LessThanOrEqualTo(FlightModel.MinimumLiftSpinRate));
+        }
+
+        [Test]
+        public void LiftLawsThatDoNotVanishAtZeroSpin_AreCutOffToo_AndTheOthersLoseNothing()
+        {
+            // A PiecewiseLinearLift whose first C_L is not 0 holds it for every S below its first point, as a constant C_L
+            // does: at a subnormal spin its kernel lift divided by |w| (s^2 / |w| overflowed: NaN, and a non-finite RK4 step
+            // before the cut-off). Stepanek's lift, C_L = S / (2.022 S + 0.981) -> 0, gives at 2e-150 rad/s (just above the
+            // cut-off) a lift of about k s r |w| = 1e-153 m/s^2: nothing at the acceleration's resolution (ulp(17) = 3.6e-15).
+            var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(1e-310, 0, 0));
+            var spinless = new FlightState(state.Position, state.Velocity, default);
+            var table = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, ConstantDrag.ThesisTennis,
+                new PiecewiseLinearLift(new[] { 0.0, 0.2 }, new[] { 0.15, 0.3 }));
+            var stepanek = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance);
+            foreach (FlightModel model in new[] { table, stepanek })
+            {
+                StateDerivative k0 = model.Derivative(spinless);
+                FlightState expected = RungeKutta4.Instance.Step(model, spinless, k0, 1.0 / 240, out _, out _);
+                Assert.That(model.Kernel.Derivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"{model.Lift} kernel");
+                Assert.That(model.GeneralDerivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"{model.Lift} general formula");
+                FlightState next = RungeKutta4.Instance.Step(model, state, model.Derivative(state), 1.0 / 240, out _, out _);
+                Assert.That(next.Velocity, Is.EqualTo(expected.Velocity), $"{model.Lift} RK4");
+            }
+
+            var above = new FlightState(state.Position, state.Velocity, new Vector3d(0, 2e-150, 0));
+            Assert.That(stepanek.Derivative(above).Acceleration, Is.EqualTo(stepanek.Derivative(spinless).Acceleration), "Stepanek just above the cut-off");
+            Assert.That(table.Derivative(above).Acceleration.X, Is.Not.EqualTo(table.Derivative(spinless).Acceleration.X), "the table's C_L 0.15 just above");
         }
 
         [Test]

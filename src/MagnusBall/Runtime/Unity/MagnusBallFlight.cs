@@ -345,8 +345,9 @@ namespace MagnusBall.Components
                 if (rate > 0)
                 {
                     // Unity rotates by the left-hand rule, the convention the spin is in: the axis goes in unchanged.
+                    // NormalizedOrZero, not w / rate: that multiplies by 1/rate, +inf below 5.6e-309 rad/s (a NaN axis).
                     float degrees = (float)(rate * Time.deltaTime * (180.0 / Math.PI));
-                    transform.rotation = Quaternion.AngleAxis(degrees, UnityFrame.ToUnity(render.AngularVelocity / rate)) * transform.rotation;
+                    transform.rotation = Quaternion.AngleAxis(degrees, UnityFrame.ToUnity(render.AngularVelocity.NormalizedOrZero())) * transform.rotation;
                 }
             }
         }
