@@ -149,6 +149,48 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void BallsSpinningPast1e154_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // The vector lanes take |w| as a plain square root of the squares, which overflows past about 1.3e154 rad/s where
+            // the kernel scales first: the thesis model's ball then flew without lift and Stepanek's was stopped as
+            // diverged. Such a vector now takes the per-ball kernel step; its neighbours in the vector are unchanged
+            // (they equal the single-ball path either way).
+            var ground = new Plane(new Vector3d(0, 0, -1e6), Vector3d.UnitZ);
+            foreach (FlightModel model in new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance),
+            })
+            {
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 1e160, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(3e200, -4e200, 1e155)),
+                };
+                var batch = new BallBatch(model, starts.Length, ground);
+                var steppers = new FlightStepper[starts.Length];
+                for (int i = 0; i < starts.Length; i++)
+                {
+                    batch.Add(starts[i]);
+                    steppers[i] = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(Vector3d.Zero, ground));
+                    steppers[i].Reset(starts[i]);
+                }
+
+                for (int step = 0; step < 24; step++)
+                {
+                    batch.Advance(1.0 / 240);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        Assert.That(steppers[i].TryStep(1.0 / 240, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}, step {step}");
+                        Assert.That(batch.HasDiverged(i), Is.False, $"{model}, ball {i}, step {step}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {step}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void DivergingBall_StopsAtItsLastFiniteState()
         {
             // A beach-ball-light ball at 100 m/s and a 1 s step: far beyond RK4's stability limit, the speed overflows

@@ -234,6 +234,19 @@ namespace MagnusBall.Batch
             _landing[index] = default;
         }
 
+        // The active balls of the lanes [start, start + width), one by one.
+        private void StepScalarLanes(int start, double step)
+        {
+            int end = Math.Min(start + _width, _count);
+            for (int index = start; index < end; index++)
+            {
+                if (_active[index] != 0)
+                {
+                    StepScalar(index, step);
+                }
+            }
+        }
+
         // One ball, one step: the model's kernel (RungeKutta4's arithmetic), then the landing.
         private void StepScalar(int i, double step)
         {
@@ -318,6 +331,15 @@ namespace MagnusBall.Batch
             Vector<double> wx = new Vector<double>(_wx, start), wy = new Vector<double>(_wy, start), wz = new Vector<double>(_wz, start);
             Vector<double> ax = new Vector<double>(_ax, start), ay = new Vector<double>(_ay, start), az = new Vector<double>(_az, start);
             Vector<double> sx = new Vector<double>(_sx, start), sy = new Vector<double>(_sy, start), sz = new Vector<double>(_sz, start);
+            if (!Vector.LessThanOrEqualAll(wx * wx + wy * wy + wz * wz, new Vector<double>(double.MaxValue)))
+            {
+                // A spin rate past about 1.3e154 rad/s: the lanes' plain |w| (VectorLaws) would be infinite where the kernel's
+                // scaled one is not, so these balls take the per-ball kernel step, whose numbers the vector lanes equal
+                // everywhere else.
+                StepScalarLanes(start, step);
+                return;
+            }
+
             bool spins = laws.Decay != VectorLaws.DecayKind.None;
 
             // k2, k3, k4 and the end rates from one evaluation site (the laws inlined once), RungeKutta4's grouping.
