@@ -305,7 +305,7 @@ namespace MagnusBall
 
         internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
         {
-            bool applies = _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && (_drag.Reads | _lift.Reads) == AeroInputs.None && _stillAir;
+            bool applies = (_drag.Reads | _lift.Reads) == AeroInputs.None && StraightLineCase;
             end = default;
             Vector3d acceleration = default;
             bool taken = applies && Rk4Straight(state, k1, step, out end, out acceleration);
@@ -539,8 +539,7 @@ namespace MagnusBall
                 return Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
             }
 
-            if (PreferStraightLine && _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && _stillAir && Counter is null
-                && Rk4Straight(state, k1, step, out FlightState end, out endAcceleration))
+            if (PreferStraightLine && StraightLineCase && Counter is null && Rk4Straight(state, k1, step, out FlightState end, out endAcceleration))
             {
                 endSpinAcceleration = default;
                 return end;
@@ -592,14 +591,21 @@ namespace MagnusBall
             return new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
         }
 
+        // The laws and air Rk4Straight is written for (with laws that read nothing): drag and lift, no spin decay, still air.
+        private bool StraightLineCase
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)] // Mono inlines only tiny methods without it
+            get => _drag.IsPresent && _lift.IsPresent && !_decay.IsPresent && _stillAir;
+        }
+
         // Rk4Unrolled's arithmetic, operation for operation, for constant drag and lift, a constant spin, still air and
-        // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind, Vector3d.LengthOf's
-        // range test, the minimum speed, the lift's spin test) become one test at the end (a spinless state is declined
-        // first). Mono's JIT keeps no double in a register from one basic block to the next, so there every branch stored
-        // and reloaded the whole dependent chain (docs/performance.md). False, with nothing written that the caller uses, where a stage leaves the common
-        // case (a speed at or below FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, a spin rate at or below
-        // FlightModel.MinimumLiftSpinRate):
-        // Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
+        // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind,
+        // Vector3d.LengthOf's range test, the minimum speed, the lift's spin test) become one test at the end (a state
+        // without lift is declined first). Mono's JIT keeps no double in a register from one basic block to the next, so
+        // there every branch stored and reloaded the whole dependent chain (docs/performance.md). False, with nothing
+        // written that the caller uses, where a stage leaves the common case (a speed at or below
+        // FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, a spin rate at or below
+        // FlightModel.MinimumLiftSpinRate): Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
         // (FlightKernelTests.StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit: the same steps on a model with
         // a counter attached, which takes the general code). The stages are written out, as in Rk4Unrolled: a shared stage
         // method would hand its results back through out parameters, which Mono keeps in memory.
@@ -612,7 +618,8 @@ namespace MagnusBall
             double spinRate = Vector3d.LengthOf(wx, wy, wz);
             if (!(spinRate > FlightModel.MinimumLiftSpinRate))
             {
-                // No lift (no spin, or at most FlightModel.MinimumLiftSpinRate): known before the chain starts, so the general step is not paid on top of this one.
+                // No lift (no spin, or at most FlightModel.MinimumLiftSpinRate): known before the chain starts, so the general
+                // step is not paid on top of this one.
                 end = default;
                 endAcceleration = default;
                 return false;
