@@ -142,6 +142,16 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void AStandardShot_WithAnotherIntegrator_KeepsItsName()
+        {
+            // Only the options that change the shot make it a "custom shot"; the integrator and its step do not.
+            (int code, string output, string error) = Run("--shot", "kick serve", "--integrator", "euler", "--step", "0.02", "--no-svg");
+            Assert.That(code, Is.EqualTo(0), error);
+            Assert.That(output.Split('\n').Count(r => r.StartsWith("kick serve", StringComparison.Ordinal)), Is.EqualTo(1), output);
+            Assert.That(output, Does.Not.Contain("custom shot"));
+        }
+
+        [Test]
         public void OneCustomShot_IsOneRow()
         {
             (int code, string output, string error) = Run("--speed", "28", "--elevation", "10", "--topspin", "3000", "--no-svg");

@@ -218,11 +218,14 @@ exit codes: 0 ok, 2 bad options";
                     ?? throw new ArgumentException($"--shot must be one of: {string.Join(", ", Array.ConvertAll(StandardShots.All(), s => "\"" + s.Name + "\""))}; got \"{shotName}\".");
             }
 
-            bool custom = false;
-            foreach (string key in new[] { "--shot", "--speed", "--elevation", "--azimuth", "--topspin", "--sidespin", "--height", "--x", "--z", "--target", "--aim" })
+            // The options that change the shot itself (the integrator, step, air and picture options do not).
+            bool reshaped = false;
+            foreach (string key in new[] { "--speed", "--elevation", "--azimuth", "--topspin", "--sidespin", "--height", "--x", "--z", "--target", "--aim" })
             {
-                custom |= values.ContainsKey(key);
+                reshaped |= values.ContainsKey(key);
             }
+
+            bool custom = reshaped || values.ContainsKey("--shot");
 
             if (!custom)
             {
@@ -268,7 +271,7 @@ exit codes: 0 ok, 2 bad options";
                 }
             }
 
-            string label = values.ContainsKey("--shot") && values.Count == 1 ? basis.Name : "custom shot";
+            string label = reshaped ? "custom shot" : basis.Name;
             var shot = new TennisShot(label, new Vector3d(x, height, z), speed, elevation, azimuth, topspin, sidespin, target);
             if (values.TryGetValue("--aim", out string? aim))
             {
