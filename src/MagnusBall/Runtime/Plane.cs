@@ -59,30 +59,15 @@ namespace MagnusBall
         /// </summary>
         /// <param name="position">A point, m.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double SignedDistance(in Vector3d position)
-        {
-            double d = Vector3d.Dot(position - Point, Normal);
-            return double.IsFinite(d) ? d : 4 * QuarterDistance(position);
-        }
+        public double SignedDistance(in Vector3d position) => Vector3d.DotOfDifference(position, Point, Normal);
 
         /// <summary>The plain formula, for the flight core's quick tests, which send a non-finite value on to a search that
         /// uses <see cref="SignedDistance"/> (no check on the common step).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal double UncheckedSignedDistance(in Vector3d position) => Vector3d.Dot(position - Point, Normal);
 
-        // A quarter of the signed distance, never overflowing for finite input; for where the plain formula was not finite: a
-        // component of position - Point overflowed (its product infinite where the true one may be finite, NaN beside a zero
-        // normal component, inf * 0, or two such products cancelling, inf - inf), or a partial sum of the products did. Each
-        // quarter-difference is at most double.MaxValue / 2, so the three products sum to at most sqrt(3) / 2 of it (a unit
-        // normal): no partial sum overflows (halves did: 1.7e308 (0.55 + 0.55) overflows before
-        // -1.7e308 0.63 is added, for a true distance of 1.6e308).
-        // Quartering is exact but for subnormals (an absolute error of a few times 4.9e-324 m). NaN only for a NaN input.
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private double QuarterDistance(in Vector3d position)
-        {
-            Vector3d p = position, o = Point, n = Normal;
-            return (0.25 * p.X - 0.25 * o.X) * n.X + (0.25 * p.Y - 0.25 * o.Y) * n.Y + (0.25 * p.Z - 0.25 * o.Z) * n.Z;
-        }
+        // A quarter of the signed distance, never overflowing for finite input (Vector3d.QuarterDotOfDifference).
+        private double QuarterDistance(in Vector3d position) => Vector3d.QuarterDotOfDifference(position, Point, Normal);
 
         /// <summary>The rate at which a ball moving with <paramref name="velocity"/> moves along the normal, m/s.</summary>
         /// <param name="velocity">A velocity, m/s.</param>
