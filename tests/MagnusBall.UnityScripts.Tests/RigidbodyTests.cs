@@ -10,6 +10,7 @@ using MagnusBall.Integration;
 using MagnusBall.Queries;
 using MagnusBall.Samples.TennisScene;
 using MagnusBall.Stepping;
+using MagnusBall.Tests;
 using MagnusBall.UnityStubs;
 using NUnit.Framework;
 using UnityEngine;
@@ -78,18 +79,19 @@ namespace MagnusBall.UnityScripts.Tests
         public void FixedUpdate_AllocatesNothing()
         {
             (Rigidbody body, MagnusBallRigidbody aero) = NewBall();
-            body.position = new Vector3(0, 1, 0);
-            aero.Launch(new Vector3(25, 3, 0), new Vector3(0, 0, -300));
             Action fixedUpdate = Message(aero, "FixedUpdate");
-            fixedUpdate(); // warm-up
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 500; i++)
+            Action steps = () =>
             {
-                fixedUpdate();
-                StubControl.SimulateStep(body, Time.fixedDeltaTime);
-            }
+                body.position = new Vector3(0, 1, 0); // the same launch every run
+                aero.Launch(new Vector3(25, 3, 0), new Vector3(0, 0, -300));
+                for (int i = 0; i < 500; i++)
+                {
+                    fixedUpdate();
+                    StubControl.SimulateStep(body, Time.fixedDeltaTime);
+                }
+            };
 
-            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+            Assert.That(Allocation.SteadyStateBytes(steps), Is.EqualTo(0));
         }
 
         [Test]

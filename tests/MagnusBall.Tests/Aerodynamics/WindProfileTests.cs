@@ -78,10 +78,9 @@ namespace MagnusBall.Tests.Aerodynamics
             var model = new FlightModel(Ball.Tennis, air, Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance,
                 SpeedProportionalSpinDecay.TennisCrossLindsey);
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            Shots.Fly(model, RungeKutta4.Instance, start, 1e-4, 10_000); // warm up with the measured call (JIT, statics, loop OSR)
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            FlightState end = Shots.Fly(model, RungeKutta4.Instance, start, 1e-4, 10_000);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            FlightState end = default;
+            Action fly = () => end = Shots.Fly(model, RungeKutta4.Instance, start, 1e-4, 10_000);
+            long allocated = Allocation.SteadyStateBytes(fly);
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(end.IsFinite, Is.True);
         }

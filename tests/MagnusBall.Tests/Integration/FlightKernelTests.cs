@@ -505,12 +505,13 @@ namespace MagnusBall.Tests.Integration
         {
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative k = model.Derivative(start);
-            model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 480); // warm-up, the measured call: JIT, statics, loop OSR
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            k = model.Derivative(start);
-            FlightState end = model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 480);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            FlightState end = default;
+            Action steps = () =>
+            {
+                StateDerivative k = model.Derivative(start);
+                end = model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 480);
+            };
+            long allocated = Allocation.SteadyStateBytes(steps);
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(end.IsFinite, Is.True);
         }

@@ -79,12 +79,9 @@ namespace MagnusBall.Tests.Presets
             {
                 FlightModel model = preset.CreateModel(Air.SeaLevel.WithLogarithmicWind(new Vector3d(3, 0, 1)), Gravity.YUp);
                 var start = new FlightState(new Vector3d(0, 1, 0), new Vector3d(25, 8, 1), new Vector3d(50, 10, 300));
-                // Warm up with the measured call itself: a shorter one left the runtime's one-time work (the
-                // loop's on-stack replacement at ~1,000 iterations) inside the measurement once in CI (5,056 B).
-                Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 2000);
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                FlightState end = Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 2000);
-                long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                FlightState end = default;
+                Action fly = () => end = Shots.Fly(model, MagnusBall.Integration.RungeKutta4.Instance, start, 1e-3, 2000);
+                long allocated = Allocation.SteadyStateBytes(fly);
                 Assert.That(allocated, Is.EqualTo(0), preset.Name);
                 Assert.That(end.IsFinite, Is.True, preset.Name);
             }

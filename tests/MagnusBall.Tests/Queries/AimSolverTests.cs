@@ -86,9 +86,9 @@ namespace MagnusBall.Tests.Queries
                 + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
 
             double first = Solve();
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            double sum = Solve();
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            double sum = 0;
+            Action solve = () => sum = Solve();
+            long allocated = Allocation.SteadyStateBytes(solve);
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(sum, Is.EqualTo(first), "a solve depends on its arguments only");
 
@@ -212,17 +212,9 @@ namespace MagnusBall.Tests.Queries
                 + solver.AnglesToReach(start, 30, spin, target).AzimuthRadians
                 + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
 
-            // Warm-up: the JIT, static initialisation and tiering's first promotions (one warm-up solve let 2,280 B of the
-            // runtime's own one-time work fall into the measured call once in a full run; an allocation in a solve's own path
-            // happens on every solve, so it still shows).
-            for (int i = 0; i < 3; i++)
-            {
-                Solve();
-            }
-
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            double sum = Solve();
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            double sum = 0;
+            Action solve = () => sum = Solve();
+            long allocated = Allocation.SteadyStateBytes(solve);
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(double.IsFinite(sum), Is.True);
         }

@@ -89,12 +89,14 @@ namespace MagnusBall.Tests.Queries
             var events = new FlightEvent[8];
             var positions = new Vector3d[1000];
 
-            predictor.Predict(start, 10, samples, events);
-            predictor.Predict(start, 10, positions);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            Prediction a = predictor.Predict(start, 10, samples, events);
-            Prediction b = predictor.Predict(start, 10, positions, FlightEventKinds.All);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Prediction a = default, b = default;
+            Action predict = () =>
+            {
+                a = predictor.Predict(start, 10, samples, events);
+                b = predictor.Predict(start, 10, positions, FlightEventKinds.All);
+            };
+
+            long allocated = Allocation.SteadyStateBytes(predict);
             Assert.That(allocated, Is.EqualTo(0));
             Assert.That(a.Stopped && b.Stopped, Is.True);
         }

@@ -262,13 +262,15 @@ namespace MagnusBall.Tests.Stepping
             var events = new FlightEvent[4];
             double[] deltas = DriverShots.Jittery(7, 64);
             FixedStepDriver driver = NewDriver(planes: planes, bounce: bouncing ? CrossBounce.Clay : null);
-            Fly(driver, events, deltas); // warm up: JIT and static initialisation
-
-            driver.Reset(DriverShots.Drive);
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            int frames = Fly(driver, events, deltas);
-            FlightState render = driver.RenderState;
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            int frames = 0;
+            FlightState render = default;
+            Action fly = () =>
+            {
+                driver.Reset(DriverShots.Drive); // the same whole flight every run
+                frames = Fly(driver, events, deltas);
+                render = driver.RenderState;
+            };
+            long allocated = Allocation.SteadyStateBytes(fly);
             Assert.That(allocated, Is.EqualTo(0), $"bytes allocated over {frames} frames");
             Assert.That(render.IsFinite, Is.True);
         }
