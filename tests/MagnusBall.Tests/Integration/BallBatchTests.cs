@@ -191,6 +191,52 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void BallsFasterThan1e154_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // The vector lanes take the speed as a plain square root of the squares, which overflows past about 1.34e154
+            // m/s where the kernel scales first: the lane's rates were infinite and the ball was stopped as diverged
+            // where the single-ball step is finite (a step short enough that the drag, about 3.9e306 m/s^2 at 1.4e154
+            // m/s, changes the velocity little: 1e-160 s). Such a lane now takes the kernel's step; its neighbours are
+            // unchanged. At 1e200 m/s both paths diverge at once.
+            var ground = new Plane(new Vector3d(0, 0, -1e300), Vector3d.UnitZ);
+            foreach (FlightModel model in new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+            })
+            {
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(1.4e154, 1, 5), new Vector3d(0, 100, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(-3e154, 1e154, 2e154), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e200, 1, 5), new Vector3d(0, 100, 0)),
+                };
+                var batch = new BallBatch(model, starts.Length, ground);
+                var steppers = new FlightStepper[starts.Length];
+                for (int i = 0; i < starts.Length; i++)
+                {
+                    batch.Add(starts[i]);
+                    steppers[i] = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(Vector3d.Zero, ground));
+                    steppers[i].Reset(starts[i]);
+                }
+
+                const double step = 1e-160;
+                for (int n = 0; n < 8; n++)
+                {
+                    batch.Advance(step);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        StepOutcome outcome = steppers[i].TryStep(step, FlightEventKinds.Landing);
+                        Assert.That(outcome, Is.EqualTo(i == 3 ? StepOutcome.Diverged : StepOutcome.Taken), $"{model}, ball {i}, step {n}");
+                        Assert.That(batch.HasDiverged(i), Is.EqualTo(i == 3), $"{model}, ball {i}, step {n}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void DivergingBall_StopsAtItsLastFiniteState()
         {
             // A beach-ball-light ball at 100 m/s and a 1 s step: far beyond RK4's stability limit, the speed overflows

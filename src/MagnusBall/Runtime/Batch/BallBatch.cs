@@ -310,8 +310,9 @@ namespace MagnusBall.Batch
         }
 
         // One RK4 step of the lanes [start, start + width): RungeKutta4's arithmetic lane by lane. Lanes that do not fly
-        // (landed, diverged, padding) keep their values; lanes whose step may hold a landing, or that overflowed, are
-        // finished one by one through the scalar path's Finish with the very numbers computed here.
+        // (landed, diverged, padding) keep their values; lanes whose step may hold a landing are finished one by one
+        // through the scalar path's Finish with the very numbers computed here, and lanes that overflowed take the
+        // scalar path's whole step (StepScalar).
         private void StepVector(int start, double step)
         {
             var active = new Vector<long>(_active, start);
@@ -485,6 +486,16 @@ namespace MagnusBall.Batch
                 if (special[lane] == 0)
                 {
                     _startsFlight[i] &= plain[lane] == 0;
+                    continue;
+                }
+
+                if (bad[lane] != 0)
+                {
+                    // A number the lane formed is not finite: the kernel's own step decides. The lanes' plain |v| is
+                    // infinite past about 1.34e154 m/s where the kernel's scaled one is not (there, with a small enough
+                    // step, the single-ball step is finite and taken); everywhere else the kernel forms the same
+                    // non-finite step and refuses it. The arrays still hold the lane's start.
+                    StepScalar(i, step);
                     continue;
                 }
 
