@@ -202,6 +202,104 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void BallsFasterThan1e154_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // The vector lanes take the speed as a plain square root of the squares, which overflows past about 1.34e154
+            // m/s where the kernel scales first: the lane's rates were infinite and the ball was stopped as diverged
+            // where the single-ball step is finite (a step short enough that the drag, about 3.9e306 m/s^2 at 1.4e154
+            // m/s, changes the velocity little: 1e-160 s). Such a lane now takes the kernel's step; its neighbours are
+            // unchanged. At 1e200 m/s both paths diverge at once.
+            var ground = new Plane(new Vector3d(0, 0, -1e300), Vector3d.UnitZ);
+            foreach (FlightModel model in new[]
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+            })
+            {
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(1.4e154, 1, 5), new Vector3d(0, 100, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(-3e154, 1e154, 2e154), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e200, 1, 5), new Vector3d(0, 100, 0)),
+                };
+                var batch = new BallBatch(model, starts.Length, ground);
+                var steppers = new FlightStepper[starts.Length];
+                for (int i = 0; i < starts.Length; i++)
+                {
+                    batch.Add(starts[i]);
+                    steppers[i] = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(Vector3d.Zero, ground));
+                    steppers[i].Reset(starts[i]);
+                }
+
+                const double step = 1e-160;
+                for (int n = 0; n < 8; n++)
+                {
+                    batch.Advance(step);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        StepOutcome outcome = steppers[i].TryStep(step, FlightEventKinds.Landing);
+                        Assert.That(outcome, Is.EqualTo(i == 3 ? StepOutcome.Diverged : StepOutcome.Taken), $"{model}, ball {i}, step {n}");
+                        Assert.That(batch.HasDiverged(i), Is.EqualTo(i == 3), $"{model}, ball {i}, step {n}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
+                    }
+                }
+            }
+        }
+
+        [Test]
+        public void DecayingSpinWhoseStagesPass1e154_FliesAsTheSingleBallPath_BitForBit()
+        {
+            // The batch checks the start spin's squares; with an exponential decay and a step of ten time constants, RK4's
+            // stage spins grow (w (1 - h / 2 tau) = -4 w, then 21 w and -209 w), so from a start spin of 5e152 rad/s a
+            // stage spin passed 1.34e154 rad/s: on a constant C_L the lane's 1/|w| was 0 there and the step flew partly
+            // without lift (v.x 18.806 against the single-ball 19.025 m/s after one step). Such a lane now takes the
+            // kernel's step.
+            var ground = new Plane(new Vector3d(0, 0, -1e300), Vector3d.UnitZ);
+            foreach (FlightModel model in new[]
+            {
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, new ConstantDrag(0.55), new ConstantLift(0.175), new ExponentialSpinDecay(0.1)),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(0.1)),
+            })
+            {
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 5e152, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(3e151, -4e151, 1e150)),
+                };
+                var batch = new BallBatch(model, starts.Length, ground);
+                var steppers = new FlightStepper[starts.Length];
+                for (int i = 0; i < starts.Length; i++)
+                {
+                    batch.Add(starts[i]);
+                    steppers[i] = new FlightStepper(model, RungeKutta4.Instance, new FlightEventSet(Vector3d.Zero, ground));
+                    steppers[i].Reset(starts[i]);
+                }
+
+                var diverged = new bool[starts.Length];
+                for (int n = 0; n < 3; n++)
+                {
+                    batch.Advance(1.0);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        StepOutcome outcome = diverged[i] ? StepOutcome.Diverged : steppers[i].TryStep(1.0, FlightEventKinds.Landing);
+                        if (n == 0)
+                        {
+                            Assert.That(outcome, Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}: the first step is finite");
+                        }
+
+                        diverged[i] = outcome == StepOutcome.Diverged;
+                        Assert.That(batch.HasDiverged(i), Is.EqualTo(diverged[i]), $"{model}, ball {i}, step {n}");
+                        // The velocity on its own: Difference scales by the largest of the state's lengths, here the spin's.
+                        Assert.That(batch.GetState(i).Velocity, Is.EqualTo(steppers[i].State.Velocity), $"{model}, ball {i}, step {n}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void DivergingBall_StopsAtItsLastFiniteState()
         {
             // A beach-ball-light ball at 100 m/s and a 1 s step: far beyond RK4's stability limit, the speed overflows

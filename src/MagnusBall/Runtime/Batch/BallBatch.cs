@@ -310,8 +310,9 @@ namespace MagnusBall.Batch
         }
 
         // One RK4 step of the lanes [start, start + width): RungeKutta4's arithmetic lane by lane. Lanes that do not fly
-        // (landed, diverged, padding) keep their values; lanes whose step may hold a landing, or that overflowed, are
-        // finished one by one through the scalar path's Finish with the very numbers computed here.
+        // (landed, diverged, padding) keep their values; lanes whose step may hold a landing are finished one by one
+        // through the scalar path's Finish with the very numbers computed here, and lanes that overflowed take the
+        // scalar path's whole step (StepScalar).
         private void StepVector(int start, double step)
         {
             var active = new Vector<long>(_active, start);
@@ -349,6 +350,10 @@ namespace MagnusBall.Batch
             Vector<double> vkx = vx, vky = vy, vkz = vz, akx = ax, aky = ay, akz = az, skx = sx, sky = sy, skz = sz;
             Vector<double> npx = px, npy = py, npz = pz, nvx, nvy, nvz, nwx = wx, nwy = wy, nwz = wz;
             Vector<double> nax, nay, naz, nsx, nsy, nsz;
+            // Lanes where a decaying spin's stage spin has squares past double.MaxValue (the check above sees only the
+            // start spin; with an exponential decay and a step several time constants long, the stage spins of RK4 grow):
+            // the kernel's step for those balls, as for the start spin.
+            Vector<long> spinOverflow = Vector<long>.Zero;
             for (int stage = 0; ; stage++)
             {
                 if (stage < 3)
@@ -384,6 +389,11 @@ namespace MagnusBall.Batch
                         nwy = wy + sy * sixth;
                         nwz = wz + sz * sixth;
                     }
+                }
+
+                if (spins)
+                {
+                    spinOverflow |= Vector.GreaterThan(nwx * nwx + nwy * nwy + nwz * nwz, new Vector<double>(double.MaxValue));
                 }
 
                 laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz);
@@ -447,7 +457,7 @@ namespace MagnusBall.Batch
             Vector<long> near = ~(Vector.GreaterThan(f0, reach) & Vector.GreaterThan(f1, reach));
             Vector<double> check = (npx - npx) + (npy - npy) + (npz - npz) + (nvx - nvx) + (nvy - nvy) + (nvz - nvz) +
                 (nwx - nwx) + (nwy - nwy) + (nwz - nwz) + (nax - nax) + (nay - nay) + (naz - naz) + (nsx - nsx) + (nsy - nsy) + (nsz - nsz);
-            Vector<long> bad = ~Vector.Equals(check, Vector<double>.Zero);
+            Vector<long> bad = ~Vector.Equals(check, Vector<double>.Zero) | spinOverflow;
             Vector<long> special = (near | bad) & active;
             Vector<long> plain = active & ~special;
 
@@ -485,6 +495,16 @@ namespace MagnusBall.Batch
                 if (special[lane] == 0)
                 {
                     _startsFlight[i] &= plain[lane] == 0;
+                    continue;
+                }
+
+                if (bad[lane] != 0)
+                {
+                    // A number the lane formed is not finite, or a stage spin's squares overflowed: the kernel's own step
+                    // decides. The lanes' plain |v| and |w| are infinite past about 1.34e154 (m/s, rad/s) where the
+                    // kernel's scaled ones are not (there the single-ball step can be finite and taken); everywhere else
+                    // the kernel forms the same non-finite step and refuses it. The arrays still hold the lane's start.
+                    StepScalar(i, step);
                     continue;
                 }
 
