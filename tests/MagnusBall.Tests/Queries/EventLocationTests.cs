@@ -290,6 +290,89 @@ namespace MagnusBall.Tests.Queries
             Assert.That(found, Is.GreaterThan(3_000), "the random steps cross the plane often enough to test the search");
         }
         [Test]
+        public void QuickBounds_DecideAsTheirBranchingFormDid()
+        {
+            // HermiteSegment.CannotFall is written without a branch (for Mono's JIT). It must decide exactly as the form it
+            // replaced, below, did: the same answer on every cubic, except where 2 |m| overflows (|m| past 8.9e307), where
+            // it may answer "not sure" (the search then decides) but never "clear" where the old form did not.
+            static bool Branching(double f0, double m0, double f1, double m1)
+            {
+                if (!double.IsFinite(f0 + m0 + f1 + m1))
+                {
+                    return false;
+                }
+
+                double scale = 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + Math.Abs(m0) + Math.Abs(m1));
+                double low = (f0 < f1 ? f0 : f1) - (4.0 / 27.0) * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0));
+                if (low > scale)
+                {
+                    return true;
+                }
+
+                double high = (f0 > f1 ? f0 : f1) + (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
+                return high < -scale;
+            }
+
+            // Numbers of every kind the flight core can hand it: signed zeros, subnormals, every decade up to double.MaxValue,
+            // infinities and NaN, and cubics on the edge of each bound (f0 and f1 a few ulps either side of the bound).
+            var random = new Random(20261202);
+            double[] special = { 0.0, -0.0, double.Epsilon, -double.Epsilon, 3 * double.Epsilon, 1e-310, -1e-310, double.MaxValue,
+                -double.MaxValue, 8.98846567431158e307, 9e307, -9e307, double.PositiveInfinity, double.NegativeInfinity, double.NaN };
+            double Number()
+            {
+                int kind = random.Next(8);
+                if (kind == 0)
+                {
+                    return special[random.Next(special.Length)];
+                }
+
+                double magnitude = kind == 1 ? Math.Pow(10, 616 * random.NextDouble() - 308) : Math.Pow(10, 12 * random.NextDouble() - 6);
+                return random.Next(2) == 0 ? magnitude : -magnitude;
+            }
+
+            int same = 0, clear = 0, notSureWhereClear = 0, edgeClear = 0, edgeNot = 0;
+            for (int n = 0; n < 400_000; n++)
+            {
+                double f0 = Number(), m0 = Number(), f1 = Number(), m1 = Number();
+                if (n % 4 == 1)
+                {
+                    // On the edge of the lower bound: f0 and f1 a few ulps from b + scale (and from -(c + scale) for the upper).
+                    double b = (4.0 / 27.0) * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0));
+                    double edge = (b + 1e-9 * (Math.Abs(m0) + Math.Abs(m1))) / (1 - 2e-9); // f - b = 1e-9 (2 f + |m0| + |m1|)
+                    f0 = edge * (1 + (random.Next(9) - 4) * 1.1e-16);
+                    f1 = random.Next(2) == 0 ? f0 : edge * (1 + (random.Next(9) - 4) * 1.1e-16);
+                    if (random.Next(2) == 0)
+                    {
+                        double c = (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
+                        double low = -(c + 1e-9 * (Math.Abs(m0) + Math.Abs(m1))) / (1 - 2e-9);
+                        f0 = low * (1 + (random.Next(9) - 4) * 1.1e-16);
+                        f1 = low * (1 + (random.Next(9) - 4) * 1.1e-16);
+                    }
+                }
+
+                bool before = Branching(f0, m0, f1, m1), now = HermiteSegment.CannotFall(f0, m0, f1, m1);
+                bool slopesOverflow = Math.Abs(m0) > double.MaxValue / 2 || Math.Abs(m1) > double.MaxValue / 2;
+                if (slopesOverflow && before && !now)
+                {
+                    notSureWhereClear++;
+                    continue;
+                }
+
+                Assert.That(now, Is.EqualTo(before), $"f0 {f0:R} m0 {m0:R} f1 {f1:R} m1 {m1:R}");
+                same++;
+                clear += now ? 1 : 0;
+                edgeClear += n % 4 == 1 && now ? 1 : 0;
+                edgeNot += n % 4 == 1 && !now ? 1 : 0;
+            }
+
+            TestContext.Out.WriteLine(
+                $"{same} the same ({clear} clear; on the edge {edgeClear} clear, {edgeNot} not), {notSureWhereClear} not sure where the old form said clear (slopes past 8.9e307)");
+            Assert.That(clear, Is.GreaterThan(20_000), "enough cubics are clear to test the bounds' exits");
+            Assert.That(same - clear, Is.GreaterThan(20_000), "and enough are not");
+            Assert.That(Math.Min(edgeClear, edgeNot), Is.GreaterThan(5_000), "the edge cases fall on both sides of the bounds");
+        }
+
+        [Test]
         public void QuickClearTest_NeverHidesAnEventTheSearchFinds()
         {
             // The flight core takes a step without building its segment when SurelyNoCrossing / SurelyNoApex call it clear,

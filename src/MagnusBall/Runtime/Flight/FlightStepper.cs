@@ -305,25 +305,26 @@ namespace MagnusBall.Flight
                     return StepOutcome.TimeCannotAdvance;
                 }
 
-                FlightState next = Integrator.Step(Model, _now.State, _now.Derivative, step, out StateDerivative nextDerivative, out int evaluations);
-                if (!Takes(_now.State, next, nextDerivative))
+                // Integrated straight into the first-piece fields (meaningful only once _hasFirstPiece is set): Mono zeroes
+                // every struct local on entry, and these two are 152 bytes.
+                _firstPiece = Integrator.Step(Model, _now.State, _now.Derivative, step, out _firstPieceDerivative, out int evaluations);
+                if (!Takes(_now.State, _firstPiece, _firstPieceDerivative))
                 {
                     return StepOutcome.Diverged; // nothing changed
                 }
 
-                if (next.Time != endTime)
+                if (_firstPiece.Time != endTime)
                 {
-                    next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
+                    _firstPiece = new FlightState(_firstPiece.Position, _firstPiece.Velocity, _firstPiece.AngularVelocity, endTime);
                 }
 
-                if (EventSet == null || EventSet.SurelyClear(_now.State, _now.Derivative, next, nextDerivative) || ScansClear(next, nextDerivative))
+                if (EventSet == null || EventSet.SurelyClear(_now.State, _now.Derivative, _firstPiece, _firstPieceDerivative) ||
+                    ScansClear(_firstPiece, _firstPieceDerivative))
                 {
-                    TakePlainStep(next, nextDerivative, evaluations);
+                    TakePlainStep(_firstPiece, _firstPieceDerivative, evaluations);
                     return StepOutcome.Taken;
                 }
 
-                _firstPiece = next;
-                _firstPieceDerivative = nextDerivative;
                 _firstPieceEvaluations = evaluations;
                 _hasFirstPiece = true;
             }
