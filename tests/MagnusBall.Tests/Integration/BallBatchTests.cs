@@ -320,11 +320,14 @@ namespace MagnusBall.Tests.Integration
             Assert.That(batch.TryGetLanding(0, out _), Is.False);
         }
 
+        // The largest difference of position, velocity, spin and time, each relative to its own size (at least 1): a
+        // velocity is not let off by the size of a fast spin.
         private static double Difference(in FlightState a, in FlightState b)
         {
-            double scale = Math.Max(1, Math.Max(b.Position.Length, Math.Max(b.Velocity.Length, b.AngularVelocity.Length)));
-            double d = Math.Max((a.Position - b.Position).Length, Math.Max((a.Velocity - b.Velocity).Length, (a.AngularVelocity - b.AngularVelocity).Length));
-            return Math.Max(d / scale, Math.Abs(a.Time - b.Time) / Math.Max(1, Math.Abs(b.Time)));
+            static double Relative(in Vector3d x, in Vector3d y) => (x - y).Length / Math.Max(1, y.Length);
+            return Math.Max(
+                Math.Max(Relative(a.Position, b.Position), Relative(a.Velocity, b.Velocity)),
+                Math.Max(Relative(a.AngularVelocity, b.AngularVelocity), Math.Abs(a.Time - b.Time) / Math.Max(1, Math.Abs(b.Time))));
         }
     }
 }

@@ -399,7 +399,7 @@ namespace MagnusBall.Queries
                 return WithFlights(atLo);
             }
 
-            // Bounded: at most 100 passes (1 % steps up to the maximum speed), by count too: a maximum speed below about
+            // Bounded: about 100 passes (1 % steps up to the maximum speed; MaximumSpeedScanPasses caps the count), by count too: a maximum speed below about
             // 1e-322 m/s makes the 1 % step round to 0 (the loop stood still, for ever), and one near double.MaxValue
             // makes the end test's MaximumSpeed (1 + 1e-12) infinite.
             int passes = 0;
