@@ -21,9 +21,10 @@ namespace MagnusBall
         /// <summary>
         /// True under Mono (and Unity's IL2CPP, which carries Mono's class library): take RK4's straight-line form of the
         /// thesis model's common case (see Rk4Straight). RyuJIT keeps the chain in registers across the branches anyway, and
-        /// measured the straight-line form 3-5 % slower; it folds this constant away. Both forms give the same bits.
+        /// measured the straight-line form 3-5 % slower; it folds this constant away. Both forms give the same bits. The
+        /// flight core's event quick test picks its form by it too (HermiteSegment.CannotFall).
         /// </summary>
-        private protected static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
+        internal static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
 
         /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the same as the general formula).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);

@@ -290,28 +290,12 @@ namespace MagnusBall.Tests.Queries
             Assert.That(found, Is.GreaterThan(3_000), "the random steps cross the plane often enough to test the search");
         }
         [Test]
-        public void QuickBounds_DecideAsTheirBranchingFormDid()
+        public void QuickBounds_DecideAlikeInBothForms()
         {
-            // HermiteSegment.CannotFall is written without a branch (for Mono's JIT). It must decide exactly as the form it
-            // replaced, below, did: the same answer on every cubic, except where 2 |m| overflows (|m| past 8.9e307), where
-            // it may answer "not sure" (the search then decides) but never "clear" where the old form did not.
-            static bool Branching(double f0, double m0, double f1, double m1)
-            {
-                if (!double.IsFinite(f0 + m0 + f1 + m1))
-                {
-                    return false;
-                }
-
-                double scale = 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + Math.Abs(m0) + Math.Abs(m1));
-                double low = (f0 < f1 ? f0 : f1) - (4.0 / 27.0) * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0));
-                if (low > scale)
-                {
-                    return true;
-                }
-
-                double high = (f0 > f1 ? f0 : f1) + (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
-                return high < -scale;
-            }
+            // HermiteSegment.CannotFall has two forms, with branches (RyuJIT) and in one basic block (Mono). They must decide
+            // alike on every cubic, except where 2 |m| overflows (|m| past 8.9e307): there the form without branches may
+            // answer "not sure" (the search then decides) but never "clear" where the branching form did not.
+            static bool Branching(double f0, double m0, double f1, double m1) => HermiteSegment.CannotFallBranching(f0, m0, f1, m1);
 
             // Numbers of every kind the flight core can hand it: signed zeros, subnormals, every decade up to double.MaxValue,
             // infinities and NaN, and cubics on the edge of each bound (f0 and f1 a few ulps either side of the bound).
@@ -350,7 +334,7 @@ namespace MagnusBall.Tests.Queries
                     }
                 }
 
-                bool before = Branching(f0, m0, f1, m1), now = HermiteSegment.CannotFall(f0, m0, f1, m1);
+                bool before = Branching(f0, m0, f1, m1), now = HermiteSegment.CannotFallInOneBlock(f0, m0, f1, m1);
                 bool slopesOverflow = Math.Abs(m0) > double.MaxValue / 2 || Math.Abs(m1) > double.MaxValue / 2;
                 if (slopesOverflow && before && !now)
                 {
