@@ -270,6 +270,16 @@ namespace MagnusBall.Batch
                 return;
             }
 
+            if (_landingEvents.SurelyClear(start, k1, end, k))
+            {
+                // No landing in this step, surely (the flight core's quick test: a scan of the segment would find none), so
+                // the 304-byte segment is not built: what the scalar path (ball by ball where Vector<double> is not
+                // accelerated, as under Mono) pays on most steps.
+                Store(i, end, k);
+                _startsFlight[i] = false;
+                return;
+            }
+
             var segment = HermiteSegment.OfTakenStep(start, k1, end, k);
             Span<FlightEvent> found = _found;
             int count = _landingEvents.Scan(ref segment, _found, _startsFlight[i], landings: true);
