@@ -152,6 +152,12 @@ namespace MagnusBall.Flight
         /// <summary>The current state (the end of the last step, or the stop).</summary>
         public FlightState State => _now.State;
 
+        // The current state by reference and its time, for the library's own loops: State returns an 80-byte copy, which
+        // Mono's JIT zeroes before it fills it.
+        internal ref readonly FlightState CurrentState => ref _now.State;
+
+        internal double CurrentTime => _now.State.Time;
+
         /// <summary>
         /// The derivative at the current state (the next step's start derivative). After a stop at an event, the slope of
         /// the step's dense output there (the flight is over; no evaluation is spent on it); at rest, zero.

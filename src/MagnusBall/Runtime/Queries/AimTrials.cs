@@ -199,7 +199,7 @@ namespace MagnusBall.Queries
                 StepOutcome outcome;
                 if (_adaptive != null)
                 {
-                    double left = endTime - stepper.State.Time;
+                    double left = endTime - stepper.CurrentTime;
                     if (!(left > 0) || pass >= MaximumAdaptiveSteps)
                     {
                         break;
@@ -210,7 +210,7 @@ namespace MagnusBall.Queries
                 }
                 else
                 {
-                    double h = FlightStepper.StepToward(stepper.State.Time, endTime, _step, out last);
+                    double h = FlightStepper.StepToward(stepper.CurrentTime, endTime, _step, out last);
                     outcome = stepper.TryStep(h, stopAt);
                 }
 

@@ -306,7 +306,7 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
-                double stepStart = _stepper.State.Time;
+                double stepStart = _stepper.CurrentTime;
                 StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
@@ -323,7 +323,7 @@ namespace MagnusBall.Stepping
                 steps++;
                 // A step cut short by its stop event (a landing) uses only the time it flew: the render clock (RenderTime) then
                 // goes on by the frame time through this frame, to the stop, instead of losing the rest of the step.
-                _accumulator -= _stepper.IsStopped ? _stepper.State.Time - stepStart : FixedStep;
+                _accumulator -= _stepper.IsStopped ? _stepper.CurrentTime - stepStart : FixedStep;
                 foreach (FlightEvent e in SpanView.Of(_stepper.Events)) // not ReadOnlySpan's enumerator: Mono 6.8 lacks it
                 {
                     if (written < events.Length)
