@@ -293,9 +293,26 @@ namespace MagnusBall.Tests.Queries
         public void QuickBounds_DecideAlikeInBothForms()
         {
             // HermiteSegment.CannotFall has two forms, with branches (RyuJIT) and in one basic block (Mono). They must decide
-            // alike on every cubic, except where 2 |m| overflows (|m| past 8.9e307): there the form without branches may
-            // answer "not sure" (the search then decides) but never "clear" where the branching form did not.
+            // alike on every cubic, except where a bound's doubled slope sum 2 (max(-m0, 0) + max(m1, 0)) (or
+            // 2 (max(m0, 0) + max(-m1, 0))) overflows, which slopes from about 4.5e307 each can do: there the form without
+            // branches may answer "not sure" (the search then decides) but never "clear" where the branching form did not.
             static bool Branching(double f0, double m0, double f1, double m1) => HermiteSegment.CannotFallBranching(f0, m0, f1, m1);
+            static bool SlopesOverflow(double m0, double m1) =>
+                double.IsInfinity(2 * ((m0 < 0 ? -m0 : 0) + (m1 > 0 ? m1 : 0))) || double.IsInfinity(2 * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0)));
+
+            // Cubics the branching form calls clear and the other not sure although neither slope passes 8.9e307 (the sum of
+            // the two does, doubled): found by a fuzz in review.
+            double[][] pinned =
+            {
+                new[] { 2.09225667265444E+307, -8.461574198886394E+307, 2.09225667265444E+307, 1.0687801286376465E+307 },
+                new[] { -3.2797331617617003E+307, 7.058305296790416E+307, -3.2797331617617008E+307, -3.5960842648454634E+307 },
+            };
+            foreach (double[] c in pinned)
+            {
+                Assert.That(Branching(c[0], c[1], c[2], c[3]), Is.True, "the pinned cubic is clear");
+                Assert.That(HermiteSegment.CannotFallInOneBlock(c[0], c[1], c[2], c[3]), Is.False, "the doubled sum overflows: not sure");
+                Assert.That(SlopesOverflow(c[1], c[3]), Is.True, "and the exception below covers it");
+            }
 
             // Numbers of every kind the flight core can hand it: signed zeros, subnormals, every decade up to double.MaxValue,
             // infinities and NaN, and cubics on the edge of each bound (f0 and f1 a few ulps either side of the bound).
@@ -335,8 +352,7 @@ namespace MagnusBall.Tests.Queries
                 }
 
                 bool before = Branching(f0, m0, f1, m1), now = HermiteSegment.CannotFallInOneBlock(f0, m0, f1, m1);
-                bool slopesOverflow = Math.Abs(m0) > double.MaxValue / 2 || Math.Abs(m1) > double.MaxValue / 2;
-                if (slopesOverflow && before && !now)
+                if (SlopesOverflow(m0, m1) && before && !now)
                 {
                     notSureWhereClear++;
                     continue;
@@ -350,7 +366,7 @@ namespace MagnusBall.Tests.Queries
             }
 
             TestContext.Out.WriteLine(
-                $"{same} the same ({clear} clear; on the edge {edgeClear} clear, {edgeNot} not), {notSureWhereClear} not sure where the old form said clear (slopes past 8.9e307)");
+                $"{same} the same ({clear} clear; on the edge {edgeClear} clear, {edgeNot} not), {notSureWhereClear} not sure where the branching form said clear (doubled slope sums past double.MaxValue)");
             Assert.That(clear, Is.GreaterThan(20_000), "enough cubics are clear to test the bounds' exits");
             Assert.That(same - clear, Is.GreaterThan(20_000), "and enough are not");
             Assert.That(Math.Min(edgeClear, edgeNot), Is.GreaterThan(5_000), "the edge cases fall on both sides of the bounds");

@@ -466,7 +466,9 @@ namespace MagnusBall.Integration
         // CannotFallBranching's bounds without a branch, deciding exactly as it does:
         // - a finite sum means four finite numbers (otherwise not sure, as there);
         // - (|m| - m) / 2 and (|m| + m) / 2 are max(-m, 0) and max(m, 0) exactly (doubling and halving are exact), but
-        //   where 2 |m| overflows (|m| past 8.9e307), which makes a bound infinite: not sure, the search decides;
+        //   where the doubled sum 2 (max(-m0, 0) + max(m1, 0)) (or the other bound's) overflows, as slopes from about
+        //   4.5e307 each can make it, a bound is infinite: not sure (never a "clear" the branching form does not give),
+        //   the search decides;
         // - min(f0, f1) - b > scale exactly when both f0 - b and f1 - b are (rounding is monotonic), and likewise for the
         //   maximum, so no minimum or maximum is formed.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
