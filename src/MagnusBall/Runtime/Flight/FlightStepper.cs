@@ -312,11 +312,10 @@ namespace MagnusBall.Flight
                 }
 
                 // Integrated straight into the first-piece fields (meaningful only once _hasFirstPiece is set): Mono zeroes
-                // every struct local on entry, and these two are 152 bytes.
-                // The built-in RK4 goes straight to the model's kernel (no argument check: the state is finite, as every
-                // state this class takes, and the step was checked above; no interface call), every other method through
-                // IIntegrator.Step.
-                int evaluations = 4;
+                // every struct local on entry, and these two are 152 bytes. The built-in RK4 goes straight to the model's
+                // kernel (no argument check: the state is finite, as every state this class takes, and the step was checked
+                // above; no interface call), every other method through IIntegrator.Step.
+                int evaluations = RungeKutta4.Evaluations;
                 if (Integrator is RungeKutta4)
                 {
                     _firstPiece = RungeKutta4.StepChecked(Model, _now.State, _now.Derivative, step, out _firstPieceDerivative);
@@ -325,6 +324,7 @@ namespace MagnusBall.Flight
                 {
                     _firstPiece = Integrator.Step(Model, _now.State, _now.Derivative, step, out _firstPieceDerivative, out evaluations);
                 }
+
                 if (!Takes(_now.State, _firstPiece, _firstPieceDerivative))
                 {
                     return StepOutcome.Diverged; // nothing changed

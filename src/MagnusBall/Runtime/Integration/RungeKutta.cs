@@ -1,4 +1,5 @@
 using System.Runtime.CompilerServices;
+
 namespace MagnusBall.Integration
 {
     /// <summary>
@@ -60,7 +61,10 @@ namespace MagnusBall.Integration
         public int Order => 4;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => 4;
+        public int DerivativeEvaluationsPerStep => Evaluations;
+
+        // The model evaluations of one step.
+        internal const int Evaluations = 4;
 
         /// <inheritdoc />
         public FlightState Step(
@@ -68,7 +72,7 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            evaluations = 4;
+            evaluations = Evaluations;
             return StepChecked(model, state, derivative, step, out endDerivative);
         }
 
