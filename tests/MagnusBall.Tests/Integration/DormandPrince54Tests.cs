@@ -29,6 +29,54 @@ namespace MagnusBall.Tests.Integration
             Math.Sqrt((a.Position - b.Position).LengthSquared + (a.Velocity - b.Velocity).LengthSquared + (a.AngularVelocity - b.AngularVelocity).LengthSquared);
 
         [Test]
+        public void DenseRows_AreAlikeInBothForms()
+        {
+            // The dense output's rows are formed as Vector3d expressions under RyuJIT and as scalars under Mono; both must be
+            // the same bits (the cross-runtime check relies on it). Random steps on four models, with components of +-0,
+            // subnormal, ordinary and up to 1e150, and steps from 1e-300 to 10 s; a one-operation reordering fails this.
+            var random = new Random(20261202);
+            FlightModel[] models =
+            {
+                FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp),
+                new FlightModel(Ball.Tennis, new Air(1.21, new Vector3d(2, -1, 0)), Gravity.YUp, StepanekDrag.Instance, StepanekLift.Instance,
+                    new ExponentialSpinDecay(20)),
+                new FlightModel(Ball.Soccer, new Air(1.2).WithLogarithmicWind(new Vector3d(5, 0, 0)), Gravity.ZUp, GoffCarreSoccerDrag.Instance,
+                    PiecewiseLinearLift.SoccerGoffCarre),
+                FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, -9.81, 0)),
+            };
+            double Component()
+            {
+                switch (random.Next(6))
+                {
+                    case 0: return random.Next(2) == 0 ? 0.0 : -0.0;
+                    case 1: return (random.Next(2) == 0 ? 1 : -1) * 1e-310 * random.NextDouble();
+                    case 2: return (random.NextDouble() * 2 - 1) * Math.Pow(10, 150 * random.NextDouble());
+                    default: return (random.NextDouble() * 2 - 1) * 50;
+                }
+            }
+
+            Vector3d Vector() => new Vector3d(Component(), Component(), Component());
+            int checkedSteps = 0;
+            for (int n = 0; n < 4000; n++)
+            {
+                FlightModel model = models[n % models.Length];
+                var state = new FlightState(Vector(), Vector(), Vector(), random.NextDouble());
+                StateDerivative k1 = model.Derivative(state);
+                double h = Math.Pow(10, 301 * random.NextDouble() - 300);
+                if (!k1.IsFinite)
+                {
+                    continue;
+                }
+
+                DormandPrince54.Instance.TryStep(model, state, k1, h, out DormandPrince54Step step);
+                Assert.That(step.DenseRowsAlikeInBothForms(), Is.True, $"{model}, {state}, h {h:R}");
+                checkedSteps++;
+            }
+
+            Assert.That(checkedSteps, Is.GreaterThan(3000));
+        }
+
+        [Test]
         public void FixedStep_ConvergesAtFifthOrder()
         {
             FlightState reference = Reference(1.0);
