@@ -49,7 +49,7 @@ namespace MagnusBall.Integration
         // operations in the same order (test DenseRows_AreAlikeInBothForms): Vector3d expressions under RyuJIT, which
         // keeps them in registers (the scalar form measured 4-5 % slower aim solves there), and scalars under Mono
         // (FlightKernel.PreferStraightLine), whose JIT zeroes, stores and copies every vector temporary (the scalar form:
-        // about 7 % faster aim solves there).
+        // 8-10 % faster aim solves there, docs/performance.md).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private void DenseRowsAsVectors(double step)
         {
