@@ -64,10 +64,7 @@ namespace MagnusBall
         /// <summary>The plain formula, for the flight core's quick tests, which send a non-finite value on to a search that
         /// uses <see cref="SignedDistance"/> (no check on the common step).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal double UncheckedSignedDistance(in Vector3d position) =>
-            // Vector3d.Dot(position - Point, Normal), operation for operation, without the difference vector (Mono zeroes and
-            // copies such a temporary through memory).
-            (position.X - Point.X) * Normal.X + (position.Y - Point.Y) * Normal.Y + (position.Z - Point.Z) * Normal.Z;
+        internal double UncheckedSignedDistance(in Vector3d position) => Vector3d.PlainDotOfDifference(position, Point, Normal);
 
         // A quarter of the signed distance, never overflowing for finite input (Vector3d.QuarterDotOfDifference).
         private double QuarterDistance(in Vector3d position) => Vector3d.QuarterDotOfDifference(position, Point, Normal);

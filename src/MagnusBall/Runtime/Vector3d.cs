@@ -148,15 +148,21 @@ namespace MagnusBall
         /// (<paramref name="a"/> - <paramref name="b"/>) . <paramref name="unit"/> for a unit (or shorter) vector: the plain
         /// formula, and where that is not finite (a and b near 1e308 apart: a component of the difference overflowed, then
         /// inf * 0 or inf - inf), 4 times the same formed from quarters, which cannot overflow for finite input (the
-        /// reasoning of <see cref="Plane.SignedDistance"/>): infinite only where the true value exceeds a double, NaN only
+        /// reasoning at <see cref="QuarterDotOfDifference"/>): infinite only where the true value exceeds a double, NaN only
         /// for a non-finite input. The common case is the plain formula, bit for bit.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static double DotOfDifference(in Vector3d a, in Vector3d b, in Vector3d unit)
         {
-            double d = (a.X - b.X) * unit.X + (a.Y - b.Y) * unit.Y + (a.Z - b.Z) * unit.Z;
+            double d = PlainDotOfDifference(a, b, unit);
             return IsFiniteNumber(d) ? d : 4 * QuarterDotOfDifference(a, b, unit);
         }
+
+        // (a - b) . n by the plain formula, Dot(a - b, n) operation for operation, without the difference vector (Mono zeroes
+        // and copies such a temporary through memory); not finite where a component of a - b or a partial sum overflows.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double PlainDotOfDifference(in Vector3d a, in Vector3d b, in Vector3d n) =>
+            (a.X - b.X) * n.X + (a.Y - b.Y) * n.Y + (a.Z - b.Z) * n.Z;
 
         // A quarter of (a - b) . n, never overflowing for finite input, for where the plain formula was not finite: a
         // component of a - b overflowed (its product infinite where the true one may be finite, NaN beside a zero component
