@@ -90,6 +90,7 @@ namespace MagnusBall.Flight
         private readonly bool _gravityHolds;          // gravity pushes the ball into the surface
 
         private Snapshot _now;
+        private Snapshot _before; // Advance's copy of _now from before the step (scratch: see there)
         private FlightEvent _stopEvent;        // the flight's stop event (outside the snapshot: set only by a step that stops)
         private FlightEvent _pendingStop;      // a stop found during the step, committed with it
         // The last step's dense output is its one piece (Previous, PreviousDerivative, State, Derivative), not stored in
@@ -476,8 +477,10 @@ namespace MagnusBall.Flight
             }
 
             // Everything this step may change, kept so that a refused step puts it all back (events and pieces go to the
-            // pending arrays, swapped in only when the step is taken).
-            Snapshot before = _now;
+            // pending arrays, swapped in only when the step is taken). In a field, not a local: Mono zero-fills every struct
+            // local on entry (344 bytes here, on every step).
+            ref Snapshot before = ref _before;
+            before = _now;
             _now.Previous = _now.State;
             _now.PreviousDerivative = _now.Derivative;
             _pendingEventCount = 0;
@@ -649,12 +652,30 @@ namespace MagnusBall.Flight
                 }
                 else
                 {
-                    Continue(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative), end, endDerivative, implicitPiece: false);
+                    ContinueAdaptive(ref result);
                 }
 
                 return true;
             }
 
+            return HandleAdaptivePiece(ref result, piece, stopAt);
+        }
+
+        // FlyAdaptivePiece's paths that build the step's 304-byte Hermite segment, out of line: Mono zero-fills a method's
+        // struct locals on entry, so in FlyAdaptivePiece they cost that on every step, the common one that needs none too.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private void ContinueAdaptive(ref DormandPrince54Step result)
+        {
+            ref readonly FlightState end = ref result.Stages.End;
+            ref readonly StateDerivative endDerivative = ref result.Stages.K7;
+            Continue(HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative), end, endDerivative, implicitPiece: false);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private bool HandleAdaptivePiece(ref DormandPrince54Step result, int piece, FlightEventKinds stopAt)
+        {
+            ref readonly FlightState end = ref result.Stages.End;
+            ref readonly StateDerivative endDerivative = ref result.Stages.K7;
             // For StateAt between frames: the cubic Hermite through the step's ends (no evaluation).
             var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
