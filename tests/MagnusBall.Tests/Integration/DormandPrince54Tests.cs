@@ -411,5 +411,45 @@ namespace MagnusBall.Tests.Integration
             DormandPrince54.Instance.TryStep(model, start, k1, 0.01, out DormandPrince54Step ok);
             Assert.That(() => ok.Interpolate(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("time"));
         }
-    }
+    
+        [Test]
+        public void StepAskedFor_IsTakenFromTheSameStart_AndSkipsTheControllersRamp()
+        {
+            // The aim solver starts its later trials with the step the first trial's controller asked for at the launch. That
+            // step must be one the method accepts from the same start (norm <= 1), and worth asking for: more than five times
+            // InitialStep's guess (the controller grows a step at most fivefold, so a trial started with it skips at least
+            // one step of that ramp; measured 9-10 times). Were the local error to grow as h^5 all the way, its norm would be
+            // 0.9^5 = 0.59; it grows more slowly over the tenfold step (measured 0.14-0.35), so the bound 0.05 says only that
+            // the step is within (0.59 / 0.05)^(1/5) = 1.6 times of the one the h^5 law picks. The full tennis model, both of
+            // the aim solver's tolerances and three launches.
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            foreach (double tolerance in new[] { 1e-5, 1e-8 })
+            {
+                var method = new DormandPrince54(tolerance, tolerance);
+                foreach (double elevation in new[] { -0.7, 0.1, 0.9 })
+                {
+                    var velocity = new Vector3d(30 * Math.Cos(elevation), 0, 30 * Math.Sin(elevation));
+                    var start = new FlightState(new Vector3d(0, 0, 1), velocity, Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRevolutionsPerSecond(20)));
+                    StateDerivative k1 = model.Derivative(start);
+                    double first = method.InitialStep(model, start, k1, 0.5);
+                    Assert.That(method.TryStep(model, start, k1, first, out DormandPrince54Step step), Is.True);
+                    double asked = DormandPrince54.StepAskedFor(step);
+                    Assert.That(asked, Is.GreaterThan(5 * first), "more than the controller's fivefold growth");
+                    Assert.That(method.TryStep(model, start, k1, asked, out DormandPrince54Step again), Is.True, $"tolerance {tolerance}, elevation {elevation}");
+                    TestContext.Out.WriteLine($"tolerance {tolerance:E0}, elevation {elevation}: first {first:E3} s, asked {asked:E3} s, norm there {again.ErrorNorm:F3}");
+                    Assert.That(again.ErrorNorm, Is.GreaterThan(0.05), "not far below the tolerance");
+                }
+            }
+        }
+
+        [Test]
+        public void StepAskedFor_OfARejectedStep_IsNaN()
+        {
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 0, 3), new Vector3d(0, 120, 0));
+            var method = new DormandPrince54(1e-8, 1e-8);
+            Assert.That(method.TryStep(model, start, model.Derivative(start), 0.5, out DormandPrince54Step rejected), Is.False);
+            Assert.That(DormandPrince54.StepAskedFor(rejected), Is.NaN);
+        }
+}
 }

@@ -240,5 +240,41 @@ namespace MagnusBall.Tests.Queries
             Assert.That(new AimSolver(Vacuum, RungeKutta4.Instance, 0.01, new Plane(default, Vector3d.UnitZ), elevationScanDegrees: 0.0125).ElevationScanRadians, Is.GreaterThan(0), "the finest allowed scan");
             Assert.That(Assert.Throws<ArgumentException>(() => new LaunchFrame(Vector3d.UnitZ, new Vector3d(0, 0, 2)))!.ParamName, Is.EqualTo("forward"));
         }
-    }
+    
+        [Test]
+        public void ASolve_GivesTheSameBits_WhateverTheSolverSolvedBefore()
+        {
+            // Adaptive trials after a solve's first start with the step that first trial's controller asked for; that step
+            // belongs to the solve, so a solve's answer must not depend on what the solver did before it (it would, were the
+            // step carried from one solve to the next).
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var start = new Vector3d(0, 0, 1);
+            var spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
+            var net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            var solves = new Func<AimSolver, AimSolution>[]
+            {
+                s => s.ElevationToReach(start, 30, spin, new Vector3d(23.77, 0, 0)),
+                s => s.AnglesToReach(start, 30, spin, new Vector3d(23.77, 4.1, 0)),
+                s => s.SpeedToReach(start, 8 * Math.PI / 180, 0, spin, new Vector3d(23.77, 0, 0)),
+                s => s.MinimumElevationToClear(start, 30, 0, spin, net, 0.914),
+                s => s.ElevationToReach(start, 12, new LaunchSpin(Spin.FromRevolutionsPerSecond(-40)), new Vector3d(9, -1, 0)),
+            };
+            for (int i = 0; i < solves.Length; i++)
+            {
+                AimSolution fresh = solves[i](new AimSolver(model, Plane.Ground(model)));
+                Assert.That(fresh.IsSolved, Is.True, $"solve {i}");
+                var used = new AimSolver(model, Plane.Ground(model));
+                for (int j = solves.Length - 1; j >= 0; j--)
+                {
+                    solves[j](used); // every solve, this one included, before it is solved again
+                }
+
+                AimSolution again = solves[i](used);
+                Assert.That(BitConverter.DoubleToInt64Bits(again.ElevationRadians), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.ElevationRadians)), $"solve {i}: elevation");
+                Assert.That(BitConverter.DoubleToInt64Bits(again.AzimuthRadians), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.AzimuthRadians)), $"solve {i}: azimuth");
+                Assert.That(BitConverter.DoubleToInt64Bits(again.Speed), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.Speed)), $"solve {i}: speed");
+                Assert.That(again.Simulations, Is.EqualTo(fresh.Simulations), $"solve {i}: flights");
+            }
+        }
+}
 }

@@ -78,5 +78,41 @@ namespace MagnusBall.Tests.Queries
             var set = FlightEventSet.ForModel(model);
             Assert.Throws<ArgumentException>(() => set.Scan(default, new FlightEvent[1]));
         }
-    }
+    
+        [Test]
+        public void SetNextAdaptiveStep_SetsTheFirstStep_AndSavesTheGuessesEvaluation()
+        {
+            // Counted by the model itself. After Reset (one evaluation), an adaptive step from InitialStep's guess costs that
+            // guess's evaluation and six; with the step set, six, and the step taken is the one set. Values that are not
+            // finite and positive are ignored (the guess is used).
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, MagnusBall.Aerodynamics.StepanekDrag.Instance);
+            var calls = new EvaluationCount();
+            model.CountedEvaluations = calls;
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 0, 3), new Vector3d(0, 60, 0));
+            var stepper = new FlightStepper(model, RungeKutta4.Instance);
+            var method = new DormandPrince54(1e-8, 1e-8);
+            foreach (double ignored in new[] { 0, -0.01, double.NaN, double.PositiveInfinity })
+            {
+                stepper.Reset(start);
+                stepper.SetNextAdaptiveStep(ignored);
+                long before = calls.Calls;
+                Assert.That(stepper.TryStepAdaptive(method, 1.0), Is.EqualTo(StepOutcome.Taken));
+                Assert.That(calls.Calls - before, Is.EqualTo(7), $"{ignored}: the guess's evaluation and one step");
+            }
+
+            stepper.Reset(start);
+            stepper.SetNextAdaptiveStep(0.01);
+            long at = calls.Calls;
+            Assert.That(stepper.TryStepAdaptive(method, 1.0), Is.EqualTo(StepOutcome.Taken));
+            Assert.That(calls.Calls - at, Is.EqualTo(6));
+            Assert.That(stepper.CurrentTime, Is.EqualTo(0.01));
+            Assert.That(stepper.LastAdaptiveStep.Step, Is.EqualTo(0.01));
+
+            // Still capped by the call's maximum.
+            stepper.Reset(start);
+            stepper.SetNextAdaptiveStep(0.01);
+            Assert.That(stepper.TryStepAdaptive(method, 0.004), Is.EqualTo(StepOutcome.Taken));
+            Assert.That(stepper.CurrentTime, Is.EqualTo(0.004));
+        }
+}
 }

@@ -375,6 +375,22 @@ namespace MagnusBall.Flight
         }
 
         /// <summary>
+        /// Sets the size of the next adaptive step, in place of <see cref="DormandPrince54.InitialStep"/>'s estimate (and its
+        /// evaluation) after <see cref="Reset"/>: the aim solver's trials start with the step an earlier trial's controller
+        /// asked for at its launch. Ignored unless finite and &gt; 0; the step is still capped by each call's maximum.
+        /// </summary>
+        internal void SetNextAdaptiveStep(double step)
+        {
+            if (step > 0 && step <= double.MaxValue)
+            {
+                _now.NextAdaptiveStep = step;
+            }
+        }
+
+        /// <summary>The last adaptive step attempted (its size, error norm and whether it was accepted).</summary>
+        internal ref readonly DormandPrince54Step LastAdaptiveStep => ref _adaptiveStep;
+
+        /// <summary>
         /// One adaptive Dormand-Prince 5(4) step of at most <paramref name="maxStep"/> seconds, its size chosen by
         /// error control (the controller's next step is kept between calls); events are located on the method's own
         /// fourth-order interpolant. Allocates nothing.

@@ -198,6 +198,23 @@ namespace MagnusBall.Integration
         }
 
         /// <summary>
+        /// The step the controller's error estimate asks for where <paramref name="step"/> began: its size times
+        /// 0.9 norm^(-1/5), without the factor's limits (0.2 to 5 a step), which only pace the controller. +infinity for an
+        /// error norm of zero (no error estimate limits the step), NaN for a step not accepted or not finite.
+        /// </summary>
+        internal static double StepAskedFor(in DormandPrince54Step step)
+        {
+            double norm = step.ErrorNorm;
+            if (!step.Accepted || !(norm >= 0) || !(step.Step > 0))
+            {
+                return double.NaN;
+            }
+
+            // Below 1e-300 the power would exceed 1e60 times the step: nothing limits the step.
+            return norm < 1e-300 ? double.PositiveInfinity : step.Step * (Safety * PowMinusOneFifth(norm));
+        }
+
+        /// <summary>
         /// x^(-1/5) for the controller's error norms (1.8e-4 to 2000, where the factor is not clamped; any x from 1e-300 to
         /// double.MaxValue works): sqrt(x'^(-2/5)) 2^k with x' = x 2^(5k) &gt;= 1, the power by <see cref="Aerodynamics.StepanekDrag.PowMinusTwoFifths"/>
         /// and both scalings by powers of two (exact): within 1 ulp of the true power (0.97 ulp the worst of 30,000 norms checked

@@ -51,6 +51,13 @@ namespace MagnusBall.Queries
         private readonly double _step;
         private readonly double _maximumFlightTime;
         private readonly Vector3d _up;
+        // The solve's first adaptive trial starts from DormandPrince54.InitialStep's rough estimate, which the controller then
+        // grows at most fivefold a step; every later trial starts with the step the first trial's controller asked for at
+        // its launch (DormandPrince54.StepAskedFor), scaled to the trial's tolerance by (tolerance / first's)^(1/5), the
+        // controller's own law. Fixed for the rest of the solve, so every later trial's margin depends on its launch alone.
+        // 0: no trial yet; -1: the first trial gave none (later trials start from InitialStep too).
+        private double _firstStep;
+        private double _firstTolerance;
 
         /// <param name="model">The flight model.</param>
         /// <param name="integrator">The fixed-step integrator, or for adaptive trials the Dormand-Prince method.</param>
@@ -96,6 +103,7 @@ namespace MagnusBall.Queries
             Flights = 0;
             Work = 0;
             WorkLimitReached = false;
+            _firstStep = 0;
         }
 
         /// <summary>
@@ -176,6 +184,14 @@ namespace MagnusBall.Queries
             return arrived;
         }
 
+        // A later trial's first step (see _firstStep): the first trial's, scaled to this method's tolerance. The power is
+        // DormandPrince54's portable x^(-1/5), so the step is the same on every runtime.
+        private double FirstStep(DormandPrince54 method)
+        {
+            double tolerance = method.RelativeTolerance;
+            return tolerance == _firstTolerance ? _firstStep : _firstStep * DormandPrince54.PowMinusOneFifth(_firstTolerance / tolerance);
+        }
+
         private bool FlyTrial(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
         {
             Flights++;
@@ -206,7 +222,19 @@ namespace MagnusBall.Queries
                     }
 
                     last = false; // the check above ends the loop at the time limit
-                    outcome = stepper.TryStepAdaptive(Coarse && _coarse != null ? _coarse : _adaptive, Math.Min(left, _step), stopAt);
+                    DormandPrince54 method = Coarse && _coarse != null ? _coarse : _adaptive;
+                    if (pass == 0 && _firstStep > 0)
+                    {
+                        stepper.SetNextAdaptiveStep(FirstStep(method));
+                    }
+
+                    outcome = stepper.TryStepAdaptive(method, Math.Min(left, _step), stopAt);
+                    if (pass == 0 && _firstStep == 0)
+                    {
+                        double asked = DormandPrince54.StepAskedFor(stepper.LastAdaptiveStep);
+                        _firstStep = asked > 0 ? Math.Min(asked, _step) : -1;
+                        _firstTolerance = method.RelativeTolerance;
+                    }
                 }
                 else
                 {
