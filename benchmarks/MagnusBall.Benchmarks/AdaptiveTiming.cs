@@ -31,7 +31,8 @@ namespace MagnusBall.Benchmarks
                     double x = 0;
                     for (int i = 0; i < Repeats; i++)
                     {
-                        model.Kernel.DormandPrince54(launch, k1, 0.01, out DormandPrince54Stages stages);
+                        DormandPrince54Stages stages = default;
+                        model.Kernel.DormandPrince54(launch, k1, 0.01, ref stages);
                         x += stages.End.Position.X;
                     }
 

@@ -55,12 +55,13 @@ namespace MagnusBall
 
         /// <summary>
         /// The six stages of one Dormand-Prince 5(4) step from <paramref name="state"/> with start derivative
-        /// <paramref name="k1"/> (DormandPrince54's arithmetic term by term): the fifth-order end state and k3..k7 in
-        /// <paramref name="stages"/> (k7 is the derivative at the end). Six evaluations. No argument checks. False when a
-        /// stage's acceleration or spin acceleration may not be finite (where FlightModel.Derivative would take its scaled
-        /// path): the caller then redoes the step through FlightModel.Derivative.
+        /// <paramref name="k1"/> (DormandPrince54's arithmetic term by term): the fifth-order end state and k2..k7, written
+        /// into <paramref name="stages"/> in place as they are formed (k7 is the derivative at the end; what the stages held
+        /// before is never read, and <paramref name="state"/> and <paramref name="k1"/> must not be parts of it). Six
+        /// evaluations. No argument checks. False when a stage's acceleration or spin acceleration may not be finite (where
+        /// FlightModel.Derivative would take its scaled path): the caller then redoes the step through FlightModel.Derivative.
         /// </summary>
-        internal abstract bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, out DormandPrince54Stages stages);
+        internal abstract bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, ref DormandPrince54Stages stages);
     }
 
     /// <summary>The kernel for drag law <typeparamref name="TDrag"/>, lift law <typeparamref name="TLift"/> and spin decay <typeparamref name="TDecay"/>.</summary>
@@ -336,16 +337,14 @@ namespace MagnusBall
             return next;
         }
 
-        internal override bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, out DormandPrince54Stages stages)
+        internal override bool DormandPrince54(in FlightState state, in StateDerivative k1, double step, ref DormandPrince54Stages stages)
         {
-            // DormandPrince54's arithmetic term by term (Dp54Stage forms each stage, Dp54Rates holds k1..k6). One evaluation
-            // site (a loop over k2..k7), so the inlined laws appear once in the code; the stage positions are formed only
-            // where the wind depends on the height, the stage spins only where the spin decays (otherwise every stage spin
-            // is the start spin plus zero rates); the end state is formed in full.
-            Dp54Rates k = default;
-            k.V1 = k1.Velocity;
-            k.A1 = k1.Acceleration;
-            k.S1 = k1.AngularAcceleration;
+            // DormandPrince54's arithmetic term by term (Dp54Stage forms each stage from k1 and the stages written so far).
+            // One evaluation site (a loop over k2..k7), so the inlined laws appear once in the code; the stage positions are
+            // formed only where the wind depends on the height, the stage spins only where the spin decays (otherwise every
+            // stage spin is the start spin plus zero rates); the end state is formed in full. The rates go straight into the
+            // caller's stages, no table of its own: Mono zero-fills every struct local on entry, and a 432-byte table of
+            // k1..k6 was one of this method's costs there.
             double h = step;
             double check = 0; // the sum of every stage's rates: finite when each of them is (or spuriously not, on overflow)
             Vector3d w0 = state.AngularVelocity;
@@ -353,7 +352,7 @@ namespace MagnusBall
             for (int stage = 1; ; stage++)
             {
                 // stage 1..5: k2..k6; stage 6: the end, where k7 is evaluated
-                Dp54Stage(ref k, stage, h, state, out Vector3d ps, out Vector3d vs, out Vector3d ws);
+                Dp54Stage(k1, ref stages, stage, h, state, out Vector3d ps, out Vector3d vs, out Vector3d ws);
                 bool end = stage == 6;
                 if (_decay.IsPresent || end)
                 {
@@ -365,37 +364,22 @@ namespace MagnusBall
                 switch (stage)
                 {
                     case 1:
-                        k.V2 = vs;
-                        k.A2 = a;
-                        k.S2 = s;
+                        stages.K2 = new StateDerivative(vs, a, s);
                         break;
                     case 2:
-                        k.V3 = vs;
-                        k.A3 = a;
-                        k.S3 = s;
+                        stages.K3 = new StateDerivative(vs, a, s);
                         break;
                     case 3:
-                        k.V4 = vs;
-                        k.A4 = a;
-                        k.S4 = s;
+                        stages.K4 = new StateDerivative(vs, a, s);
                         break;
                     case 4:
-                        k.V5 = vs;
-                        k.A5 = a;
-                        k.S5 = s;
+                        stages.K5 = new StateDerivative(vs, a, s);
                         break;
                     case 5:
-                        k.V6 = vs;
-                        k.A6 = a;
-                        k.S6 = s;
+                        stages.K6 = new StateDerivative(vs, a, s);
                         break;
                     default:
-                        // Written field by field, in place (the caller's stages are part of its step; the inputs are read by now).
                         stages.End = new FlightState(ps, vs, ws, state.Time + h);
-                        stages.K3 = new StateDerivative(k.V3, k.A3, k.S3);
-                        stages.K4 = new StateDerivative(k.V4, k.A4, k.S4);
-                        stages.K5 = new StateDerivative(k.V5, k.A5, k.S5);
-                        stages.K6 = new StateDerivative(k.V6, k.A6, k.S6);
                         stages.K7 = new StateDerivative(vs, a, s);
                         return double.IsFinite(check);
                 }
@@ -404,9 +388,10 @@ namespace MagnusBall
 
         // Stage `stage` of Dormand-Prince 5(4) (1..5: the states of k2..k6; 6: the fifth-order end): y + (h a_i1) k1 +
         // (h a_i2) k2 + ..., left to right as DormandPrince54's Combine sums it (stage 1 as FlightState.Advance(k1, a21 h));
-        // the end leaves k2 out (b2 = 0), as there. Not inlined: one small copy serves the loop above.
+        // the end leaves k2 out (b2 = 0), as there. k2..k6 are read from the stages written so far. Not inlined: one small
+        // copy serves the loop above.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private void Dp54Stage(ref Dp54Rates k, int stage, double h, in FlightState y, out Vector3d ps, out Vector3d vs, out Vector3d ws)
+        private void Dp54Stage(in StateDerivative k1, ref DormandPrince54Stages k, int stage, double h, in FlightState y, out Vector3d ps, out Vector3d vs, out Vector3d ws)
         {
             bool spins = _decay.IsPresent, positions = _windVaries;
             Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity;
@@ -417,15 +402,15 @@ namespace MagnusBall
                 case 1:
                 {
                     double c = DP.A21 * h;
-                    vs = Add(v, k.A1, c);
+                    vs = Add(v, k1.Acceleration, c);
                     if (spins)
                     {
-                        ws = Add(w, k.S1, c);
+                        ws = Add(w, k1.AngularAcceleration, c);
                     }
 
                     if (positions)
                     {
-                        ps = Add(p, k.V1, c);
+                        ps = Add(p, k1.Velocity, c);
                     }
 
                     return;
@@ -434,15 +419,15 @@ namespace MagnusBall
                 case 2:
                 {
                     double ha = h * DP.A31, hb = h * DP.A32;
-                    vs = Add(Add(v, k.A1, ha), k.A2, hb);
+                    vs = Add(Add(v, k1.Acceleration, ha), k.K2.Acceleration, hb);
                     if (spins)
                     {
-                        ws = Add(Add(w, k.S1, ha), k.S2, hb);
+                        ws = Add(Add(w, k1.AngularAcceleration, ha), k.K2.AngularAcceleration, hb);
                     }
 
                     if (positions)
                     {
-                        ps = Add(Add(p, k.V1, ha), k.V2, hb);
+                        ps = Add(Add(p, k1.Velocity, ha), k.K2.Velocity, hb);
                     }
 
                     return;
@@ -451,15 +436,15 @@ namespace MagnusBall
                 case 3:
                 {
                     double ha = h * DP.A41, hb = h * DP.A42, hc = h * DP.A43;
-                    vs = Add(Add(Add(v, k.A1, ha), k.A2, hb), k.A3, hc);
+                    vs = Add(Add(Add(v, k1.Acceleration, ha), k.K2.Acceleration, hb), k.K3.Acceleration, hc);
                     if (spins)
                     {
-                        ws = Add(Add(Add(w, k.S1, ha), k.S2, hb), k.S3, hc);
+                        ws = Add(Add(Add(w, k1.AngularAcceleration, ha), k.K2.AngularAcceleration, hb), k.K3.AngularAcceleration, hc);
                     }
 
                     if (positions)
                     {
-                        ps = Add(Add(Add(p, k.V1, ha), k.V2, hb), k.V3, hc);
+                        ps = Add(Add(Add(p, k1.Velocity, ha), k.K2.Velocity, hb), k.K3.Velocity, hc);
                     }
 
                     return;
@@ -468,15 +453,15 @@ namespace MagnusBall
                 case 4:
                 {
                     double ha = h * DP.A51, hb = h * DP.A52, hc = h * DP.A53, hd = h * DP.A54;
-                    vs = Add(Add(Add(Add(v, k.A1, ha), k.A2, hb), k.A3, hc), k.A4, hd);
+                    vs = Add(Add(Add(Add(v, k1.Acceleration, ha), k.K2.Acceleration, hb), k.K3.Acceleration, hc), k.K4.Acceleration, hd);
                     if (spins)
                     {
-                        ws = Add(Add(Add(Add(w, k.S1, ha), k.S2, hb), k.S3, hc), k.S4, hd);
+                        ws = Add(Add(Add(Add(w, k1.AngularAcceleration, ha), k.K2.AngularAcceleration, hb), k.K3.AngularAcceleration, hc), k.K4.AngularAcceleration, hd);
                     }
 
                     if (positions)
                     {
-                        ps = Add(Add(Add(Add(p, k.V1, ha), k.V2, hb), k.V3, hc), k.V4, hd);
+                        ps = Add(Add(Add(Add(p, k1.Velocity, ha), k.K2.Velocity, hb), k.K3.Velocity, hc), k.K4.Velocity, hd);
                     }
 
                     return;
@@ -485,15 +470,15 @@ namespace MagnusBall
                 case 5:
                 {
                     double ha = h * DP.A61, hb = h * DP.A62, hc = h * DP.A63, hd = h * DP.A64, he = h * DP.A65;
-                    vs = Add(Add(Add(Add(Add(v, k.A1, ha), k.A2, hb), k.A3, hc), k.A4, hd), k.A5, he);
+                    vs = Add(Add(Add(Add(Add(v, k1.Acceleration, ha), k.K2.Acceleration, hb), k.K3.Acceleration, hc), k.K4.Acceleration, hd), k.K5.Acceleration, he);
                     if (spins)
                     {
-                        ws = Add(Add(Add(Add(Add(w, k.S1, ha), k.S2, hb), k.S3, hc), k.S4, hd), k.S5, he);
+                        ws = Add(Add(Add(Add(Add(w, k1.AngularAcceleration, ha), k.K2.AngularAcceleration, hb), k.K3.AngularAcceleration, hc), k.K4.AngularAcceleration, hd), k.K5.AngularAcceleration, he);
                     }
 
                     if (positions)
                     {
-                        ps = Add(Add(Add(Add(Add(p, k.V1, ha), k.V2, hb), k.V3, hc), k.V4, hd), k.V5, he);
+                        ps = Add(Add(Add(Add(Add(p, k1.Velocity, ha), k.K2.Velocity, hb), k.K3.Velocity, hc), k.K4.Velocity, hd), k.K5.Velocity, he);
                     }
 
                     return;
@@ -502,20 +487,12 @@ namespace MagnusBall
                 default:
                 {
                     double ha = h * DP.B1, hc = h * DP.B3, hd = h * DP.B4, he = h * DP.B5, hf = h * DP.B6;
-                    vs = Add(Add(Add(Add(Add(v, k.A1, ha), k.A3, hc), k.A4, hd), k.A5, he), k.A6, hf);
-                    ws = Add(Add(Add(Add(Add(w, k.S1, ha), k.S3, hc), k.S4, hd), k.S5, he), k.S6, hf);
-                    ps = Add(Add(Add(Add(Add(p, k.V1, ha), k.V3, hc), k.V4, hd), k.V5, he), k.V6, hf);
+                    vs = Add(Add(Add(Add(Add(v, k1.Acceleration, ha), k.K3.Acceleration, hc), k.K4.Acceleration, hd), k.K5.Acceleration, he), k.K6.Acceleration, hf);
+                    ws = Add(Add(Add(Add(Add(w, k1.AngularAcceleration, ha), k.K3.AngularAcceleration, hc), k.K4.AngularAcceleration, hd), k.K5.AngularAcceleration, he), k.K6.AngularAcceleration, hf);
+                    ps = Add(Add(Add(Add(Add(p, k1.Velocity, ha), k.K3.Velocity, hc), k.K4.Velocity, hd), k.K5.Velocity, he), k.K6.Velocity, hf);
                     return;
                 }
             }
-        }
-
-        // k1..k6 of a Dormand-Prince step: each stage's velocity (the position rate), acceleration and spin acceleration.
-        private struct Dp54Rates
-        {
-            public Vector3d V1, V2, V3, V4, V5, V6;
-            public Vector3d A1, A2, A3, A4, A5, A6;
-            public Vector3d S1, S2, S3, S4, S5, S6;
         }
 
         // One RK4 step, RungeKutta4.Step's arithmetic term by term, plus the end rates, in one of two shapes with the same

@@ -235,14 +235,22 @@ namespace MagnusBall.Tests.Integration
                 foreach (double step in new[] { 1.0 / 240, 0.03 })
                 {
                     StateDerivative k1 = model.GeneralDerivative(state);
-                    FlightState reference = ReferenceDp54(model, state, k1, step, out StateDerivative k7);
-                    bool finite = model.Kernel.DormandPrince54(state, k1, step, out DormandPrince54Stages stages);
+                    FlightState reference = ReferenceDp54(model, state, k1, step, out StateDerivative[] k);
+                    // Stages that hold garbage beforehand: the kernel writes every stage it reads (k2..k6 from the stages
+                    // themselves), so nothing left in them may reach the step.
+                    DormandPrince54Stages stages = Garbage();
+                    bool finite = model.Kernel.DormandPrince54(state, k1, step, ref stages);
                     if (finite)
                     {
                         finiteSteps++;
                         AssertSame(stages.End, reference, state);
-                        AssertSame(stages.K7.Acceleration, k7.Acceleration, state);
-                        AssertSame(stages.K7.AngularAcceleration, k7.AngularAcceleration, state);
+                        StateDerivative[] written = { stages.K2, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7 };
+                        for (int i = 0; i < written.Length; i++)
+                        {
+                            AssertSame(written[i].Velocity, k[i].Velocity, state);
+                            AssertSame(written[i].Acceleration, k[i].Acceleration, state);
+                            AssertSame(written[i].AngularAcceleration, k[i].AngularAcceleration, state);
+                        }
                     }
                 }
             }
@@ -263,7 +271,8 @@ namespace MagnusBall.Tests.Integration
             {
                 var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(speed, 0, speed / 3), new Vector3d(10, 150, 20));
                 StateDerivative k1 = model.Derivative(state);
-                if (!model.Kernel.DormandPrince54(state, k1, 0.01, out _))
+                DormandPrince54Stages ignored = default;
+                if (!model.Kernel.DormandPrince54(state, k1, 0.01, ref ignored))
                 {
                     fallbacks++;
                 }
@@ -536,7 +545,9 @@ namespace MagnusBall.Tests.Integration
 
         // Dormand & Prince's (1980) tableau through the general derivative at each stage, written out here: the end state
         // y + h (b1 k1 + b3 k3 + b4 k4 + b5 k5 + b6 k6) and k7 = f(end), each sum left to right as DormandPrince54 forms it.
-        private static FlightState ReferenceDp54(FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative k7)
+        // Every stage's state is formed in full here (positions and spins too), so the stage velocities, the rates and the
+        // end are the tableau's whatever the kernel leaves out. k: k2..k7.
+        private static FlightState ReferenceDp54(FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative[] k)
         {
             StateDerivative k2 = model.GeneralDerivative(y.Advance(k1, (1.0 / 5) * h));
             StateDerivative k3 = model.GeneralDerivative(Sum(y, h, new[] { k1, k2 }, new[] { 3.0 / 40, 9.0 / 40 }));
@@ -547,8 +558,25 @@ namespace MagnusBall.Tests.Integration
                 Sum(y, h, new[] { k1, k2, k3, k4, k5 }, new[] { 9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656 }));
             FlightState end = Sum(y, h, new[] { k1, k3, k4, k5, k6 }, new[] { 35.0 / 384, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84 });
             end = new FlightState(end.Position, end.Velocity, end.AngularVelocity, y.Time + h);
-            k7 = model.GeneralDerivative(end);
+            StateDerivative k7 = model.GeneralDerivative(end);
+            k = new[] { k2, k3, k4, k5, k6, k7 };
             return end;
+        }
+
+        private static DormandPrince54Stages Garbage()
+        {
+            var nan = new Vector3d(double.NaN, double.NaN, double.NaN);
+            var rates = new StateDerivative(nan, nan, nan);
+            return new DormandPrince54Stages
+            {
+                End = new FlightState(nan, nan, nan, double.NaN),
+                K2 = rates,
+                K3 = rates,
+                K4 = rates,
+                K5 = rates,
+                K6 = rates,
+                K7 = rates,
+            };
         }
 
         private static FlightState Sum(in FlightState y, double h, StateDerivative[] k, double[] a)

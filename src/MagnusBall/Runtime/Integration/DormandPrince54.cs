@@ -92,7 +92,8 @@ namespace MagnusBall.Integration
             out StateDerivative endDerivative, out int evaluations)
         {
             StepArguments.Check(model, state, step);
-            if (!model.Kernel.DormandPrince54(state, derivative, step, out DormandPrince54Stages stages))
+            DormandPrince54Stages stages = default;
+            if (!model.Kernel.DormandPrince54(state, derivative, step, ref stages))
             {
                 GeneralStages(model, state, derivative, step, out stages);
             }
@@ -137,7 +138,7 @@ namespace MagnusBall.Integration
             result.Start = state;
             result.StartDerivative = derivative;
             // From here on the step's own copies of the start (the arguments may be the result's own fields).
-            if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, out result.Stages))
+            if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, ref result.Stages))
             {
                 // A stage's rates may not be finite, so FlightModel.Derivative may take its scaled path: the step through it.
                 GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
@@ -271,10 +272,11 @@ namespace MagnusBall.Integration
         // The stages through FlightModel.Derivative, one call each (the arithmetic the kernel's step reproduces).
         internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
         {
-            Stages(model, y, k1, h, out _, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
+            Stages(model, y, k1, h, out StateDerivative k2, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
             FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
             StateDerivative k7 = model.Derivative(end);
             stages.End = end;
+            stages.K2 = k2;
             stages.K3 = k3;
             stages.K4 = k4;
             stages.K5 = k5;
@@ -441,13 +443,15 @@ namespace MagnusBall.Integration
     }
 
     /// <summary>
-    /// The stages of one Dormand-Prince 5(4) step that its error estimate and dense output read: the fifth-order end
-    /// state and k3..k7 (k2 has weight zero in both; k7 is the derivative at the end, the next step's k1). Plain fields,
-    /// written in place by the flight kernel (it is part of a <see cref="DormandPrince54Step"/>).
+    /// The stages of one Dormand-Prince 5(4) step: the fifth-order end state and k2..k7 (k7 is the derivative at the end,
+    /// the next step's k1). The error estimate and dense output read the end and k3..k7 (k2 has weight zero in both); k2 is
+    /// here because the later stages are formed from it. Plain fields, written in place by the flight kernel (it is part
+    /// of a <see cref="DormandPrince54Step"/>).
     /// </summary>
     internal struct DormandPrince54Stages
     {
         public FlightState End;
+        public StateDerivative K2;
         public StateDerivative K3;
         public StateDerivative K4;
         public StateDerivative K5;
