@@ -43,7 +43,8 @@ namespace MagnusBall.Benchmarks
                     double x = 0;
                     for (int i = 0; i < Repeats; i++)
                     {
-                        DormandPrince54.GeneralStages(model, launch, k1, 0.01, out DormandPrince54Stages stages);
+                        DormandPrince54Stages stages = default;
+                        DormandPrince54.GeneralStages(model, launch, k1, 0.01, ref stages);
                         x += stages.End.Position.X;
                     }
 

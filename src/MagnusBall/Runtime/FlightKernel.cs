@@ -364,19 +364,19 @@ namespace MagnusBall
                 switch (stage)
                 {
                     case 1:
-                        stages.K2 = new StateDerivative(vs, a, s);
+                        stages.K2.Set(vs, a, s);
                         break;
                     case 2:
-                        stages.K3 = new StateDerivative(vs, a, s);
+                        stages.K3.Set(vs, a, s);
                         break;
                     case 3:
-                        stages.K4 = new StateDerivative(vs, a, s);
+                        stages.K4.Set(vs, a, s);
                         break;
                     case 4:
-                        stages.K5 = new StateDerivative(vs, a, s);
+                        stages.K5.Set(vs, a, s);
                         break;
                     case 5:
-                        stages.K6 = new StateDerivative(vs, a, s);
+                        stages.K6.Set(vs, a, s);
                         break;
                     default:
                         stages.End = new FlightState(ps, vs, ws, state.Time + h);

@@ -34,6 +34,7 @@ namespace MagnusBall.Tests.Integration
             // The dense output's rows are formed as Vector3d expressions under RyuJIT and as scalars under Mono; both must be
             // the same bits (the cross-runtime check relies on it). Random steps on four models, with components of +-0,
             // subnormal, ordinary and up to 1e150, and steps from 1e-300 to 10 s; a one-operation reordering fails this.
+            // The interpolation at six fractions too: it is written component by component, and must be the Vector3d form.
             var random = new Random(20261202);
             FlightModel[] models =
             {
@@ -70,6 +71,11 @@ namespace MagnusBall.Tests.Integration
 
                 DormandPrince54.Instance.TryStep(model, state, k1, h, out DormandPrince54Step step);
                 Assert.That(step.DenseRowsAlikeInBothForms(), Is.True, $"{model}, {state}, h {h:R}");
+                foreach (double theta in new[] { 0.0, 0.125, 0.37, 0.5, 0.9, 1.0 })
+                {
+                    Assert.That(step.InterpolationAlikeInBothForms(theta), Is.True, $"theta {theta}: {model}, {state}, h {h:R}");
+                }
+
                 checkedSteps++;
             }
 

@@ -244,7 +244,7 @@ namespace MagnusBall.Tests.Integration
                     {
                         finiteSteps++;
                         AssertSame(stages.End, reference, state);
-                        StateDerivative[] written = { stages.K2, stages.K3, stages.K4, stages.K5, stages.K6, stages.K7 };
+                        StateDerivative[] written = { Rates(stages.K2), Rates(stages.K3), Rates(stages.K4), Rates(stages.K5), Rates(stages.K6), stages.K7 };
                         for (int i = 0; i < written.Length; i++)
                         {
                             AssertSame(written[i].Velocity, k[i].Velocity, state);
@@ -563,10 +563,12 @@ namespace MagnusBall.Tests.Integration
             return end;
         }
 
+        private static StateDerivative Rates(in StageRates k) => new StateDerivative(k.Velocity, k.Acceleration, k.AngularAcceleration);
+
         private static DormandPrince54Stages Garbage()
         {
             var nan = new Vector3d(double.NaN, double.NaN, double.NaN);
-            var rates = new StateDerivative(nan, nan, nan);
+            var rates = new StageRates { Velocity = nan, Acceleration = nan, AngularAcceleration = nan };
             return new DormandPrince54Stages
             {
                 End = new FlightState(nan, nan, nan, double.NaN),
@@ -575,7 +577,7 @@ namespace MagnusBall.Tests.Integration
                 K4 = rates,
                 K5 = rates,
                 K6 = rates,
-                K7 = rates,
+                K7 = new StateDerivative(nan, nan, nan),
             };
         }
 

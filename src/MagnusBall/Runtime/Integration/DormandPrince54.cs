@@ -95,7 +95,7 @@ namespace MagnusBall.Integration
             DormandPrince54Stages stages = default;
             if (!model.Kernel.DormandPrince54(state, derivative, step, ref stages))
             {
-                GeneralStages(model, state, derivative, step, out stages);
+                GeneralStages(model, state, derivative, step, ref stages);
             }
 
             // First same as last: the seventh stage is the derivative at the fifth-order end.
@@ -141,7 +141,7 @@ namespace MagnusBall.Integration
             if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, ref result.Stages))
             {
                 // A stage's rates may not be finite, so FlightModel.Derivative may take its scaled path: the step through it.
-                GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+                GeneralStages(model, result.Start, result.StartDerivative, step, ref result.Stages);
             }
 
             return Finish(step, ref result);
@@ -159,7 +159,7 @@ namespace MagnusBall.Integration
             result = default;
             result.Start = start;
             result.StartDerivative = k1;
-            GeneralStages(model, result.Start, result.StartDerivative, step, out result.Stages);
+            GeneralStages(model, result.Start, result.StartDerivative, step, ref result.Stages);
             return Finish(step, ref result);
         }
 
@@ -270,17 +270,17 @@ namespace MagnusBall.Integration
         }
 
         // The stages through FlightModel.Derivative, one call each (the arithmetic the kernel's step reproduces).
-        internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, out DormandPrince54Stages stages)
+        internal static void GeneralStages(FlightModel model, in FlightState y, in StateDerivative k1, double h, ref DormandPrince54Stages stages)
         {
             Stages(model, y, k1, h, out StateDerivative k2, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
             FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
             StateDerivative k7 = model.Derivative(end);
             stages.End = end;
-            stages.K2 = k2;
-            stages.K3 = k3;
-            stages.K4 = k4;
-            stages.K5 = k5;
-            stages.K6 = k6;
+            stages.K2.Set(k2);
+            stages.K3.Set(k3);
+            stages.K4.Set(k4);
+            stages.K5.Set(k5);
+            stages.K6.Set(k6);
             stages.K7 = k7;
         }
 
@@ -379,10 +379,10 @@ namespace MagnusBall.Integration
             in FlightState y0,
             in FlightState y1,
             in StateDerivative k1,
-            in StateDerivative k3,
-            in StateDerivative k4,
-            in StateDerivative k5,
-            in StateDerivative k6,
+            in StageRates k3,
+            in StageRates k4,
+            in StageRates k5,
+            in StageRates k6,
             in StateDerivative k7,
             double h)
         {
@@ -451,11 +451,35 @@ namespace MagnusBall.Integration
     internal struct DormandPrince54Stages
     {
         public FlightState End;
-        public StateDerivative K2;
-        public StateDerivative K3;
-        public StateDerivative K4;
-        public StateDerivative K5;
-        public StateDerivative K6;
+        public StageRates K2;
+        public StageRates K3;
+        public StageRates K4;
+        public StageRates K5;
+        public StageRates K6;
         public StateDerivative K7;
+    }
+
+    /// <summary>
+    /// Three vectors, one per part of the state (position, velocity, spin), named as a <see cref="StateDerivative"/>'s:
+    /// the rates of one inner stage of a Dormand-Prince step (k2..k6), or one row of its dense output. Plain fields,
+    /// written one by one: under Mono a <c>new StateDerivative(...)</c> stored into a field goes through a zero-filled
+    /// 72-byte temporary (a call to memset) and a copy, eight times per step where these were StateDerivatives.
+    /// </summary>
+    internal struct StageRates
+    {
+        public Vector3d Velocity;
+        public Vector3d Acceleration;
+        public Vector3d AngularAcceleration;
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Set(in Vector3d velocity, in Vector3d acceleration, in Vector3d angularAcceleration)
+        {
+            Velocity = velocity;
+            Acceleration = acceleration;
+            AngularAcceleration = angularAcceleration;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Set(in StateDerivative rates) => Set(rates.Velocity, rates.Acceleration, rates.AngularAcceleration);
     }
 }

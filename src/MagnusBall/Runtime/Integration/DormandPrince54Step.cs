@@ -19,9 +19,10 @@ namespace MagnusBall.Integration
     /// </remarks>
     internal struct DormandPrince54Step : IDenseOutput
     {
-        private StateDerivative _slopeDefect; // h k1 - dy
-        private StateDerivative _r4;
-        private StateDerivative _r5;
+        // The dense output's rows, each with a position, a velocity and a spin part.
+        private StageRates _slopeDefect; // h k1 - dy
+        private StageRates _r4;
+        private StageRates _r5;
 
         /// <summary>
         /// Sets the step's outcome and builds its dense output from <see cref="Start"/>, <see cref="StartDerivative"/> and
@@ -60,12 +61,12 @@ namespace MagnusBall.Integration
             Vector3d dp = end.Position - start.Position;
             Vector3d dv = end.Velocity - start.Velocity;
             Vector3d dw = end.AngularVelocity - start.AngularVelocity;
-            _slopeDefect = new StateDerivative(k1.Velocity * step - dp, k1.Acceleration * step - dv, k1.AngularAcceleration * step - dw);
-            _r4 = new StateDerivative(
+            _slopeDefect.Set(k1.Velocity * step - dp, k1.Acceleration * step - dv, k1.AngularAcceleration * step - dw);
+            _r4.Set(
                 dp - k7.Velocity * step - _slopeDefect.Velocity,
                 dv - k7.Acceleration * step - _slopeDefect.Acceleration,
                 dw - k7.AngularAcceleration * step - _slopeDefect.AngularAcceleration);
-            _r5 = new StateDerivative(
+            _r5.Set(
                 Dense(k1.Velocity, Stages.K3.Velocity, Stages.K4.Velocity, Stages.K5.Velocity, Stages.K6.Velocity, k7.Velocity, step),
                 Dense(k1.Acceleration, Stages.K3.Acceleration, Stages.K4.Acceleration, Stages.K5.Acceleration, Stages.K6.Acceleration, k7.Acceleration, step),
                 Dense(k1.AngularAcceleration, Stages.K3.AngularAcceleration, Stages.K4.AngularAcceleration, Stages.K5.AngularAcceleration,
@@ -78,15 +79,12 @@ namespace MagnusBall.Integration
             ref readonly StateDerivative k1 = ref StartDerivative;
             ref readonly DormandPrince54Stages k = ref Stages;
             Rows(Start.Position, k.End.Position, k1.Velocity, k.K3.Velocity, k.K4.Velocity, k.K5.Velocity, k.K6.Velocity, k.K7.Velocity, step,
-                out Vector3d defectP, out Vector3d r4P, out Vector3d r5P);
+                out _slopeDefect.Velocity, out _r4.Velocity, out _r5.Velocity);
             Rows(Start.Velocity, k.End.Velocity, k1.Acceleration, k.K3.Acceleration, k.K4.Acceleration, k.K5.Acceleration, k.K6.Acceleration,
-                k.K7.Acceleration, step, out Vector3d defectV, out Vector3d r4V, out Vector3d r5V);
+                k.K7.Acceleration, step, out _slopeDefect.Acceleration, out _r4.Acceleration, out _r5.Acceleration);
             Rows(Start.AngularVelocity, k.End.AngularVelocity, k1.AngularAcceleration, k.K3.AngularAcceleration, k.K4.AngularAcceleration,
-                k.K5.AngularAcceleration, k.K6.AngularAcceleration, k.K7.AngularAcceleration, step, out Vector3d defectW, out Vector3d r4W,
-                out Vector3d r5W);
-            _slopeDefect = new StateDerivative(defectP, defectV, defectW);
-            _r4 = new StateDerivative(r4P, r4V, r4W);
-            _r5 = new StateDerivative(r5P, r5V, r5W);
+                k.K5.AngularAcceleration, k.K6.AngularAcceleration, k.K7.AngularAcceleration, step, out _slopeDefect.AngularAcceleration,
+                out _r4.AngularAcceleration, out _r5.AngularAcceleration);
         }
 
         // DenseRowsAsVectors' three rows for one part of the state (y0 to y1, rates k1..k7), operation for operation.
@@ -117,7 +115,25 @@ namespace MagnusBall.Integration
             return Same(vectors._slopeDefect, scalars._slopeDefect) && Same(vectors._r4, scalars._r4) && Same(vectors._r5, scalars._r5);
         }
 
-        private static bool Same(in StateDerivative a, in StateDerivative b) =>
+        /// <summary>
+        /// Test hook: <see cref="InterpolateFraction"/> at <paramref name="theta"/> in [0, 1] is the Vector3d expression
+        /// y0 + ((y1 - y0) + (D + (r4 + r5 (1 - theta)) theta) (1 - theta)) theta that Blend writes out component by
+        /// component, the same bits.
+        /// </summary>
+        internal readonly bool InterpolationAlikeInBothForms(double theta)
+        {
+            double rest = 1 - theta;
+            FlightState scalar = InterpolateFraction(theta);
+            return Same(scalar.Position, VectorForm(Start.Position, Stages.End.Position, _slopeDefect.Velocity, _r4.Velocity, _r5.Velocity)) &&
+                Same(scalar.Velocity, VectorForm(Start.Velocity, Stages.End.Velocity, _slopeDefect.Acceleration, _r4.Acceleration, _r5.Acceleration)) &&
+                Same(scalar.AngularVelocity, VectorForm(
+                    Start.AngularVelocity, Stages.End.AngularVelocity, _slopeDefect.AngularAcceleration, _r4.AngularAcceleration, _r5.AngularAcceleration));
+
+            Vector3d VectorForm(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5) =>
+                y0 + ((y1 - y0) + (defect + (r4 + r5 * rest) * theta) * rest) * theta;
+        }
+
+        private static bool Same(in StageRates a, in StageRates b) =>
             Same(a.Velocity, b.Velocity) && Same(a.Acceleration, b.Acceleration) && Same(a.AngularAcceleration, b.AngularAcceleration);
 
         private static bool Same(in Vector3d a, in Vector3d b) =>
@@ -400,7 +416,7 @@ namespace MagnusBall.Integration
             double At(in DormandPrince54Step step, double theta);
 
             // The linear part applied to a dense-output coefficient (its position rows for a plane, velocity rows for up).
-            double Linear(in StateDerivative coefficient);
+            double Linear(in StageRates coefficient);
 
             // The sum of the magnitudes a sample is computed from (for the rounding margin).
             double Magnitude(in DormandPrince54Step step);
@@ -423,7 +439,7 @@ namespace MagnusBall.Integration
 
             public double At(in DormandPrince54Step step, double theta) => _sign * _plane.SignedDistance(step.PositionAt(theta));
 
-            public double Linear(in StateDerivative coefficient) => _sign * Vector3d.Dot(coefficient.Velocity, _plane.Normal);
+            public double Linear(in StageRates coefficient) => _sign * Vector3d.Dot(coefficient.Velocity, _plane.Normal);
 
             public double Magnitude(in DormandPrince54Step step) =>
                 Weighted(step.Start.Position) + Weighted(step.Stages.End.Position) + Weighted(step._slopeDefect.Velocity) + Weighted(step._r4.Velocity) +
@@ -444,7 +460,7 @@ namespace MagnusBall.Integration
 
             public double At(in DormandPrince54Step step, double theta) => Vector3d.Dot(step.VelocityAt(theta), _up);
 
-            public double Linear(in StateDerivative coefficient) => Vector3d.Dot(coefficient.Acceleration, _up);
+            public double Linear(in StageRates coefficient) => Vector3d.Dot(coefficient.Acceleration, _up);
 
             public double Magnitude(in DormandPrince54Step step) =>
                 AbsoluteDot(step.Start.Velocity, _up) + AbsoluteDot(step.Stages.End.Velocity, _up) + AbsoluteDot(step._slopeDefect.Acceleration, _up) +
@@ -458,8 +474,13 @@ namespace MagnusBall.Integration
             return ax * Math.Abs(n.X) + ay * Math.Abs(n.Y) + az * Math.Abs(n.Z);
         }
 
+        // y0 + ((y1 - y0) + (defect + (r4 + r5 rest) theta) rest) theta, component by component: the same operations in the
+        // same order as the Vector3d expression, without its seven vector temporaries (which Mono zeroes and stores).
         private static Vector3d Blend(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5, double theta, double rest) =>
-            y0 + ((y1 - y0) + (defect + (r4 + r5 * rest) * theta) * rest) * theta;
+            new Vector3d(
+                y0.X + ((y1.X - y0.X) + (defect.X + (r4.X + r5.X * rest) * theta) * rest) * theta,
+                y0.Y + ((y1.Y - y0.Y) + (defect.Y + (r4.Y + r5.Y * rest) * theta) * rest) * theta,
+                y0.Z + ((y1.Z - y0.Z) + (defect.Z + (r4.Z + r5.Z * rest) * theta) * rest) * theta);
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector3d Dense(in Vector3d k1, in Vector3d k3, in Vector3d k4, in Vector3d k5, in Vector3d k6, in Vector3d k7, double h) =>
