@@ -13,7 +13,7 @@ namespace MagnusBall.Integration
     /// The dense output is DOPRI5's (Shampine 1986; Hairer, Norsett &amp; Wanner 1993, II.6): with
     /// theta = (t - t0)/h, y(theta) = y0 + theta (dy + (1 - theta) (h k1 - dy + theta (r4 + (1 - theta) r5))),
     /// where dy = y1 - y0, r4 = dy - h k7 - (h k1 - dy) and r5 = h (d1 k1 + d3 k3 + d4 k4 + d5 k5 + d6 k6 + d7 k7).
-    /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.8 kB), filled in place by
+    /// It matches y0 and y1 and the slopes k1 and k7 at both ends. A plain value (about 0.9 kB), filled in place by
     /// <see cref="DormandPrince54.TryStepInPlace"/>
     /// (the stages straight from the model's kernel, no copies): pass it by reference. Every member is readonly.
     /// </remarks>
@@ -147,7 +147,7 @@ namespace MagnusBall.Integration
         /// <summary>The state the step started from.</summary>
         public FlightState Start;
 
-        /// <summary>The fifth-order end state and k3..k7 (k7 = f(End)), written by the model's kernel.</summary>
+        /// <summary>The fifth-order end state and k2..k7 (k7 = f(End)), written by the model's kernel.</summary>
         public DormandPrince54Stages Stages;
 
         /// <summary>The fifth-order end state (meaningful when <see cref="Accepted"/>).</summary>
@@ -475,7 +475,7 @@ namespace MagnusBall.Integration
         }
 
         // y0 + ((y1 - y0) + (defect + (r4 + r5 rest) theta) rest) theta, component by component: the same operations in the
-        // same order as the Vector3d expression, without its seven vector temporaries (which Mono zeroes and stores).
+        // same order as the Vector3d expression, without its eight vector temporaries (which Mono zeroes and stores).
         private static Vector3d Blend(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5, double theta, double rest) =>
             new Vector3d(
                 y0.X + ((y1.X - y0.X) + (defect.X + (r4.X + r5.X * rest) * theta) * rest) * theta,
