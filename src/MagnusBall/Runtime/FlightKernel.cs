@@ -19,12 +19,23 @@ namespace MagnusBall
         private protected static readonly AeroConditions NoConditions = default;
 
         /// <summary>
-        /// True under Mono (and Unity's IL2CPP, which carries Mono's class library): take RK4's straight-line form of the
-        /// thesis model's common case (see Rk4Straight). RyuJIT keeps the chain in registers across the branches anyway, and
-        /// measured the straight-line form 3-5 % slower; it folds this constant away. Both forms give the same bits. The
-        /// flight core's event quick test picks its form by it too (HermiteSegment.CannotFall).
+        /// True under Mono and Unity's IL2CPP: take RK4's straight-line form of the thesis model's common case (see
+        /// Rk4Straight). RyuJIT keeps the chain in registers across the branches anyway, and measured the straight-line form
+        /// 3-5 % slower; it folds this constant away. Both forms give the same bits. The flight core's event quick test and
+        /// the dense output pick their forms by it too (HermiteSegment.CannotFall, DormandPrince54Step). Compiled by Unity
+        /// from the package's sources, it is Unity's own scripting-backend symbols (ENABLE_MONO, ENABLE_IL2CPP), fixed at
+        /// compile time; the DLL built here asks the runtime for Mono's marker type instead, a reflection lookup that
+        /// Unity's managed code stripping can break (Mono.Runtime is internal to the class library), which is why the
+        /// package does not rely on it. Only speed depends on this, never the bits.
         /// </summary>
+#if ENABLE_MONO || ENABLE_IL2CPP
+        internal static readonly bool PreferStraightLine = CompiledForUnityBackend;
+
+        /// <summary>Present only where Unity's backend symbols chose the forms above (checked by MagnusBall.Core.UnityCompile).</summary>
+        internal const bool CompiledForUnityBackend = true;
+#else
         internal static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
+#endif
 
         /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the same as the general formula).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
