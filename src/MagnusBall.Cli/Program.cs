@@ -28,9 +28,9 @@ namespace MagnusBall.Cli
             "  magnusball --help | --version\n" +
             "FILE is a JSON file (\"-\" reads standard input); see docs/cli.md for the formats.\n" +
             "  --csv          print the trajectory as CSV instead of the JSON summary\n" +
-            "  --samples N    N >= 2 states evenly spaced in time (adds \"samples\" to the JSON; CSV rows)\n" +
+            "  --samples N    N from 2 to 1000000 states evenly spaced in time (adds \"samples\" to the JSON; CSV rows)\n" +
             "  --svg OUT.svg  also draw side and top views of every scenario to OUT.svg\n" +
-            "  --svg-view V   side, top or both (default both)\n";
+            "  --svg-view V   side, top or both (default both); only with --svg\n";
 
         /// <summary>The process entry point.</summary>
         /// <param name="args">The command-line arguments.</param>
@@ -105,6 +105,7 @@ namespace MagnusBall.Cli
             int? samples = null;
             string? svg = null;
             var views = TrajectorySvg.SvgViews.Both;
+            bool viewGiven = false;
             for (int i = 1; i < args.Length; i++)
             {
                 string a = args[i];
@@ -126,6 +127,7 @@ namespace MagnusBall.Cli
                         svg = Value(args, ref i, a);
                         break;
                     case "--svg-view":
+                        viewGiven = true;
                         string v = Value(args, ref i, a);
                         views = v switch
                         {
@@ -156,6 +158,11 @@ namespace MagnusBall.Cli
                 throw new UsageError("simulate needs a scenario FILE");
             }
 
+            if (viewGiven && svg is null)
+            {
+                throw new UsageError("--svg-view needs --svg OUT.svg (it chooses the views of that picture)");
+            }
+
             IReadOnlyList<Scenario> scenarios = ScenarioReader.Read(ReadInput(file, stdin));
             // Keep only what is printed: every step for plain --csv, else the steps that hold a sample.
             var counts = new List<int>();
@@ -179,7 +186,18 @@ namespace MagnusBall.Cli
 
             if (svg != null)
             {
-                File.WriteAllText(svg, TrajectorySvg.Draw(results, views));
+                try
+                {
+                    File.WriteAllText(svg, TrajectorySvg.Draw(results, views));
+                }
+                catch (IOException e)
+                {
+                    throw new IOException($"cannot write the --svg file '{svg}': {e.Message}", e);
+                }
+                catch (UnauthorizedAccessException e)
+                {
+                    throw new UnauthorizedAccessException($"cannot write the --svg file '{svg}': {e.Message}", e);
+                }
             }
 
             stdout.Write(csv ? ResultWriter.Csv(results, samples) : ResultWriter.Json(results, samples));

@@ -351,6 +351,25 @@ namespace MagnusBall.Cli.Tests
         }
 
         [Test]
+        public void SvgView_WithoutSvg_IsAUsageError()
+        {
+            CliRun run = CliRun.Simulate(CliRun.DriveJson, "--svg-view", "top");
+            Assert.That(run.ExitCode, Is.EqualTo(2));
+            Assert.That(run.Stderr, Does.Contain("--svg-view needs --svg"));
+            Assert.That(run.Stdout, Is.Empty);
+        }
+
+        [Test]
+        public void Svg_ThatCannotBeWritten_SaysItIsTheSvgFile()
+        {
+            string path = Path.Combine(Path.GetTempPath(), $"magnusball-missing-{Guid.NewGuid():N}", "x.svg");
+            CliRun run = CliRun.Simulate(CliRun.DriveJson, "--svg", path);
+            Assert.That(run.ExitCode, Is.EqualTo(1));
+            Assert.That(run.Stderr, Does.Contain("cannot write the --svg file '" + path + "'"));
+            Assert.That(run.Stdout, Is.Empty, "nothing printed when the picture asked for is not written");
+        }
+
+        [Test]
         public void Svg_DrawsBothViewsOfEveryFlight_AndThePlanes()
         {
             JsonObject root = CliRun.Drive();

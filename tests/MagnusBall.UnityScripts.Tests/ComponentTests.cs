@@ -116,6 +116,18 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void PresetTooltip_NamesEveryPreset()
+        {
+            // The inspector's tooltip is the list a designer picks from: every name SportPresets.FromName accepts.
+            var field = typeof(FlightSettings).GetField(nameof(FlightSettings.preset))!;
+            var tooltip = (TooltipAttribute)Attribute.GetCustomAttribute(field, typeof(TooltipAttribute))!;
+            foreach (string name in SportPresets.Names)
+            {
+                Assert.That(tooltip.tooltip, Does.Contain(" " + name + ",").Or.Contain(" " + name + "."), name);
+            }
+        }
+
+        [Test]
         public void ASubnormalSpin_LeavesTheDrawnRotationFinite()
         {
             // rotateWithSpin turned the ball about w / |w|, which divides by multiplying with 1/|w|: +inf for |w| below

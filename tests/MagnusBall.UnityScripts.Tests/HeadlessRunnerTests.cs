@@ -95,7 +95,7 @@ namespace MagnusBall.UnityScripts.Tests
         [TestCase("--speed", "fast", "--speed must be a finite number")]
         [TestCase("--elevation", "95", "--elevation must be in [-89.9, 89.9]")]
         [TestCase("--shot", "smash", "--shot must be one of")]
-        [TestCase("--integrator", "verlet", "integrator must be one of")]
+        [TestCase("--integrator", "verlet", "--integrator must be one of")]
         [TestCase("--frobnicate", null, "unknown option '--frobnicate'")]
         [TestCase("--step", null, "--step needs a value")]
         [TestCase("--aim", "9.5", "--aim must be two finite numbers X,Z")]
@@ -110,7 +110,24 @@ namespace MagnusBall.UnityScripts.Tests
 
             Assert.That(code, Is.EqualTo(2));
             Assert.That(error, Does.Contain(message));
+            Assert.That(error, Does.Not.Contain("(Parameter"), "the message names the option, not a library parameter");
             Assert.That(output, Is.Empty);
+        }
+
+        [TestCase("--speed", "0.1..120", "0.09", "[0.1, 120]")]
+        [TestCase("--height", "0.05..10", "10.5", "[0.05, 10]")]
+        [TestCase("--step", "1e-6..0.1", "0.2", "[1E-06, 0.1]")]
+        [TestCase("--density", "0..5", "6", "[0, 5]")]
+        [TestCase("--topspin", "-10000..10000", "12000", "[-10000, 10000]")]
+        [TestCase("--z", "-10..10", "-11", "[-10, 10]")]
+        public void Help_StatesTheRangeTheParserEnforces(string option, string helpRange, string outside, string errorRange)
+        {
+            (_, string help, _) = Run("--help");
+            string line = help.Split('\n').Single(l => l.TrimStart().StartsWith(option + " ", StringComparison.Ordinal));
+            Assert.That(line, Does.Contain("(" + helpRange), line);
+            (int code, _, string error) = Run(option, outside, "--no-svg");
+            Assert.That(code, Is.EqualTo(2));
+            Assert.That(error, Does.Contain(option + " must be in " + errorRange));
         }
 
         [Test]

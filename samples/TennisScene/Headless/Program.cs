@@ -23,21 +23,21 @@ from the topspin forehand's values.
 
 shot options (court frame: x from the net toward the far baseline, y up, z to the hitter's left):
   --shot NAME         one of the standard shots by name (e.g. ""kick serve"")
-  --speed M/S         launch speed (> 0)
+  --speed M/S         launch speed (0.1..120)
   --elevation DEG     launch angle above horizontal (-89.9..89.9)
   --azimuth DEG       launch direction, + toward the hitter's left (-89.9..89.9)
-  --topspin RPM       topspin, negative for backspin
-  --sidespin RPM      sidespin, + curls toward the hitter's left
-  --height M          hitting height of the ball's centre (> 0); a serve is 2.87
-  --x M               hitting position along the court (< 0: the near side; the near baseline is -11.885)
-  --z M               hitting position across the court
+  --topspin RPM       topspin, negative for backspin (-10000..10000)
+  --sidespin RPM      sidespin, + curls toward the hitter's left (-10000..10000)
+  --height M          hitting height of the ball's centre (0.05..10); a serve is 2.87
+  --x M               hitting position along the court (-30..-0.1: the near side; the near baseline is -11.885)
+  --z M               hitting position across the court (-10..10)
   --target AREA       court | deuce | ad  (what counts as in)
   --aim X,Z           solve elevation and azimuth (AimSolver) so the ball first touches the court at (X, Z)
   --by-swing          fly the six standard shots as made by racket swings (StandardSwings) instead of by launch
 scene options:
   --integrator NAME   " + string.Join(" | ", MagnusBall.Integration.Integrators.Names) + @" (default rk4)
-  --step S            fixed step (default 1/240)
-  --density RHO       air density, kg/m^3 (default 1.21)
+  --step S            fixed step, s (1e-6..0.1; default 1/240)
+  --density RHO       air density, kg/m^3 (0..5; default 1.21)
   --thesis-coefficients  constant C_D 0.55 and C_M 0.175 (Agrawal 2023) instead of Stepanek's
   --svg PATH          where to write the picture (default out/tennis-scene.svg)
   --no-svg            do not write the picture
@@ -204,12 +204,15 @@ exit codes: 0 ok, 2 bad options";
             string integrator = values.TryGetValue("--integrator", out string? name) ? name : "rk4";
             try
             {
-                options.Settings = new SceneSettings(airDensity: density, useStepanekCoefficients: !thesis, integrator: integrator, fixedStep: step);
+                MagnusBall.Integration.Integrators.FromName(integrator);
             }
-            catch (ArgumentException e)
+            catch (ArgumentException)
             {
-                throw new ArgumentException("--integrator: " + e.Message);
+                // The library's message names its own parameter ("name"); this one names the option.
+                throw new ArgumentException($"--integrator must be one of: {string.Join(", ", MagnusBall.Integration.Integrators.Names)}; got \"{integrator}\".");
             }
+
+            options.Settings = new SceneSettings(airDensity: density, useStepanekCoefficients: !thesis, integrator: integrator, fixedStep: step);
 
             TennisShot basis = StandardShots.TopspinForehand;
             if (values.TryGetValue("--shot", out string? shotName))

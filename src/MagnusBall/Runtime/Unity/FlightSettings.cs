@@ -54,7 +54,7 @@ namespace MagnusBall.Components
     public sealed class FlightSettings
     {
         /// <summary>The preset's name (see <see cref="SportPresets.Names"/>).</summary>
-        [UnityEngine.Tooltip("Preset: tennis, tennis-free-flight, soccer, baseball, golf, golf-smits-smith, table-tennis, basketball.")]
+        [UnityEngine.Tooltip("Preset: tennis, tennis-free-flight, soccer, baseball, golf, golf-bearman-harvey, golf-linear-2023, golf-smits-smith, table-tennis, basketball.")]
         public string preset = "tennis";
 
         /// <summary>Replace the preset's ball by <see cref="mass"/>, <see cref="radius"/> and <see cref="inertiaFactor"/>.</summary>
