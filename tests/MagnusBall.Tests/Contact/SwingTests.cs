@@ -1,11 +1,7 @@
 using System;
-using System.Collections.Generic;
-using System.Linq;
-using System.Text.Json;
 using MagnusBall.Contact;
 using MagnusBall.Contact.Swings;
 using MagnusBall.Queries;
-using MagnusBall.Tests.Validation;
 using NUnit.Framework;
 
 namespace MagnusBall.Tests.Contact
@@ -278,44 +274,6 @@ namespace MagnusBall.Tests.Contact
 
             TestContext.Out.WriteLine($"most spin {bestSpin:F1} rad/s at {bestOffset} mm");
             Assert.That(bestOffset, Is.EqualTo(100).Within(15));
-        }
-
-        [Test]
-        public void Kick_OverTheMeasuredBallFrictions_SpinChangesByAtMost13RadPerSecond_UpTo85mm()
-        {
-            // Asai et al.'s bound (friction 0 -> 1 adds at most 13 rad/s) does not hold for the rigid contact from mu = 0
-            // (the test below), but over the frictions measured for real balls (nine balls against leather, 0.37-0.62;
-            // data/published/soccer-ball-friction-2020.json) the ball grips at every offset up to 85 mm, so friction adds
-            // nothing there; past it the impact slides and friction matters (printed: 12.5-18.6 rad/s at 90 mm).
-            var ball = new Ball(0.43, 0.11, Ball.ThinShellInertiaFactor);
-            JsonElement data = PublishedCases.Load("soccer-ball-friction-2020.json");
-            var frictions = new List<double>();
-            foreach (JsonElement b in data.GetProperty("balls").EnumerateArray())
-            {
-                frictions.Add(b.GetProperty("friction").GetDouble());
-            }
-
-            Assert.That(frictions.Count, Is.EqualTo(9));
-            Assert.That(frictions.Min(), Is.EqualTo(data.Number("published_range", "lowest")));
-            foreach (double speed in new[] { 20.0, 25.0, 30.0 })
-            {
-                for (int mm = 0; mm <= 100; mm += 5)
-                {
-                    double least = double.PositiveInfinity, most = 0;
-                    foreach (double mu in frictions)
-                    {
-                        double spin = new KickSwing(speed, mm * 1e-3, mu).Hit(ball, ZUp, Vector3d.Zero).SpinRate;
-                        least = Math.Min(least, spin);
-                        most = Math.Max(most, spin);
-                    }
-
-                    TestContext.Out.WriteLine($"{speed} m/s, {mm} mm: spin {least:F1}-{most:F1} rad/s over the measured frictions");
-                    if (mm <= 85)
-                    {
-                        Assert.That(most - least, Is.LessThanOrEqualTo(13.0), $"{speed} m/s, {mm} mm");
-                    }
-                }
-            }
         }
 
         [Test]
