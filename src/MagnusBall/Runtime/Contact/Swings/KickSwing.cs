@@ -22,8 +22,8 @@ namespace MagnusBall.Contact.Swings
     /// centred kick off at 1.16 times the foot speed). Unlike Asai's deforming ball, a rigid contact makes no spin
     /// without friction: here all the spin comes from friction (docs/impacts.md compares the two). Over the frictions
     /// measured for real balls against leather (0.37-0.63 for nine balls; "The Coefficient of Friction of Soccer Balls",
-    /// Proceedings 2020, 49(1), 92), which the default 0.5 lies inside, the ball grips at offsets up to 85 mm and the
-    /// friction changes the spin by at most 1.4 rad/s there (20-30 m/s); beyond, the impact slides and it matters.</para>
+    /// Proceedings 2020, 49(1), 92), which the default 0.5 lies inside, the ball grips at offsets up to 80 mm and the
+    /// spin there does not depend on the friction (20-30 m/s); from 85 mm the impact begins to slide and it matters.</para>
     /// </remarks>
     public readonly struct KickSwing
     {
