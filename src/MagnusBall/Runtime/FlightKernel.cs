@@ -48,6 +48,14 @@ namespace MagnusBall
         internal abstract FlightState RungeKutta4(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
 
         /// <summary>
+        /// <see cref="RungeKutta4"/>, the same arithmetic, with the step's end written straight into
+        /// <paramref name="next"/> and <paramref name="end"/> (the flight core passes its own fields: no struct is returned
+        /// through a temporary and copied, so the fields are read back from the stores that wrote them). Neither may be a
+        /// part of <paramref name="state"/> or <paramref name="k1"/>. No argument checks.
+        /// </summary>
+        internal abstract void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end);
+
+        /// <summary>
         /// <paramref name="count"/> RK4 steps of <paramref name="step"/> seconds; <paramref name="derivative"/> is the
         /// start derivative on entry and the end derivative on return. 4 x count evaluations. No checks, no events:
         /// a step that overflows carries the non-finite state on (the caller checks the end).
@@ -297,10 +305,12 @@ namespace MagnusBall
 
         internal override FlightState RungeKutta4(in FlightState state, in StateDerivative k1, double step, out StateDerivative end)
         {
-            FlightState next = Rk4(state, k1, step, out Vector3d acceleration, out Vector3d spinAcceleration);
-            end = new StateDerivative(next.Velocity, acceleration, spinAcceleration);
+            RungeKutta4Into(state, k1, step, out FlightState next, out end);
             return next;
         }
+
+        internal override void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end) =>
+            Rk4(state, k1, step, out next, out end);
 
         internal override FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count)
         {
@@ -308,8 +318,9 @@ namespace MagnusBall
             StateDerivative k = derivative;
             for (int i = 0; i < count; i++)
             {
-                current = Rk4(current, k, step, out Vector3d acceleration, out Vector3d spinAcceleration);
-                k = new StateDerivative(current.Velocity, acceleration, spinAcceleration);
+                Rk4(current, k, step, out FlightState next, out StateDerivative end); // into locals: the outputs may not alias the inputs
+                current = next;
+                k = end;
             }
 
             derivative = k;
@@ -521,23 +532,24 @@ namespace MagnusBall
         // - Under Mono, the thesis model's common case first takes the straight-line form (Rk4Straight), here rather than
         //   inside Rk4Unrolled, whose large frame Mono zeroes on every call.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private FlightState Rk4(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        private void Rk4(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
         {
             if ((_drag.Reads | _lift.Reads | _decay.Reads) != AeroInputs.None)
             {
-                return Rk4Loop(state, k1, step, out endAcceleration, out endSpinAcceleration);
+                Rk4Loop(state, k1, step, out next, out end);
+                return;
             }
 
-            if (PreferStraightLine && StraightLineCase && Counter is null && Rk4Straight(state, k1, step, out FlightState end, out endAcceleration))
+            if (PreferStraightLine && StraightLineCase && Counter is null && Rk4Straight(state, k1, step, out next, out Vector3d endAcceleration))
             {
-                endSpinAcceleration = default;
-                return end;
+                end = new StateDerivative(next.Velocity, endAcceleration, default);
+                return;
             }
 
-            return Rk4Unrolled(state, k1, step, out endAcceleration, out endSpinAcceleration);
+            Rk4Unrolled(state, k1, step, out next, out end);
         }
 
-        private FlightState Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        private void Rk4Unrolled(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
         {
             double half = 0.5 * step;
             double sixth = step / 6.0;
@@ -576,8 +588,11 @@ namespace MagnusBall
             double vey = vy + (k1a.Y + (a2.Y + a3.Y) * 2.0 + a4.Y) * sixth;
             double vez = vz + (k1a.Z + (a2.Z + a3.Z) * 2.0 + a4.Z) * sixth;
             Vector3d we = spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
-            Stage(pe, vex, vey, vez, we, ref spinRate, ref inverseSpinRate, out endAcceleration, out endSpinAcceleration);
-            return new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
+            double time = state.Time + step;
+            Stage(pe, vex, vey, vez, we, ref spinRate, ref inverseSpinRate, out Vector3d endAcceleration, out Vector3d endSpinAcceleration);
+            var ve = new Vector3d(vex, vey, vez);
+            next = new FlightState(pe, ve, we, time);
+            end = new StateDerivative(ve, endAcceleration, endSpinAcceleration);
         }
 
         // The laws and air Rk4Straight is written for (with laws that read nothing): drag and lift, no spin decay, still air.
@@ -683,7 +698,7 @@ namespace MagnusBall
         }
 
         // k2 + k3 is summed as soon as k3 is known (the same sum RungeKutta4 forms, fewer numbers live across the loop).
-        private FlightState Rk4Loop(in FlightState state, in StateDerivative k1, double step, out Vector3d endAcceleration, out Vector3d endSpinAcceleration)
+        private void Rk4Loop(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
         {
             double half = 0.5 * step;
             double sixth = step / 6.0;
@@ -699,6 +714,7 @@ namespace MagnusBall
             Vector3d s23 = default;
             Vector3d ps = p, ws = w;
             double vsx, vsy, vsz;
+            double time = state.Time + step;
             SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
             for (int stage = 0; ; stage++)
             {
@@ -741,9 +757,10 @@ namespace MagnusBall
                 Rates(ps, vsx, vsy, vsz, ws, spinRate, inverseSpinRate, out Vector3d a, out Vector3d s);
                 if (stage == 3)
                 {
-                    endAcceleration = a;
-                    endSpinAcceleration = s;
-                    return new FlightState(ps, new Vector3d(vsx, vsy, vsz), ws, state.Time + step);
+                    var ve = new Vector3d(vsx, vsy, vsz);
+                    next = new FlightState(ps, ve, ws, time);
+                    end = new StateDerivative(ve, a, s);
+                    return;
                 }
 
                 if (stage == 0)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using MagnusBall.Aerodynamics;
+using MagnusBall.Flight;
 using MagnusBall.Integration;
 using NUnit.Framework;
 
@@ -176,6 +177,59 @@ namespace MagnusBall.Tests.Integration
                     Assert.That(heunEvaluations, Is.EqualTo(2));
                 }
             }
+        }
+
+        // The flight core takes plain RK4 and the stable RK4's one-substep case straight from the kernel, its end written into
+        // the core's own fields (FlightStepper.TryStep): the same bits, end rates and evaluation counts as the integrators'
+        // public Step, including stable steps that need substeps (0.5 and 3 s at the fast states) and steps that diverge.
+        [TestCaseSource(nameof(Models))]
+        public void FlightCoreStep_EqualsTheIntegratorsStep_BitForBit(FlightModel model, string laws)
+        {
+            int substepped = 0, single = 0;
+            foreach (IIntegrator integrator in new IIntegrator[] { RungeKutta4.Instance, StableIntegrator.RungeKutta4 })
+            {
+                var stepper = new FlightStepper(model, integrator);
+                foreach (FlightState state in States())
+                {
+                    foreach (double step in new[] { 1.0 / 240, 0.03, 0.5, 3.0 })
+                    {
+                        StateDerivative k1 = model.Derivative(state);
+                        FlightState expected = integrator.Step(model, state, k1, step, out StateDerivative expectedEnd, out int evaluations);
+                        if (integrator is StableIntegrator stable)
+                        {
+                            if (stable.SubstepCount(model, state, step) > 1)
+                            {
+                                substepped++;
+                            }
+                            else
+                            {
+                                single++;
+                            }
+                        }
+
+                        stepper.Reset(state);
+                        long before = stepper.DerivativeEvaluations; // Reset's evaluation of the start derivative
+                        StepOutcome outcome = stepper.TryStep(step);
+                        bool finite = expected.IsFinite && expectedEnd.Acceleration.IsFinite && expectedEnd.AngularAcceleration.IsFinite;
+                        Assert.That(outcome, Is.EqualTo(finite ? StepOutcome.Taken : StepOutcome.Diverged), $"{integrator.Name} from {state}, h {step}");
+                        if (finite)
+                        {
+                            AssertSame(stepper.State, expected, state);
+                            AssertSame(stepper.Derivative.Velocity, expectedEnd.Velocity, state);
+                            AssertSame(stepper.Derivative.Acceleration, expectedEnd.Acceleration, state);
+                            AssertSame(stepper.Derivative.AngularAcceleration, expectedEnd.AngularAcceleration, state);
+                            Assert.That(stepper.DerivativeEvaluations - before, Is.EqualTo(evaluations));
+                        }
+                    }
+                }
+            }
+
+            if (model.Air.Density > 0 && laws != "NoDrag, NoLift, NoSpinDecay")
+            {
+                Assert.That(substepped, Is.GreaterThan(0), "no stable step needed substeps: the test would not reach that branch");
+            }
+
+            Assert.That(single, Is.GreaterThan(0));
         }
 
         [TestCaseSource(nameof(Models))]

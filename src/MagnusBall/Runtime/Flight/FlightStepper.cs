@@ -317,9 +317,13 @@ namespace MagnusBall.Flight
                 // kernel (no argument check: the state is finite, as every state this class takes, and the step was checked
                 // above; no interface call), every other method through IIntegrator.Step.
                 int evaluations = RungeKutta4.Evaluations;
-                if (Integrator is RungeKutta4)
+                if (Integrator is RungeKutta4 ||
+                    (Integrator is StableIntegrator stable && stable.Inner is RungeKutta4 &&
+                     Model.StiffnessSurelyBelow(_now.State, step, 0.5 * stable.StiffnessLimit)))
                 {
-                    _firstPiece = RungeKutta4.StepChecked(Model, _now.State, _now.Derivative, step, out _firstPieceDerivative);
+                    // Plain RK4, or the stable RK4's common case: StableStepping.Step's one substep, the whole step, found
+                    // by the same bound (its result is that RK4 step with the time set to the step's end, as here below).
+                    RungeKutta4.StepCheckedInto(Model, _now.State, _now.Derivative, step, out _firstPiece, out _firstPieceDerivative);
                 }
                 else
                 {

@@ -84,5 +84,14 @@ namespace MagnusBall.Integration
         internal static FlightState StepChecked(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step, out StateDerivative endDerivative) =>
             model.Kernel.RungeKutta4(state, derivative, step, out endDerivative);
+
+        /// <summary>
+        /// <see cref="StepChecked"/> with the end written straight into <paramref name="next"/> and
+        /// <paramref name="endDerivative"/> (the flight core's fields; neither may be a part of the inputs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static void StepCheckedInto(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step, out FlightState next, out StateDerivative endDerivative) =>
+            model.Kernel.RungeKutta4Into(state, derivative, step, out next, out endDerivative);
     }
 }
