@@ -314,17 +314,26 @@ namespace MagnusBall
 
         internal override FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count)
         {
-            FlightState current = state;
-            StateDerivative k = derivative;
-            for (int i = 0; i < count; i++)
+            // Two pairs of locals in turn: each step writes the other pair (the outputs may not alias the inputs), so no
+            // state is copied between steps.
+            FlightState a = state, b = default;
+            StateDerivative ka = derivative, kb = default;
+            int i = 0;
+            for (; i + 1 < count; i += 2)
             {
-                Rk4(current, k, step, out FlightState next, out StateDerivative end); // into locals: the outputs may not alias the inputs
-                current = next;
-                k = end;
+                Rk4(a, ka, step, out b, out kb);
+                Rk4(b, kb, step, out a, out ka);
             }
 
-            derivative = k;
-            return current;
+            if (i < count)
+            {
+                Rk4(a, ka, step, out b, out kb);
+                derivative = kb;
+                return b;
+            }
+
+            derivative = ka;
+            return a;
         }
 
         internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
