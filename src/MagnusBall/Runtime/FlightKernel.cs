@@ -50,8 +50,11 @@ namespace MagnusBall
         /// <summary>
         /// <see cref="RungeKutta4"/>, the same arithmetic, with the step's end written straight into
         /// <paramref name="next"/> and <paramref name="end"/> (the flight core passes its own fields: no struct is returned
-        /// through a temporary and copied, so the fields are read back from the stores that wrote them). Neither may be a
-        /// part of <paramref name="state"/> or <paramref name="k1"/>. No argument checks.
+        /// through a temporary and copied, so the fields are read back from the stores that wrote them).
+        /// <paramref name="next"/> must not be a part of <paramref name="state"/> (it may be written before the state is
+        /// read in full: under Mono, by the straight-line form's declined attempt); <paramref name="end"/> may be
+        /// <paramref name="k1"/> (it is written last, after k1's last read; a caller's <c>out derivative</c> passed back in).
+        /// No argument checks.
         /// </summary>
         internal abstract void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end);
 
@@ -615,8 +618,8 @@ namespace MagnusBall
         // no evaluation counter, as one basic block: the branches of every evaluation (the counter, the wind,
         // Vector3d.LengthOf's range test, the minimum speed, the lift's spin test) become one test at the end (a state
         // without lift is declined first). Mono's JIT keeps no double in a register from one basic block to the next, so
-        // there every branch stored and reloaded the whole dependent chain (docs/performance.md). False, with nothing
-        // written that the caller uses, where a stage leaves the common case (a speed at or below
+        // there every branch stored and reloaded the whole dependent chain (docs/performance.md). False, with end written
+        // but not meaningful (it is the caller's next state, so it must not be a part of state), where a stage leaves the common case (a speed at or below
         // FlightModel.MinimumAerodynamicSpeed, a squared speed past double.MaxValue, a spin rate at or below
         // FlightModel.MinimumLiftSpinRate): Rk4Unrolled then takes the step its own way. Where it answers true, the result is Rk4Unrolled's bit for bit
         // (FlightKernelTests.StraightLineRk4_OnAdversarialStates_IsTheGeneralStep_BitForBit: the same steps on a model with

@@ -315,14 +315,15 @@ namespace MagnusBall.Flight
                 // Integrated straight into the first-piece fields (meaningful only once _hasFirstPiece is set): Mono zeroes
                 // every struct local on entry, and these two are 152 bytes. The built-in RK4 goes straight to the model's
                 // kernel (no argument check: the state is finite, as every state this class takes, and the step was checked
-                // above; no interface call), every other method through IIntegrator.Step.
+                // above; no interface call), and so does the stable RK4 where its step is one substep; every other method,
+                // and the stable RK4's substepped steps, through IIntegrator.Step.
                 int evaluations = RungeKutta4.Evaluations;
                 if (Integrator is RungeKutta4 ||
                     (Integrator is StableIntegrator stable && stable.Inner is RungeKutta4 &&
-                     Model.StiffnessSurelyBelow(_now.State, step, 0.5 * stable.StiffnessLimit)))
+                     StableStepping.SubstepsFor(Model, _now.State, step, stable.StiffnessLimit) == 1))
                 {
-                    // Plain RK4, or the stable RK4's common case: StableStepping.Step's one substep, the whole step, found
-                    // by the same bound (its result is that RK4 step with the time set to the step's end, as here below).
+                    // Plain RK4, or the stable RK4's common case: StableStepping.Step's one substep, the whole step, counted by
+                    // the same method (its result is that RK4 step with the time set to the step's end, as here below).
                     RungeKutta4.StepCheckedInto(Model, _now.State, _now.Derivative, step, out _firstPiece, out _firstPieceDerivative);
                 }
                 else

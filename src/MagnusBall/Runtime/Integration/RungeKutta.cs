@@ -87,7 +87,8 @@ namespace MagnusBall.Integration
 
         /// <summary>
         /// <see cref="StepChecked"/> with the end written straight into <paramref name="next"/> and
-        /// <paramref name="endDerivative"/> (the flight core's fields; neither may be a part of the inputs).
+        /// <paramref name="endDerivative"/> (the flight core's fields; <paramref name="next"/> must not be a part of
+        /// <paramref name="state"/>, see <see cref="FlightKernel.RungeKutta4Into"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static void StepCheckedInto(

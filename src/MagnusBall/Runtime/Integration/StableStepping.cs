@@ -102,9 +102,7 @@ namespace MagnusBall.Integration
             {
                 // The common case without evaluating the laws: a bound shows h sigma below half the limit, so the count is
                 // 1, as the exact rate gives (it is at most the bound, and Count gives 1 up to the whole limit).
-                int count = model.StiffnessSurelyBelow(current, remaining, 0.5 * stiffnessLimit)
-                    ? 1
-                    : Count(remaining * model.StiffnessRate(current, remaining) / stiffnessLimit);
+                int count = SubstepsFor(model, current, remaining, stiffnessLimit);
                 if (substeps + count > MaximumSubsteps)
                 {
                     count = Math.Max(1, MaximumSubsteps - substeps);
@@ -129,6 +127,19 @@ namespace MagnusBall.Integration
                 }
             }
         }
+
+        /// <summary>
+        /// The substeps <see cref="Step(IIntegrator, FlightModel, in FlightState, in StateDerivative, double, out StateDerivative, out int, out int, double)"/>
+        /// splits <paramref name="remaining"/> seconds from <paramref name="state"/> into (before its cap): 1 without
+        /// evaluating the laws where a bound shows h sigma below half the limit (the exact rate then gives 1 too),
+        /// otherwise ceil(h sigma / limit). Where it is 1 for the whole step, the step is the inner method's one step over
+        /// it with the time set to its end: <see cref="Flight.FlightStepper.TryStep"/> takes that case of the stable RK4
+        /// straight to the kernel, through this same method.
+        /// </summary>
+        internal static int SubstepsFor(FlightModel model, in FlightState state, double remaining, double stiffnessLimit) =>
+            model.StiffnessSurelyBelow(state, remaining, 0.5 * stiffnessLimit)
+                ? 1
+                : Count(remaining * model.StiffnessRate(state, remaining) / stiffnessLimit);
 
         private static int Count(double ratio)
         {
