@@ -73,22 +73,14 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             evaluations = Evaluations;
-            return StepChecked(model, state, derivative, step, out endDerivative);
+            return model.Kernel.RungeKutta4(state, derivative, step, out endDerivative);
         }
 
         /// <summary>
         /// <see cref="Step"/> without its argument check, for the flight core, whose state is finite (it takes no other)
-        /// and whose step it has checked itself: four evaluations, and no interface call.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static FlightState StepChecked(
-            FlightModel model, in FlightState state, in StateDerivative derivative, double step, out StateDerivative endDerivative) =>
-            model.Kernel.RungeKutta4(state, derivative, step, out endDerivative);
-
-        /// <summary>
-        /// <see cref="StepChecked"/> with the end written straight into <paramref name="next"/> and
-        /// <paramref name="endDerivative"/> (the flight core's fields; <paramref name="next"/> must not be a part of
-        /// <paramref name="state"/>, see <see cref="FlightKernel.RungeKutta4Into"/>).
+        /// and whose step it has checked itself: four evaluations, no interface call, and the end written straight into
+        /// <paramref name="next"/> and <paramref name="endDerivative"/> (the core's fields; <paramref name="next"/> must
+        /// not be a part of <paramref name="state"/>, see <see cref="FlightKernel.RungeKutta4Into"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static void StepCheckedInto(
