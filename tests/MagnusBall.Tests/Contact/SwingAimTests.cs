@@ -197,6 +197,29 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void TargetsNear1e308Away_AreUnreachable_NotAFalseStraightAboveError()
+        {
+            // The launch at x = +1e308, the target at x = -1e308: their difference overflows. The swing inverse takes the
+            // aim solver's own target frame (formed from quarters there), so this finite input gives Unreachable, as
+            // AimSolver.AnglesToReach does on the same points, not "straight above or below" (the plain difference's NaN).
+            var position = new Vector3d(1e308, 0, 1);
+            var target = new Vector3d(-1e308, 0, 0);
+            SwingSolution<RacketSwing> racket = Tennis.Aim.RacketFaceToReach(
+                new RacketSwing(30, 10, 5), ZUp, position, new Vector3d(15, 0, -2), Vector3d.Zero, target);
+            Assert.That(racket.Status, Is.EqualTo(AimStatus.Unreachable));
+            Assert.That(Tennis.Aim.Solver.AnglesToReach(position, 30, LaunchSpin.None, target).Status, Is.EqualTo(AimStatus.Unreachable));
+            SwingSolution<ClubSwing> club = Golf.Aim.ClubFaceToReach(new ClubSwing(50, 20, 0), ZUp, position, target);
+            Assert.That(club.Status, Is.EqualTo(AimStatus.Unreachable));
+
+            // The same threshold as the aim solver: a target 1e-7 m beside straight above is refused by both (it used to
+            // pass the inverse's own 1e-9 m check and then fail inside the aim solver).
+            var p = new Vector3d(0, 0, 1);
+            var nearlyAbove = new Vector3d(1e-7, 0, 30);
+            Assert.Throws<ArgumentException>(() => Golf.Aim.ClubFaceToReach(new ClubSwing(50, 20, 0), ZUp, p, nearlyAbove));
+            Assert.Throws<ArgumentException>(() => Golf.Aim.Solver.AnglesToReach(p, 50, LaunchSpin.None, nearlyAbove));
+        }
+
+        [Test]
         public void BadInput_IsRefused_NamingTheParameter()
         {
             void Check(string name, TestDelegate action)

@@ -162,6 +162,21 @@ namespace MagnusBall.Tests.Fuzz
         }
 
         [Test]
+        public void GolfDrag_WithoutSpinSlope_AtAnInfiniteSpinParameter_IsItsFiniteValue_NotNaN()
+        {
+            // From a review's probe: a slope b of 0 (allowed: >= 0) and S = +infinity (AeroConditions at a speed of
+            // 1e-300 m/s and 1e300 rad/s) made b S = 0 x infinity = NaN. A zero slope adds nothing at any S, as
+            // LinearSpinDrag's a + b S already did.
+            var law = new GolfSpinReynoldsDrag(0.2, 0, 0.04, 1e5, 1e4);
+            var conditions = new AeroConditions(1e-300, 1e300, 1e300, 0.02, 1.2, 1.8e-5);
+            Assert.That(conditions.SpinParameter, Is.EqualTo(double.PositiveInfinity));
+            Assert.That(law.DragCoefficient(conditions), Is.EqualTo(law.Evaluate(0, conditions.ReynoldsNumber)));
+            Assert.That(law.Evaluate(double.PositiveInfinity, 2e5), Is.EqualTo(law.Evaluate(0, 2e5)));
+            // With a slope, S = +infinity stays +infinity (the model's scaled path forms the finite drag; test above).
+            Assert.That(GolfSpinReynoldsDrag.BearmanHarvey.Evaluate(double.PositiveInfinity, 2e5), Is.EqualTo(double.PositiveInfinity));
+        }
+
+        [Test]
         public void SpinLinearDrag_AtAnOverflowingSpinParameter_IsTheFiniteTrueDrag()
         {
             // From the stateful fuzz: the golf preset at |w| = 1.8e308 rad/s and a speed of 1e-109 m/s. C_D = a + b S has

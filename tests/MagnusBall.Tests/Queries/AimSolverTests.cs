@@ -180,6 +180,48 @@ namespace MagnusBall.Tests.Queries
             Assert.That(behind!.ParamName, Is.EqualTo("position"));
         }
 
+        [TestCase(false)]
+        [TestCase(true)]
+        public void ATargetBelowTheGround_IsUnreachable_NotSolvedWithItsDepthAsTheMiss(bool adaptive)
+        {
+            // From a launch point above the ground every trial stops where it lands, so a target more than 1e-4 m below the
+            // ground is never passed through. Before, each target solve settled on the launch that lands above the target
+            // and reported it Solved, with Miss the target's depth (5 m for a target 5 m down).
+            AimSolver solver = adaptive ? AdaptiveVacuumSolver() : VacuumSolver();
+            var position = new Vector3d(0, 0, 1);
+            foreach (double depth in new[] { 0.001, 0.1, 5 })
+            {
+                var target = new Vector3d(20, 0, -depth);
+                AimSolution elevation = solver.ElevationToReach(position, 30, LaunchSpin.None, target);
+                AimSolution angles = solver.AnglesToReach(position, 30, LaunchSpin.None, target);
+                AimSolution speed = solver.SpeedToReach(position, 10 * Degree, 0, LaunchSpin.None, target);
+                foreach (AimSolution s in new[] { elevation, angles, speed })
+                {
+                    Assert.That(s.Status, Is.EqualTo(AimStatus.Unreachable), $"depth {depth} m");
+                    Assert.That(s.Simulations, Is.EqualTo(0), "refused before any trial");
+                    Assert.That(s.Miss, Is.EqualTo(double.PositiveInfinity));
+                }
+            }
+
+            // Within the 1e-4 m tolerance (a target given on the ground with rounding below it) the solve lands on it.
+            var justBelow = new Vector3d(20, 0, -5e-5);
+            foreach (AimSolution s in new[]
+            {
+                solver.ElevationToReach(position, 30, LaunchSpin.None, justBelow),
+                solver.AnglesToReach(position, 30, LaunchSpin.None, justBelow),
+                solver.SpeedToReach(position, 10 * Degree, 0, LaunchSpin.None, justBelow),
+            })
+            {
+                Assert.That(s.Status, Is.EqualTo(AimStatus.Solved));
+                Assert.That(s.Miss, Is.LessThanOrEqualTo(1e-4));
+            }
+
+            // A target on the ground: solved as always, landing on it (the vacuum's range formula, to the solver's tolerance).
+            AimSolution onGround = solver.ElevationToReach(default, 20, LaunchSpin.None, new Vector3d(30, 0, 0));
+            Assert.That(onGround.Status, Is.EqualTo(AimStatus.Solved));
+            Assert.That(onGround.ElevationRadians, Is.EqualTo(0.5 * Math.Asin(G * 30 / 400)).Within(2e-8));
+        }
+
         [Test]
         public void LaunchSpin_TurnsWithTheAim()
         {

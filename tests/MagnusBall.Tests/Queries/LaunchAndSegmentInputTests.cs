@@ -76,6 +76,41 @@ namespace MagnusBall.Tests.Queries
         }
 
         [Test]
+        public void DenseOutputQueries_RefuseANaNTime_AnUndefinedDirection_AndABadStep()
+        {
+            // Before (a review's probes): StateAt(NaN) gave an all-NaN state, TryFindCrossing took (CrossingDirection)7, and
+            // StepToward(0, 1, 0) returned a step of 0 (or -1, or the step for a NaN end time).
+            FlightModel model = Shots.StepanekTennis(Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 3), Vector3d.Zero);
+            StateDerivative d0 = model.Derivative(start);
+            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 0.01);
+            var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
+            void Named(string name, TestDelegate action) =>
+                Assert.That(((ArgumentException)Assert.Throws(Is.InstanceOf<ArgumentException>(), action)!).ParamName, Is.EqualTo(name));
+
+            Named("time", () => segment.StateAt(double.NaN));
+            Named("time", () => segment.StateAt(double.PositiveInfinity));
+            Named("direction", () => segment.TryFindCrossing(Plane.Ground(model), (CrossingDirection)7, out _));
+            Named("direction", () => segment.TryFindCrossing(Plane.Ground(model), (CrossingDirection)(-1), false, out _));
+            Assert.That(segment.StateAt(0.005).Time, Is.EqualTo(0.005));
+
+            var stepper = new MagnusBall.Flight.FlightStepper(model, RungeKutta4.Instance, MagnusBall.Flight.FlightEventSet.ForModel(model));
+            stepper.Reset(start);
+            stepper.TryStep(0.01);
+            Named("time", () => stepper.StateAt(double.NaN));
+            Assert.That(stepper.StateAt(0.005).Time, Is.EqualTo(0.005));
+
+            Named("step", () => MagnusBall.Flight.FlightStepper.StepToward(0, 1, 0, out _));
+            Named("step", () => MagnusBall.Flight.FlightStepper.StepToward(0, 1, -1, out _));
+            Named("endTime", () => MagnusBall.Flight.FlightStepper.StepToward(0, double.NaN, 0.1, out _));
+            Named("now", () => MagnusBall.Flight.FlightStepper.StepToward(double.NegativeInfinity, 1, 0.1, out _));
+            Assert.That(MagnusBall.Flight.FlightStepper.StepToward(0, 1, 0.3, out bool last), Is.EqualTo(0.3));
+            Assert.That(last, Is.False);
+            Assert.That(MagnusBall.Flight.FlightStepper.StepToward(0.9, 1, 0.3, out last), Is.EqualTo(1 - 0.9));
+            Assert.That(last, Is.True);
+        }
+
+        [Test]
         public void MinimumElevationToClear_FromTheWrongSideOfThePlane_NamesThePosition()
         {
             FlightModel model = Shots.StepanekTennis(Gravity.ZUp);

@@ -40,7 +40,10 @@ namespace MagnusBall.Aerodynamics
         /// <summary>Reynolds number rho s (2r) / mu (dimensionless).</summary>
         public readonly double ReynoldsNumber;
 
-        /// <summary>Creates the conditions; the spin parameters are derived from the arguments.</summary>
+        /// <summary>
+        /// Creates the conditions; the spin parameters are derived from the arguments. A value built once per derivative
+        /// evaluation, so its arguments are not checked: the model passes checked ones (a NaN radius gives NaN parameters).
+        /// </summary>
         /// <param name="speed">Air-relative speed, m/s (&gt;= 0).</param>
         /// <param name="spinRate">|w|, rad/s.</param>
         /// <param name="transverseSpinRate">|w x v_hat|, rad/s.</param>

@@ -75,7 +75,7 @@ namespace MagnusBall.Aerodynamics
         {
             double s = spinParameter > 0 ? spinParameter : 0.0;
             // exp overflows to +inf far above the crisis, where c/inf = 0 is the right limit; no NaN for Re >= 0.
-            return Floor + SpinSlope * s + CrisisRise / (1.0 + PortableMath.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
+            return Floor + Overflow.Multiply(SpinSlope, s) + CrisisRise / (1.0 + PortableMath.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
         }
 
         double ISpinLinearDrag.CoefficientWithoutSpin(in AeroConditions conditions) =>

@@ -171,22 +171,29 @@ namespace MagnusBall.Contact
         /// <param name="position">The ball's centre at contact, m; finite (the contact point is one radius from it against the normal).</param>
         /// <param name="velocity">The ball's velocity before the impact, m/s; finite.</param>
         /// <param name="angularVelocity">The ball's angular velocity before the impact, rad/s; finite.</param>
-        /// <param name="body">The body hit; its normal must be non-zero and its effective mass &gt; 0 (not the default value).</param>
+        /// <param name="body">The body hit; its normal must be non-zero and its effective mass at least 1e-12 of the ball's (not the default value).</param>
         /// <param name="contact">The contact parameters (restitution, friction, grip recoil, force offset).</param>
         /// <returns>
         /// The outgoing state. A ball not approaching the face in the body's frame comes back unchanged with
         /// <see cref="BounceRegime.None"/> and zero impulse.
         /// </returns>
-        /// <exception cref="ArgumentException">An argument is null or not finite, or the body is the default value; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is null or not finite, the body is the default value, or its effective mass is below
+        /// 1e-12 of the ball's; the message names it.</exception>
         public static ImpactOutcome Resolve(
             Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in ContactProperties contact)
         {
             CheckArguments(ball, position, velocity, angularVelocity, body);
 
             Vector3d n = body.Normal;
-            Vector3d surfaceVelocity = body.SurfaceVelocityAt(position - n * ball.Radius);
+            Vector3d contactPoint = position - n * ball.Radius;
+            Vector3d surfaceVelocity = body.SurfaceVelocityAt(contactPoint);
             double kappa = ball.Mass / body.EffectiveMass; // 0 for an immovable body
             Vector3d relative = velocity - surfaceVelocity;
+            if (!IsModerate(relative, angularVelocity, ball.Radius))
+            {
+                return ResolveLarge(ball, velocity, angularVelocity, body, contactPoint, kappa, contact);
+            }
+
             Resolve(ball.Radius, ball.InertiaFactor, kappa, n, relative, angularVelocity, contact,
                 out Vector3d relative2, out Vector3d spin2, out BounceRegime regime, out double e, out double vn);
             if (regime == BounceRegime.None)
@@ -198,6 +205,47 @@ namespace MagnusBall.Contact
             Vector3d impulse = (relative2 - relative) * ball.Mass;
             Vector3d bodyChange = double.IsPositiveInfinity(body.EffectiveMass) ? Vector3d.Zero : impulse * (-1.0 / body.EffectiveMass);
             return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, bodyChange);
+        }
+
+        // Speeds (and spin surface speeds) within 2^500 m/s, where the law's products cannot overflow; false for a relative
+        // velocity that overflowed to infinity.
+        private static bool IsModerate(in Vector3d relative, in Vector3d angularVelocity, double radius) =>
+            relative.MaxAbsComponent <= LargeSpeed && angularVelocity.MaxAbsComponent * radius <= LargeSpeed;
+
+        // Every velocity times 2^-600, exactly (see the law's own scaled path): the surface's velocity at the contact point
+        // formed from the scaled body motion, its lever halved (and the spin doubled) where the lever overflows.
+        private static Vector3d ScaledSurfaceVelocity(in ImpactBody body, in Vector3d contactPoint)
+        {
+            Vector3d lever = contactPoint - body.Point;
+            Vector3d spin = body.AngularVelocity * ScaleDown;
+            if (!lever.IsFinite)
+            {
+                lever = contactPoint * 0.5 - body.Point * 0.5;
+                spin *= 2;
+            }
+
+            return body.Velocity * ScaleDown + Vector3d.Cross(spin, lever);
+        }
+
+        // Resolve for speeds beyond 2^500 m/s or a relative velocity beyond a double: the law at 2^-600 of every velocity
+        // (the offset at the true speed), scaled back; finite, or infinite where the true value is beyond a double, never NaN.
+        private static ImpactOutcome ResolveLarge(
+            Ball ball, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in Vector3d contactPoint, double kappa,
+            in ContactProperties contact)
+        {
+            Vector3d surface = ScaledSurfaceVelocity(body, contactPoint);
+            Vector3d relative = velocity * ScaleDown - surface;
+            Resolve(ball.Radius, ball.InertiaFactor, kappa, body.Normal, relative, angularVelocity * ScaleDown,
+                Math.Min(relative.Length * ScaleUp, double.MaxValue), contact,
+                out Vector3d relative2, out Vector3d spin2, out BounceRegime regime, out double e, out double vn);
+            if (regime == BounceRegime.None)
+            {
+                return new ImpactOutcome(velocity, angularVelocity, Vector3d.Zero, BounceRegime.None, 0, 0, Vector3d.Zero);
+            }
+
+            Vector3d impulse = (relative2 - relative) * ScaleUp * ball.Mass;
+            Vector3d bodyChange = double.IsPositiveInfinity(body.EffectiveMass) ? Vector3d.Zero : impulse * (-1.0 / body.EffectiveMass);
+            return new ImpactOutcome((relative2 + surface) * ScaleUp, spin2 * ScaleUp, impulse, regime, e, vn * ScaleUp, bodyChange);
         }
 
         // The checks both Resolve overloads make before anything is computed.
@@ -212,7 +260,20 @@ namespace MagnusBall.Contact
                 throw new ArgumentException(
                     "body must be built by an ImpactBody constructor (a non-zero normal and an effective mass > 0 kg); got the default value.", nameof(body));
             }
+
+            if (!(ball.Mass / body.EffectiveMass <= MaximumMassRatio))
+            {
+                throw new ArgumentException(
+                    $"body's effective mass must be at least {Require.Format(1 / MaximumMassRatio)} of the ball's {Require.Format(ball.Mass)} kg "
+                    + $"(a lighter body overflows the law's mass ratio); got {Require.Format(body.EffectiveMass)} kg.", nameof(body));
+            }
         }
+
+        /// <summary>
+        /// The largest ball mass over body effective mass the law accepts (a body a trillion times lighter than the ball
+        /// changes its velocity by about 1e-12 of it; a far lighter one overflows alpha (1 + m/M)).
+        /// </summary>
+        internal const double MaximumMassRatio = 1e12;
 
         /// <summary>
         /// The impact with a free rigid body whose centre of mass is offset from the contact point (<see cref="RigidImpact"/>):
@@ -241,18 +302,33 @@ namespace MagnusBall.Contact
             }
 
             Vector3d n = body.Normal;
-            Vector3d surfaceVelocity = body.SurfaceVelocityAt(position - n * ball.Radius);
+            Vector3d contactPoint = position - n * ball.Radius;
+            Vector3d surfaceVelocity = body.SurfaceVelocityAt(contactPoint);
             Vector3d relative = velocity - surfaceVelocity;
-            RigidImpact.Resolve(ball.Mass, ball.Radius, ball.InertiaFactor, inertia, n, relative, angularVelocity, contact,
+            Vector3d v = velocity, w = angularVelocity;
+            double up = 1;
+            if (!IsModerate(relative, angularVelocity, ball.Radius))
+            {
+                // As the point-mass law's large path: the rigid law (no offset here) is linear in the velocities, so it is
+                // solved at 2^-600 of them and its impulse scaled back.
+                relative = velocity * ScaleDown - ScaledSurfaceVelocity(body, contactPoint);
+                v = velocity * ScaleDown;
+                w = angularVelocity * ScaleDown;
+                up = ScaleUp;
+            }
+
+            RigidImpact.Resolve(ball.Mass, ball.Radius, ball.InertiaFactor, inertia, n, relative, w, contact,
                 out Vector3d impulse, out BounceRegime regime, out double e, out double vn);
             if (regime == BounceRegime.None)
             {
                 return new ImpactOutcome(velocity, angularVelocity, Vector3d.Zero, BounceRegime.None, 0, 0, Vector3d.Zero);
             }
 
-            Vector3d velocity2 = velocity + impulse * (1.0 / ball.Mass);
-            Vector3d spin2 = angularVelocity - Vector3d.Cross(n, impulse) * (1.0 / (ball.InertiaFactor * ball.Mass * ball.Radius));
-            return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, -inertia.Compliance(impulse));
+            // up is 1 (exact) on the moderate path, so these are the unscaled formulas there, bit for bit.
+            Vector3d velocity2 = (v + impulse * (1.0 / ball.Mass)) * up;
+            Vector3d spin2 = (w - Vector3d.Cross(n, impulse) * (1.0 / (ball.InertiaFactor * ball.Mass * ball.Radius))) * up;
+            impulse *= up;
+            return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn * up, -inertia.Compliance(impulse));
         }
 
         /// <summary>
@@ -262,6 +338,33 @@ namespace MagnusBall.Contact
         /// </summary>
         internal static void Resolve(
             double radius, double alpha, double kappa, in Vector3d n, in Vector3d v1, in Vector3d w1, in ContactProperties contact,
+            out Vector3d v2, out Vector3d w2, out BounceRegime regime, out double ey, out double vn)
+        {
+            if (v1.MaxAbsComponent <= LargeSpeed && w1.MaxAbsComponent * radius <= LargeSpeed)
+            {
+                Resolve(radius, alpha, kappa, n, v1, w1, v1.Length, contact, out v2, out w2, out regime, out ey, out vn);
+                return;
+            }
+
+            // Speeds beyond 2^500 m/s (3.3e150; also a spin whose surface speed is): products below ((1 + e) vn, alpha' R w,
+            // the slide's friction term) could overflow and meet as infinity minus infinity. With the normal-force offset
+            // taken at the true speed, the law is linear in the velocities (the restitution depends on the angle only), so it
+            // is solved at 2^-600 of them and scaled back, exactly (powers of two): each result is finite, or infinite where
+            // its true value is beyond a double, never NaN.
+            Resolve(radius, alpha, kappa, n, v1 * ScaleDown, w1 * ScaleDown, Math.Min(v1.Length, double.MaxValue), contact,
+                out v2, out w2, out regime, out ey, out vn);
+            v2 *= ScaleUp;
+            w2 *= ScaleUp;
+            vn *= ScaleUp;
+        }
+
+        private const double LargeSpeed = 3.273390607896142e150; // 2^500
+        private const double ScaleDown = 2.409919865102884e-181; // 2^-600
+        private const double ScaleUp = 4.149515568880993e180; // 2^600
+
+        // The law with the normal-force offset taken at incoming speed offsetSpeed (|v1| itself, unless v1 is scaled).
+        private static void Resolve(
+            double radius, double alpha, double kappa, in Vector3d n, in Vector3d v1, in Vector3d w1, double offsetSpeed, in ContactProperties contact,
             out Vector3d v2, out Vector3d w2, out BounceRegime regime, out double ey, out double vn)
         {
             vn = -Vector3d.Dot(v1, n);
@@ -289,11 +392,13 @@ namespace MagnusBall.Contact
             double incomingAngleDegrees = PortableMath.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
             ey = contact.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn / onePlusKappa; // J: the ball's normal velocity change
-            double mu = contact.Friction;
+            // Past 1e100 friction changes nothing (the ball grips for any finite slip, and the offset's cap is far above D),
+            // and a larger one would overflow (1 + alpha') mu.
+            double mu = Math.Min(contact.Friction, 1e100);
 
             // Normal-force offset: against the rolling direction, capped so it never outruns friction (energy)
             // and never reverses the rolling.
-            double offset = Math.Min(contact.ForceOffsetAt(v1.Length), (1 + alphaEffective) * mu * radius * InverseSqrt2);
+            double offset = Math.Min(contact.ForceOffsetAt(offsetSpeed), (1 + alphaEffective) * mu * radius * InverseSqrt2);
             double lambdaLength = lambda1.Length;
             double delta = Math.Min(offset * normalChange / radius * onePlusKappa, lambdaLength); // Lam' loses (1 + kappa) D J / R
             Vector3d offsetImpulse = lambdaLength > 0 ? lambda1 * (delta / lambdaLength) : Vector3d.Zero;

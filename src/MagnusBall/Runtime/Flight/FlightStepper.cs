@@ -442,7 +442,17 @@ namespace MagnusBall.Flight
         /// <param name="endTime">The end time, s.</param>
         /// <param name="step">The fixed step, s.</param>
         /// <param name="last">True when the returned step reaches the end time.</param>
+        /// <exception cref="ArgumentException">A time is not finite, or the step is not finite and &gt; 0; the message names it.</exception>
         public static double StepToward(double now, double endTime, double step, out bool last)
+        {
+            Require.Finite(now, nameof(now));
+            Require.Finite(endTime, nameof(endTime));
+            Require.Step(step, nameof(step));
+            return StepTowardUnchecked(now, endTime, step, out last);
+        }
+
+        /// <summary><see cref="StepToward"/> for loops that checked their step and times once, before the loop.</summary>
+        internal static double StepTowardUnchecked(double now, double endTime, double step, out bool last)
         {
             double remaining = endTime - now;
             last = remaining <= step * (1 + 1e-9);
@@ -453,9 +463,11 @@ namespace MagnusBall.Flight
         /// The state at <paramref name="time"/> inside the last step, on its dense output (pieces between bounces,
         /// the roll); the step's start before it, the current state after it.
         /// </summary>
-        /// <param name="time">The time, s.</param>
+        /// <param name="time">The time, s; finite.</param>
+        /// <exception cref="ArgumentException">The time is not finite; the message names it.</exception>
         public FlightState StateAt(double time)
         {
+            Require.Finite(time, nameof(time));
             if ((_segmentCount == 0 && !_implicitSegment) || time >= _now.State.Time)
             {
                 return _now.State;

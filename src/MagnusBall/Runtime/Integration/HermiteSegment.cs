@@ -140,9 +140,11 @@ namespace MagnusBall.Integration
         }
 
         /// <summary>The full interpolated state at <paramref name="time"/> (position, velocity, spin, time).</summary>
-        /// <param name="time">Time, s; normally inside [StartTime, EndTime].</param>
+        /// <param name="time">Time, s; finite, normally inside [StartTime, EndTime].</param>
+        /// <exception cref="System.ArgumentException">The time is not finite; the message names it.</exception>
         public FlightState StateAt(double time)
         {
+            Require.Finite(time, nameof(time));
             if (time == Start.Time || !(Duration > 0))
             {
                 return Start;
@@ -168,6 +170,7 @@ namespace MagnusBall.Integration
         /// <param name="direction">Which way the crossing must go.</param>
         /// <param name="time">The crossing time to <see cref="TimeTolerance"/>, s; 0 when none is found.</param>
         /// <returns>True when the interpolated path crosses the plane that way inside (StartTime, EndTime].</returns>
+        /// <exception cref="System.ArgumentOutOfRangeException">The direction is not a defined <see cref="CrossingDirection"/>.</exception>
         public bool TryFindCrossing(in Plane plane, CrossingDirection direction, out double time) =>
             TryFindCrossing(plane, direction, false, out time);
 
@@ -195,8 +198,15 @@ namespace MagnusBall.Integration
         /// True when the interpolated path crosses the plane that way inside (StartTime, EndTime], or at
         /// StartTime as described for <paramref name="startsFlight"/>.
         /// </returns>
+        /// <exception cref="System.ArgumentOutOfRangeException">The direction is not a defined <see cref="CrossingDirection"/>.</exception>
         public bool TryFindCrossing(in Plane plane, CrossingDirection direction, bool startsFlight, out double time)
         {
+            if (direction != CrossingDirection.AlongNormal && direction != CrossingDirection.AgainstNormal)
+            {
+                throw new System.ArgumentOutOfRangeException(
+                    nameof(direction), direction, $"direction must be CrossingDirection.AlongNormal or AgainstNormal; got {(int)direction}.");
+            }
+
             CrossingCubic(plane, direction, Start, StartDerivative, End, EndDerivative, out double f0, out double m0, out double f1, out double m1);
             if (!double.IsFinite(f0) || !double.IsFinite(f1))
             {

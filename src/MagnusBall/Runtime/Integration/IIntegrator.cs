@@ -33,7 +33,8 @@ namespace MagnusBall.Integration
         /// <summary>Advances <paramref name="state"/> by <paramref name="step"/> seconds.</summary>
         /// <param name="model">The flight model (the right-hand side).</param>
         /// <param name="state">The state at the start of the step; every component finite.</param>
-        /// <param name="derivative">model.Derivative(state), the derivative at the start of the step.</param>
+        /// <param name="derivative">model.Derivative(state), the derivative at the start of the step (not checked: it is the model's, finite
+        /// for any finite state whose forces fit in a double; a non-finite one gives a non-finite result, which the flight core refuses).</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="endDerivative">model.Derivative of the returned state (evaluated once, here).</param>
         /// <param name="evaluations">The model evaluations this call made, the end derivative included.</param>

@@ -75,6 +75,13 @@ namespace MagnusBall.Queries
         /// </summary>
         private const double ConvergedMiss = 1e-4;
 
+        /// <summary>
+        /// How far below the ground a target may lie and still be aimed at, m (the same 1e-4 m as
+        /// <see cref="ConvergedMiss"/>): a trial from on or above the ground stops where it lands, so a target deeper than
+        /// this is never passed through, and the solve would otherwise settle on the launch that lands above it.
+        /// </summary>
+        private const double BelowGroundTolerance = ConvergedMiss;
+
         /// <summary>The largest secant step in elevation or azimuth, rad (20 degrees).</summary>
         private const double AngleStride = 0.35;
 
@@ -313,6 +320,11 @@ namespace MagnusBall.Queries
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
+            if (BelowTheGround(position, target))
+            {
+                return Unreachable(speed, azimuthRadians);
+            }
+
             return SolveElevation(goal, speed, azimuthRadians, PathToTarget(goal, azimuthRadians), double.NaN, out _);
         }
 
@@ -344,6 +356,11 @@ namespace MagnusBall.Queries
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
+            if (BelowTheGround(position, target))
+            {
+                return Unreachable(speed, 0);
+            }
+
             if (TryBothAngles(goal, speed, limit, out AimSolution solved))
             {
                 return solved;
@@ -373,6 +390,11 @@ namespace MagnusBall.Queries
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
+            if (BelowTheGround(position, target))
+            {
+                return UnreachableSpeed(elevationRadians, azimuthRadians);
+            }
+
             var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthRadians);
             double scan = 0.01 * MaximumSpeed;
 
@@ -417,9 +439,17 @@ namespace MagnusBall.Queries
                 flo = fv;
             }
 
-            return new AimSolution(
-                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
+            return UnreachableSpeed(elevationRadians, azimuthRadians);
         }
+
+        private AimSolution UnreachableSpeed(double elevationRadians, double azimuthRadians) =>
+            new AimSolution(
+                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
+
+        // A target more than BelowGroundTolerance below the ground, launched from on or above it: no trial passes through
+        // it (each stops where it lands). A NaN distance (points near 1e308 m away) is not below: the solve runs as before.
+        private bool BelowTheGround(in Vector3d position, in Vector3d target) =>
+            Ground.SignedDistance(target) < -BelowGroundTolerance && Ground.SignedDistance(position) >= 0;
 
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
@@ -721,7 +751,17 @@ namespace MagnusBall.Queries
 
         private AimGoal TargetGoal(in Vector3d position, in Vector3d target, in LaunchSpin spin)
         {
-            Vector3d up = Model.Up;
+            LaunchFrame frame = TargetFrame(Model.Up, position, target);
+            return new AimGoal(position, frame, spin, new Plane(target, frame.Forward), target, missToTarget: true);
+        }
+
+        /// <summary>
+        /// The frame of a target solve: <paramref name="up"/>, forward the horizontal direction from
+        /// <paramref name="position"/> to <paramref name="target"/> (formed from quarters where the difference overflows).
+        /// </summary>
+        /// <exception cref="ArgumentException">The target is within 1e-6 m of straight above or below the position (names target).</exception>
+        internal static LaunchFrame TargetFrame(in Vector3d up, in Vector3d position, in Vector3d target)
+        {
             Vector3d toTarget = target - position;
             Vector3d horizontal = toTarget - up * Vector3d.Dot(toTarget, up);
             double length = horizontal.Length;
@@ -741,10 +781,9 @@ namespace MagnusBall.Queries
                     nameof(target));
             }
 
-            LaunchFrame frame;
             try
             {
-                frame = new LaunchFrame(up, horizontal);
+                return new LaunchFrame(up, horizontal);
             }
             catch (ArgumentException)
             {
@@ -755,8 +794,6 @@ namespace MagnusBall.Queries
                     $"target must not be straight above or below the launch point (horizontal distance {Require.Format(length)} m is rounding beside its distance along up).",
                     nameof(target));
             }
-
-            return new AimGoal(position, frame, spin, new Plane(target, frame.Forward), target, missToTarget: true);
         }
 
         // The horizontal path from the launch point to the target plane along the azimuth (NaN when it never gets there).

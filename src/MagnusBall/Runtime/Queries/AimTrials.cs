@@ -238,7 +238,7 @@ namespace MagnusBall.Queries
                 }
                 else
                 {
-                    double h = FlightStepper.StepToward(stepper.CurrentTime, endTime, _step, out last);
+                    double h = FlightStepper.StepTowardUnchecked(stepper.CurrentTime, endTime, _step, out last);
                     outcome = stepper.TryStep(h, stopAt);
                 }
 

@@ -193,7 +193,7 @@ namespace MagnusBall.Queries
                         stepper.StepCount, stepper.DerivativeEvaluations, workLimitReached: true);
                 }
 
-                double h = FlightStepper.StepToward(stepper.CurrentTime, endTime, Step, out bool last);
+                double h = FlightStepper.StepTowardUnchecked(stepper.CurrentTime, endTime, Step, out bool last);
                 // h is 0 when maxDuration is below the time's resolution (start.Time + maxDuration == start.Time): the clock
                 // cannot advance, which the stepper reports for any step that does not move it.
                 StepOutcome outcome = h > 0 ? stepper.TryStep(h, stopAt) : StepOutcome.TimeCannotAdvance;

@@ -99,8 +99,10 @@ namespace MagnusBall.Contact.Swings
         /// <param name="pitchVelocity">The pitch's velocity at impact, m/s; finite.</param>
         /// <param name="pitchSpin">The pitch's angular velocity, rad/s; finite.</param>
         /// <exception cref="ArgumentException">An argument is null, not finite, the frame is the default, or the undercut exceeds the sum of the radii.</exception>
+        /// <exception cref="InvalidOperationException">This BatSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position, in Vector3d pitchVelocity, in Vector3d pitchSpin)
         {
+            SwingGeometry.RequireBuilt(Speed, nameof(BatSwing));
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));

@@ -34,7 +34,7 @@ namespace MagnusBall.Contact.Swings
             double mass, double centerOfGravityDepth = 0, double impactHeight = 0, double heelToeInertia = double.PositiveInfinity,
             double verticalInertia = double.PositiveInfinity, double faceNormalInertia = double.PositiveInfinity)
         {
-            Mass = RequireMass(mass, nameof(mass));
+            Mass = SwingGeometry.RequireBodyMass(mass, nameof(mass));
             CenterOfGravityDepth = Require.InRange(centerOfGravityDepth, 0, 0.2, nameof(centerOfGravityDepth));
             ImpactHeight = Require.InRange(impactHeight, -0.05, 0.05, nameof(impactHeight));
             HeelToeInertia = RequireMoment(heelToeInertia, nameof(heelToeInertia));
@@ -43,7 +43,7 @@ namespace MagnusBall.Contact.Swings
         }
 
         /// <summary>The smallest head mass, kg (a milligram).</summary>
-        internal const double MinimumMass = 1e-6;
+        internal const double MinimumMass = SwingGeometry.MinimumBodyMass;
 
         /// <summary>The smallest moment of inertia, kg m^2 (0.01 g cm^2).</summary>
         internal const double MinimumMoment = 1e-9;
@@ -105,17 +105,6 @@ namespace MagnusBall.Contact.Swings
         /// <inheritdoc />
         public override string ToString() => FormattableString.Invariant(
             $"ClubHead({Mass:R} kg, CG {CenterOfGravityDepth * 1000:F1} mm deep, impact {ImpactHeight * 1000:F1} mm above it, I {HeelToeInertia:G4}/{VerticalInertia:G4}/{FaceNormalInertia:G4} kg m^2)");
-
-        private static double RequireMass(double value, string name)
-        {
-            if (double.IsFinite(value) && value >= MinimumMass)
-            {
-                return value;
-            }
-
-            throw new ArgumentOutOfRangeException(
-                name, value, $"{name} must be finite and >= {Require.Format(MinimumMass)} kg; got {Require.Format(value)}.");
-        }
 
         private static double RequireMoment(double value, string name)
         {

@@ -39,7 +39,7 @@ namespace MagnusBall.Contact.Swings
         /// <param name="attackAngleDegrees">Attack angle (the head's path elevation; negative: hitting down), degrees, in [-45, 45].</param>
         /// <param name="faceAngleDegrees">Face angle toward the frame's side, degrees, in [-45, 45].</param>
         /// <param name="clubPathDegrees">Club path toward the frame's side, degrees, in [-45, 45].</param>
-        /// <param name="headMass">The head's effective mass at the impact point, kg; finite and &gt; 0.</param>
+        /// <param name="headMass">The head's effective mass at the impact point, kg; finite and &gt;= 1e-6 (a milligram).</param>
         /// <param name="restitution">The ball's normal COR on the face; in [0, 1].</param>
         /// <param name="friction">Sliding friction ball-face; finite and &gt;= 0.</param>
         /// <exception cref="ArgumentException">A value is outside its range; the message names it.</exception>
@@ -52,7 +52,7 @@ namespace MagnusBall.Contact.Swings
             AttackAngleDegrees = Require.InRange(attackAngleDegrees, -45, 45, nameof(attackAngleDegrees));
             FaceAngleDegrees = Require.InRange(faceAngleDegrees, -45, 45, nameof(faceAngleDegrees));
             ClubPathDegrees = Require.InRange(clubPathDegrees, -45, 45, nameof(clubPathDegrees));
-            Head = new ClubHead(Require.Positive(headMass, nameof(headMass)), pointMass: true);
+            Head = new ClubHead(SwingGeometry.RequireBodyMass(headMass, nameof(headMass)), pointMass: true);
             Restitution = Require.InRange(restitution, 0, 1, nameof(restitution));
             Friction = Require.NonNegative(friction, nameof(friction));
         }
@@ -146,8 +146,10 @@ namespace MagnusBall.Contact.Swings
         /// <param name="frame">Up, forward along the target line, side; not the default frame.</param>
         /// <param name="position">The ball's centre, m; finite.</param>
         /// <exception cref="ArgumentException">An argument is null, not finite, or the frame is the default; the message names it.</exception>
+        /// <exception cref="InvalidOperationException">This ClubSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position)
         {
+            SwingGeometry.RequireBuilt(Speed, nameof(ClubSwing));
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));

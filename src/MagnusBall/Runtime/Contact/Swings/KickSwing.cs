@@ -33,7 +33,7 @@ namespace MagnusBall.Contact.Swings
         /// <param name="friction">Foot-ball sliding friction; in [0, 2]. Default 0.5, inside the 0.37-0.63 measured for nine match balls against leather (see remarks).</param>
         /// <param name="elevationDegrees">The foot's path above the horizontal, degrees, in [-45, 60].</param>
         /// <param name="azimuthDegrees">The foot's path azimuth toward the frame's side, degrees, in [-90, 90].</param>
-        /// <param name="footMass">The foot's effective mass, kg; finite and &gt; 0.</param>
+        /// <param name="footMass">The foot's effective mass, kg; finite and &gt;= 1e-6 (a milligram).</param>
         /// <param name="restitution">Ball-foot normal COR; in [0, 1].</param>
         /// <exception cref="ArgumentException">A value is outside its range; the message names it.</exception>
         public KickSwing(
@@ -45,7 +45,7 @@ namespace MagnusBall.Contact.Swings
             Friction = Require.InRange(friction, 0, 2, nameof(friction));
             ElevationDegrees = Require.InRange(elevationDegrees, -45, 60, nameof(elevationDegrees));
             AzimuthDegrees = Require.InRange(azimuthDegrees, -90, 90, nameof(azimuthDegrees));
-            FootMass = Require.Positive(footMass, nameof(footMass));
+            FootMass = SwingGeometry.RequireBodyMass(footMass, nameof(footMass));
             Restitution = Require.InRange(restitution, 0, 1, nameof(restitution));
         }
 
@@ -75,8 +75,10 @@ namespace MagnusBall.Contact.Swings
         /// <param name="frame">Up, forward, side; not the default frame.</param>
         /// <param name="position">The ball's centre, m; finite.</param>
         /// <exception cref="ArgumentException">An argument is null, not finite, the frame is the default, or |offset| is not below the ball's radius.</exception>
+        /// <exception cref="InvalidOperationException">This KickSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position)
         {
+            SwingGeometry.RequireBuilt(Speed, nameof(KickSwing));
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));

@@ -142,8 +142,10 @@ namespace MagnusBall.Contact.Swings
         /// <param name="incomingSpin">The ball's angular velocity just before the impact, rad/s; finite.</param>
         /// <returns>The launch; <see cref="SwingLaunch.IsHit"/> is false when the ball was not approaching the face.</returns>
         /// <exception cref="ArgumentException">An argument is null, not finite, or the frame is the default; the message names it.</exception>
+        /// <exception cref="InvalidOperationException">This RacketSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position, in Vector3d incomingVelocity, in Vector3d incomingSpin)
         {
+            SwingGeometry.RequireBuilt(Speed, nameof(RacketSwing));
             Require.NotNull(ball, nameof(ball));
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));

@@ -119,12 +119,12 @@ namespace MagnusBall.Contact.Swings
             in RacketSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d incomingVelocity, in Vector3d incomingSpin, in Vector3d target,
             double maximumAzimuthDegrees = 45)
         {
-            Check(frame, position, target, maximumAzimuthDegrees);
+            LaunchFrame aimFrame = Check(frame, position, target, maximumAzimuthDegrees);
             Require.Finite(incomingVelocity, nameof(incomingVelocity));
             Require.Finite(incomingSpin, nameof(incomingSpin));
             RequireBuilt(swing.Speed, nameof(swing), nameof(RacketSwing));
             var family = new RacketFamily(swing, frame, position, incomingVelocity, incomingSpin, Ball);
-            return Solve<RacketSwing, RacketFamily>(ref family, swing.FaceTiltDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+            return Solve<RacketSwing, RacketFamily>(ref family, aimFrame, swing.FaceTiltDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
         }
 
         /// <summary>
@@ -144,10 +144,10 @@ namespace MagnusBall.Contact.Swings
         public SwingSolution<ClubSwing> ClubFaceToReach(
             in ClubSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees = 45)
         {
-            Check(frame, position, target, maximumAzimuthDegrees);
+            LaunchFrame aimFrame = Check(frame, position, target, maximumAzimuthDegrees);
             RequireBuilt(swing.Speed, nameof(swing), nameof(ClubSwing));
             var family = new ClubFamily(swing, frame, position, Ball);
-            return Solve<ClubSwing, ClubFamily>(ref family, swing.DynamicLoftDegrees, swing.FaceAngleDegrees, position, target, maximumAzimuthDegrees);
+            return Solve<ClubSwing, ClubFamily>(ref family, aimFrame, swing.DynamicLoftDegrees, swing.FaceAngleDegrees, position, target, maximumAzimuthDegrees);
         }
 
         /// <summary>
@@ -168,12 +168,12 @@ namespace MagnusBall.Contact.Swings
             in BatSwing swing, in LaunchFrame frame, in Vector3d position, in Vector3d pitchVelocity, in Vector3d pitchSpin, in Vector3d target,
             double maximumAzimuthDegrees = 45)
         {
-            Check(frame, position, target, maximumAzimuthDegrees);
+            LaunchFrame aimFrame = Check(frame, position, target, maximumAzimuthDegrees);
             Require.Finite(pitchVelocity, nameof(pitchVelocity));
             Require.Finite(pitchSpin, nameof(pitchSpin));
             RequireBuilt(swing.Speed, nameof(swing), nameof(BatSwing));
             var family = new BatFamily(swing, frame, position, pitchVelocity, pitchSpin, Ball);
-            return Solve<BatSwing, BatFamily>(ref family, swing.SwingElevationDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+            return Solve<BatSwing, BatFamily>(ref family, aimFrame, swing.SwingElevationDegrees, swing.AzimuthDegrees, position, target, maximumAzimuthDegrees);
         }
 
         /// <summary>
@@ -191,25 +191,19 @@ namespace MagnusBall.Contact.Swings
         public SwingSolution<KickSwing> KickToReach(
             in KickSwing kick, in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees = 45)
         {
-            Check(frame, position, target, maximumAzimuthDegrees);
+            LaunchFrame aimFrame = Check(frame, position, target, maximumAzimuthDegrees);
             RequireBuilt(kick.Speed, nameof(kick), nameof(KickSwing));
             var family = new KickFamily(kick, frame, position, Ball);
-            return Solve<KickSwing, KickFamily>(ref family, kick.ElevationDegrees, kick.AzimuthDegrees, position, target, maximumAzimuthDegrees);
+            return Solve<KickSwing, KickFamily>(ref family, aimFrame, kick.ElevationDegrees, kick.AzimuthDegrees, position, target, maximumAzimuthDegrees);
         }
 
-        private void Check(in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
+        private LaunchFrame Check(in LaunchFrame frame, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
         {
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));
             Require.Finite(target, nameof(target));
             Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
-            Vector3d up = Solver.Model.Up;
-            Vector3d toTarget = target - position;
-            Vector3d horizontal = toTarget - up * Vector3d.Dot(toTarget, up);
-            if (!(horizontal.Length > 1e-9))
-            {
-                throw new ArgumentException("target must not be straight above or below position.", nameof(target));
-            }
+            return AimSolver.TargetFrame(Solver.Model.Up, position, target); // the aim solver's own frame and check
         }
 
         private static void RequireBuilt(double speed, string name, string type)
@@ -232,13 +226,10 @@ namespace MagnusBall.Contact.Swings
         }
 
         private SwingSolution<TSwing> Solve<TSwing, TFamily>(
-            ref TFamily family, double x1, double x2, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
+            ref TFamily family, in LaunchFrame aimFrame, double x1, double x2, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
             where TSwing : struct
             where TFamily : struct, IFamily<TSwing>
         {
-            Vector3d up = Solver.Model.Up;
-            Vector3d toTarget = target - position;
-            var aimFrame = new LaunchFrame(up, toTarget - up * Vector3d.Dot(toTarget, up));
             TSwing current = family.With(x1, x2);
             if (!Residual<TSwing, TFamily>(ref family, current, aimFrame, position, target, maximumAzimuthDegrees,
                     out SwingLaunch launch, out AimSolution aim, out double r1, out double r2))

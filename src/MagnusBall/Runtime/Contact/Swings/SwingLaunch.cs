@@ -11,9 +11,11 @@ namespace MagnusBall.Contact.Swings
     {
         /// <summary>Creates the description of an impact in a frame.</summary>
         /// <param name="impact">The impact.</param>
-        /// <param name="frame">The launch frame (up, forward, side).</param>
+        /// <param name="frame">The launch frame (up, forward, side); not the default frame.</param>
+        /// <exception cref="ArgumentException">The frame is the default value (no up or forward); the message names it.</exception>
         public SwingLaunch(in ImpactOutcome impact, in LaunchFrame frame)
         {
+            SwingGeometry.RequireFrame(frame, nameof(frame));
             Impact = impact;
             Frame = frame;
         }
@@ -120,6 +122,30 @@ namespace MagnusBall.Contact.Swings
             {
                 throw new ArgumentException($"{name} must be a LaunchFrame built from an up and a forward direction; got the default (zero) frame.", name);
             }
+        }
+
+        /// <summary>Refuses a swing that is the default value of its struct (speed 0: built by no constructor).</summary>
+        internal static void RequireBuilt(double speed, string type)
+        {
+            if (speed == 0)
+            {
+                throw new InvalidOperationException($"this {type} is the default value (speed 0); build it with a {type} constructor.");
+            }
+        }
+
+        /// <summary>The smallest mass of a struck body (a foot, a club head) the swing helpers accept, kg: a milligram.</summary>
+        internal const double MinimumBodyMass = 1e-6;
+
+        /// <summary>A body mass: finite and &gt;= <see cref="MinimumBodyMass"/> (lighter ones overflow the law's mass ratio).</summary>
+        internal static double RequireBodyMass(double value, string name)
+        {
+            if (double.IsFinite(value) && value >= MinimumBodyMass)
+            {
+                return value;
+            }
+
+            throw new ArgumentOutOfRangeException(
+                name, value, $"{name} must be finite and >= {Require.Format(MinimumBodyMass)} kg; got {Require.Format(value)}.");
         }
 
         /// <summary>The unit vector across <paramref name="direction"/> in the plane of it and up (up's part across it).</summary>
