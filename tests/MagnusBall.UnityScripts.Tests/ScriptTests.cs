@@ -270,5 +270,37 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(holder.transform.Find(CourtBuilder.RootName).childCount, Is.EqualTo(parts));
             Assert.That(built == null, Is.True, "the old court is destroyed (Unity's destroyed-object null)");
         }
+
+        [Test]
+        public void TheCourt_RebuiltAfterADomainReload_DestroysTheOldBuildsMaterials_AndNoOther()
+        {
+            // After a domain reload (or with the scene reopened) the builder's private fields are new: the materials of
+            // the court saved with the scene are found on its parts by their name. Before, they were kept in a private
+            // array, lost on reload, so every later rebuild in the editor leaked four materials into the scene.
+            var holder = new GameObject();
+            holder.AddComponent<CourtBuilder>().Build();
+            Transform built = holder.transform.Find(CourtBuilder.RootName);
+            var old = new System.Collections.Generic.HashSet<Material>();
+            for (int i = 0; i < built.childCount; i++)
+            {
+                old.Add(built.GetChild(i).GetComponent<Renderer>().sharedMaterial);
+            }
+
+            Assert.That(old.Count, Is.EqualTo(4));
+            foreach (Material m in old)
+            {
+                Assert.That(m.name, Does.StartWith(CourtBuilder.MaterialPrefix));
+            }
+
+            CourtBuilder reloaded = holder.AddComponent<CourtBuilder>(); // a builder with fresh fields, as after a reload
+            reloaded.Build();
+            foreach (Material m in old)
+            {
+                Assert.That(m == null, Is.True, "an old build's material is destroyed");
+            }
+
+            Assert.That(StubControl.DefaultMaterial == null, Is.False, "the primitives' shared default material is not the builder's");
+            Assert.That(holder.transform.childCount, Is.EqualTo(1), "one court");
+        }
     }
 }

@@ -353,6 +353,11 @@ namespace UnityEngine
 
         public Vector3 linearVelocity { get; set; }
 
+        // Unity 6's obsolete alias (Rigidbody.deprecated.cs), the real name before 6000.0: MagnusBall.Unity.Compile.Pre6 compiles the
+        // components' pre-Unity-6 branch against it.
+        [System.Obsolete("Please use Rigidbody.linearVelocity instead. (UnityUpgradable) -> linearVelocity")]
+        public Vector3 velocity { get => linearVelocity; set => linearVelocity = value; }
+
         public Vector3 angularVelocity { get; set; }
 
         public float mass { get; set; } = 1;

@@ -38,7 +38,9 @@ namespace MagnusBall.Components
     /// bounce model is applied at the first contact's normal to the velocity (relative to the other body, if it
     /// has a Rigidbody) and spin recorded at the last <c>FixedUpdate</c>, and the result is written back to
     /// <c>linearVelocity</c> and to <see cref="Spin"/>: the spin comes back from the contact as Cross's model
-    /// says. With <see cref="SpinAtContact.Keep"/> PhysX's response stands and the spin is unchanged.</para>
+    /// says. With <see cref="SpinAtContact.Keep"/> PhysX's response stands and the spin is unchanged. Unity sends
+    /// <c>OnCollisionEnter</c> only to a body with a collider (a SphereCollider of the ball's radius): the component
+    /// requires the Rigidbody, not the collider, so add one.</para>
     /// <para><b>Accuracy.</b> PhysX integrates semi-implicitly at <c>Time.fixedDeltaTime</c>; docs/unity.md
     /// gives the landing error of this path against RK4 at 1/240 s (centimetres at 0.02 s). For the exact
     /// path use <see cref="MagnusBallFlight"/>.</para>
@@ -136,7 +138,19 @@ namespace MagnusBall.Components
             return d.Acceleration - engineGravity;
         }
 
-        private Rigidbody Body => _body ??= GetComponent<Rigidbody>();
+        // Unity's own null test (UnityEngine.Object's ==), not ??=, which sees a destroyed component as alive.
+        private Rigidbody Body
+        {
+            get
+            {
+                if (_body == null)
+                {
+                    _body = GetComponent<Rigidbody>();
+                }
+
+                return _body;
+            }
+        }
 
         private void Awake()
         {

@@ -15,7 +15,8 @@ namespace MagnusBall.Samples.TennisScene.Scripts
     /// the context menu replaces an existing court. The parts share four materials (surface, run-off, lines,
     /// net), copied once per build from the primitives' shared material and assigned as sharedMaterial:
     /// reading <c>renderer.material</c> would instantiate a copy per part, which in edit mode leaks into the
-    /// scene. A rebuild destroys the previous build's materials.
+    /// scene. A rebuild destroys the previous build's materials, found on the old court's parts by their name (so also
+    /// after a domain reload or with the scene reopened, when this component's fields are new); no other material is touched.
     /// </remarks>
     public class CourtBuilder : MonoBehaviour
     {
@@ -32,7 +33,6 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         private const float LineThickness = 0.002f; // lines stand 2 mm proud of the surface so they draw on top
 
         private Transform _root;
-        private Material[] _materials = new Material[0];
         private Material _surface, _runoff, _line, _net;
 
         private void Start()
@@ -50,28 +50,20 @@ namespace MagnusBall.Samples.TennisScene.Scripts
             Transform existing = transform.Find(RootName);
             if (existing != null)
             {
+                DestroyBuiltMaterials(existing);
                 DestroyImmediate(existing.gameObject); // the context menu runs in edit mode, where Destroy is not allowed
-            }
-
-            foreach (Material old in _materials)
-            {
-                if (old != null)
-                {
-                    DestroyImmediate(old);
-                }
             }
 
             var root = new GameObject(RootName);
             root.transform.SetParent(transform, false);
             _root = root.transform;
-            _materials = new Material[4];
             _surface = null;
             _runoff = null;
             _line = null;
             _net = null;
 
-            Paint(Box("runoff", new Vector3d(0, -0.011, 0), new Vector3d(TennisCourt.Length + 12, 0.02, TennisCourt.DoublesWidth + 8)), ref _runoff, runoffColor, 0);
-            Paint(Box("court", new Vector3d(0, -0.005, 0), new Vector3d(TennisCourt.Length, 0.01, TennisCourt.DoublesWidth)), ref _surface, surfaceColor, 1);
+            Paint(Box("runoff", new Vector3d(0, -0.011, 0), new Vector3d(TennisCourt.Length + 12, 0.02, TennisCourt.DoublesWidth + 8)), ref _runoff, runoffColor, "run-off");
+            Paint(Box("court", new Vector3d(0, -0.005, 0), new Vector3d(TennisCourt.Length, 0.01, TennisCourt.DoublesWidth)), ref _surface, surfaceColor, "surface");
 
             foreach (CourtLine line in TennisCourt.Lines())
             {
@@ -85,7 +77,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
                 Vector3d size = runsAlongX
                     ? new Vector3d(length, LineThickness, TennisCourt.LineWidth)
                     : new Vector3d(TennisCourt.LineWidth, LineThickness, length);
-                Paint(Box(line.Name, centre + TennisCourt.Up * (LineThickness / 2), size), ref _line, lineColor, 2);
+                Paint(Box(line.Name, centre + TennisCourt.Up * (LineThickness / 2), size), ref _line, lineColor, "lines");
             }
 
             double half = TennisCourt.PostOffset;
@@ -94,7 +86,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
             {
                 double z = -half + (i + 0.5) * width;
                 double height = TennisCourt.NetHeightAt(z);
-                Paint(Box("net", new Vector3d(0, height / 2, z), new Vector3d(0.02, height, width)), ref _net, netColor, 3);
+                Paint(Box("net", new Vector3d(0, height / 2, z), new Vector3d(0.02, height, width)), ref _net, netColor, "net");
             }
 
             foreach (double z in new[] { -half, half })
@@ -105,7 +97,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
                 // A Unity cylinder is 2 units tall: scale y by half the height.
                 post.transform.localPosition = UnityFrame.ToUnity(new Vector3d(0, TennisCourt.NetHeightAtPosts / 2, z));
                 post.transform.localScale = new Vector3(0.08f, (float)(TennisCourt.NetHeightAtPosts / 2), 0.08f);
-                Paint(post, ref _net, netColor, 3);
+                Paint(post, ref _net, netColor, "net");
             }
         }
 
@@ -119,17 +111,34 @@ namespace MagnusBall.Samples.TennisScene.Scripts
             return box;
         }
 
-        // One material per colour per build, copied from the primitive's shared default material.
-        private void Paint(GameObject part, ref Material material, Color color, int slot)
+        // One material per colour per build, copied from the primitive's shared default material and named as this
+        // builder's (what DestroyBuiltMaterials looks for).
+        private void Paint(GameObject part, ref Material material, Color color, string what)
         {
             Renderer renderer = part.GetComponent<Renderer>();
             if (material == null)
             {
-                material = new Material(renderer.sharedMaterial) { color = color };
-                _materials[slot] = material;
+                material = new Material(renderer.sharedMaterial) { color = color, name = MaterialPrefix + what };
             }
 
             renderer.sharedMaterial = material;
+        }
+
+        /// <summary>The name every material a build makes starts with.</summary>
+        public const string MaterialPrefix = "MagnusBall court: ";
+
+        // The materials an earlier build made (at most four, shared by the parts), each destroyed once.
+        private static void DestroyBuiltMaterials(Transform court)
+        {
+            for (int i = 0; i < court.childCount; i++)
+            {
+                Renderer renderer = court.GetChild(i).GetComponent<Renderer>();
+                Material material = renderer != null ? renderer.sharedMaterial : null;
+                if (material != null && material.name != null && material.name.StartsWith(MaterialPrefix, System.StringComparison.Ordinal))
+                {
+                    DestroyImmediate(material); // the parts sharing it now hold Unity's destroyed-object null
+                }
+            }
         }
     }
 }
