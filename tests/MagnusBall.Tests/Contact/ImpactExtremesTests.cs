@@ -81,6 +81,45 @@ namespace MagnusBall.Tests.Contact
 
             SwingLaunch club = new ClubSwing(1e308, 10, 0, 0, 0, ClubHead.MeasuredDriver).Hit(new Ball(0.04593, 0.02135), ZUp, Vector3d.Zero);
             AssertNoNaN(club.Impact, "rigid club head at 1e308 m/s");
+
+            // A tiny ball spinning near the largest double: |w| R is moderate, but n x w itself overflowed before R
+            // multiplied it (NaN velocity and spin, before and after the first fix).
+            var tiny = new Ball(0.057, 1e-160);
+            ImpactOutcome spinning = Impact.Resolve(tiny, Vector3d.Zero, new Vector3d(3, 0, -10), new Vector3d(1.7e308, -1.7e308, 0),
+                ImpactBody.Immovable(new Vector3d(1, 1, 1)), new ContactProperties(0.8, 0.5));
+            AssertNoNaN(spinning, "a 1e-160 m ball at 1.7e308 rad/s");
+
+            // The impulse of a ball at -1e308 m/s into a wall (e 0.8): 0.057 x 1.8 x 1e308 = 1.03e307 N s, finite (the scaled impulse is
+            // multiplied by the mass before it is scaled back).
+            ImpactOutcome wall = Impact.Resolve(Ball.Tennis, Vector3d.Zero, new Vector3d(0, 0, -1e308), Vector3d.Zero,
+                ImpactBody.Immovable(Vector3d.UnitZ), new ContactProperties(0.8, 0.5));
+            Assert.That(double.IsFinite(wall.Impulse.Z), Is.True, wall.Impulse.ToString());
+            Assert.That(wall.Impulse.Z, Is.EqualTo(Ball.Tennis.Mass * 1.8 * 1e308).Within(1e-12 * 1.03e307));
+
+            // A body spinning near 1e308 rad/s with a lever near 1e308 m: its surface velocity is beyond even the scaled
+            // range, so no impact can be formed: refused, naming the body (it read as no impact before).
+            var far = new ImpactBody(new Vector3d(-1e308, -1e308, 0), Vector3d.Zero, new Vector3d(1e308, -1e308, 1e308), Vector3d.UnitZ, 1);
+            var refused = Assert.Throws<ArgumentException>(() => Impact.Resolve(
+                Ball.Tennis, new Vector3d(1e308, 1e308, 0), Vector3d.Zero, Vector3d.Zero, far, new ContactProperties(0.8, 0.5)))!;
+            Assert.That(refused.ParamName, Is.EqualTo("body"));
+        }
+
+        [Test]
+        public void AnEnormousFriction_IsCappedWhereItWouldOverflow_AndAGrazingImpactStillGrips()
+        {
+            // The law caps friction at 1e290 ((1 + alpha') mu would overflow past it). A first cap at 1e100 turned this grazing
+            // grip (normal speed 1e-200 m/s, friction 1e200) into a slide: the cap is now where it changes nothing below it.
+            var contact = new ContactProperties(0.8, 1e200);
+            BounceOutcome graze = new CrossBounce(new Surface("sticky", 0.8, 0, 1e200, 0, 0, 0)).Bounce(
+                Ball.Tennis, Vector3d.UnitZ, new Vector3d(1, 0, -1e-200), Vector3d.Zero);
+            Assert.That(graze.Regime, Is.EqualTo(BounceRegime.Grip));
+            ImpactOutcome point = Impact.Resolve(Ball.Tennis, Vector3d.Zero, new Vector3d(1, 0, -1e-200), Vector3d.Zero,
+                ImpactBody.Immovable(Vector3d.UnitZ), contact);
+            Assert.That(point.Regime, Is.EqualTo(BounceRegime.Grip));
+            ImpactOutcome huge = Impact.Resolve(Ball.Tennis, Vector3d.Zero, new Vector3d(5, 0, -10), Vector3d.Zero,
+                ImpactBody.Immovable(Vector3d.UnitZ), new ContactProperties(0.8, double.MaxValue));
+            AssertNoNaN(huge, "friction double.MaxValue");
+            Assert.That(huge.Regime, Is.EqualTo(BounceRegime.Grip));
         }
 
         [Test]
@@ -103,6 +142,13 @@ namespace MagnusBall.Tests.Contact
             var head = Assert.Throws<ArgumentOutOfRangeException>(() => new ClubSwing(50, 10, 0, headMass: 1e-309))!;
             Assert.That(head.ParamName, Is.EqualTo("headMass"));
             Assert.That(new KickSwing(25, 0.05, footMass: 1e-6).FootMass, Is.EqualTo(1e-6), "a milligram is accepted");
+
+            // A ball over 1e12 times the foot's or the head's mass: refused by the swing, naming its own parameter (the ball).
+            var heavyBall = new Ball(1e7, 0.11);
+            var kick = Assert.Throws<ArgumentException>(() => new KickSwing(25, 0.05, footMass: 1e-6).Hit(heavyBall, ZUp, Vector3d.Zero))!;
+            Assert.That(kick.ParamName, Is.EqualTo("ball"));
+            var drive = Assert.Throws<ArgumentException>(() => new ClubSwing(50, 10, 0, headMass: 1e-6).Hit(heavyBall, ZUp, Vector3d.Zero))!;
+            Assert.That(drive.ParamName, Is.EqualTo("ball"));
         }
 
         [Test]

@@ -177,8 +177,9 @@ namespace MagnusBall.Contact
         /// The outgoing state. A ball not approaching the face in the body's frame comes back unchanged with
         /// <see cref="BounceRegime.None"/> and zero impulse.
         /// </returns>
-        /// <exception cref="ArgumentException">An argument is null or not finite, the body is the default value, or its effective mass is below
-        /// 1e-12 of the ball's; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is null or not finite, the body is the default value, its effective mass is below
+        /// 1e-12 of the ball's, or its surface velocity at the contact point is beyond 2^600 times the largest double (an angular
+        /// velocity near 1e308 rad/s with a lever near 1e308 m); the message names it.</exception>
         public static ImpactOutcome Resolve(
             Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in ImpactBody body, in ContactProperties contact)
         {
@@ -207,10 +208,14 @@ namespace MagnusBall.Contact
             return new ImpactOutcome(velocity2, spin2, impulse, regime, e, vn, bodyChange);
         }
 
-        // Speeds (and spin surface speeds) within 2^500 m/s, where the law's products cannot overflow; false for a relative
-        // velocity that overflowed to infinity.
-        private static bool IsModerate(in Vector3d relative, in Vector3d angularVelocity, double radius) =>
-            relative.MaxAbsComponent <= LargeSpeed && angularVelocity.MaxAbsComponent * radius <= LargeSpeed;
+        // Speeds, spins and spin surface speeds within 2^500 (m/s, rad/s), where the law's products cannot overflow (the
+        // spin's own size too: n x w is formed before the radius multiplies it); false for a relative velocity that
+        // overflowed to infinity or NaN.
+        private static bool IsModerate(in Vector3d relative, in Vector3d angularVelocity, double radius)
+        {
+            double spin = angularVelocity.MaxAbsComponent;
+            return relative.MaxAbsComponent <= LargeSpeed && spin <= LargeSpeed && spin * radius <= LargeSpeed;
+        }
 
         // Every velocity times 2^-600, exactly (see the law's own scaled path): the surface's velocity at the contact point
         // formed from the scaled body motion, its lever halved (and the spin doubled) where the lever overflows.
@@ -224,7 +229,15 @@ namespace MagnusBall.Contact
                 spin *= 2;
             }
 
-            return body.Velocity * ScaleDown + Vector3d.Cross(spin, lever);
+            Vector3d surface = body.Velocity * ScaleDown + Vector3d.Cross(spin, lever);
+            if (!surface.IsFinite)
+            {
+                throw new ArgumentException(
+                    "body's surface velocity at the contact point (its angular velocity times the lever from its point) is beyond "
+                    + "2^600 times the largest double; no impact can be formed.", "body");
+            }
+
+            return surface;
         }
 
         // Resolve for speeds beyond 2^500 m/s or a relative velocity beyond a double: the law at 2^-600 of every velocity
@@ -243,7 +256,7 @@ namespace MagnusBall.Contact
                 return new ImpactOutcome(velocity, angularVelocity, Vector3d.Zero, BounceRegime.None, 0, 0, Vector3d.Zero);
             }
 
-            Vector3d impulse = (relative2 - relative) * ScaleUp * ball.Mass;
+            Vector3d impulse = (relative2 - relative) * ball.Mass * ScaleUp; // the mass first: finite wherever the true impulse is
             Vector3d bodyChange = double.IsPositiveInfinity(body.EffectiveMass) ? Vector3d.Zero : impulse * (-1.0 / body.EffectiveMass);
             return new ImpactOutcome((relative2 + surface) * ScaleUp, spin2 * ScaleUp, impulse, regime, e, vn * ScaleUp, bodyChange);
         }
@@ -340,13 +353,13 @@ namespace MagnusBall.Contact
             double radius, double alpha, double kappa, in Vector3d n, in Vector3d v1, in Vector3d w1, in ContactProperties contact,
             out Vector3d v2, out Vector3d w2, out BounceRegime regime, out double ey, out double vn)
         {
-            if (v1.MaxAbsComponent <= LargeSpeed && w1.MaxAbsComponent * radius <= LargeSpeed)
+            if (IsModerate(v1, w1, radius))
             {
                 Resolve(radius, alpha, kappa, n, v1, w1, v1.Length, contact, out v2, out w2, out regime, out ey, out vn);
                 return;
             }
 
-            // Speeds beyond 2^500 m/s (3.3e150; also a spin whose surface speed is): products below ((1 + e) vn, alpha' R w,
+            // Speeds beyond 2^500 m/s (3.3e150; also a spin, or its surface speed, beyond 2^500): products below ((1 + e) vn, alpha' R w,
             // the slide's friction term) could overflow and meet as infinity minus infinity. With the normal-force offset
             // taken at the true speed, the law is linear in the velocities (the restitution depends on the angle only), so it
             // is solved at 2^-600 of them and scaled back, exactly (powers of two): each result is finite, or infinite where
@@ -358,6 +371,7 @@ namespace MagnusBall.Contact
             vn *= ScaleUp;
         }
 
+        private const double MaximumFriction = 1e290;
         private const double LargeSpeed = 3.273390607896142e150; // 2^500
         private const double ScaleDown = 2.409919865102884e-181; // 2^-600
         private const double ScaleUp = 4.149515568880993e180; // 2^600
@@ -392,9 +406,10 @@ namespace MagnusBall.Contact
             double incomingAngleDegrees = PortableMath.Atan2(vn, tangentialSpeed) * (180.0 / Math.PI);
             ey = contact.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn / onePlusKappa; // J: the ball's normal velocity change
-            // Past 1e100 friction changes nothing (the ball grips for any finite slip, and the offset's cap is far above D),
-            // and a larger one would overflow (1 + alpha') mu.
-            double mu = Math.Min(contact.Friction, 1e100);
+            // Friction above 1e290 is taken as 1e290: a larger one would overflow (1 + alpha') mu (alpha' is at most
+            // 0.4 (1 + 1e12) here). Only a friction that large changes (and only at a normal speed under about 1e-290 of
+            // the slip), where before it gave NaN.
+            double mu = Math.Min(contact.Friction, MaximumFriction);
 
             // Normal-force offset: against the rolling direction, capped so it never outruns friction (energy)
             // and never reverses the rolling.

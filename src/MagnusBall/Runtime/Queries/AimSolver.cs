@@ -34,6 +34,12 @@ namespace MagnusBall.Queries
     /// root reached from the vacuum's lower angle (or lowest speed), accepted only where the margin grows through it
     /// (below it the shot falls short); else the first one the scan finds upward from the lower limit in steps of the
     /// scan width, so a solution window narrower than the scan width can be missed there.</para>
+    /// <para><b>A target below the ground.</b> A trial stops where it lands, so no flight from on or above the ground passes
+    /// through a point below it. The target solves then aim at where the ball comes down over it: the answer lands at the
+    /// target's horizontal position (its margin jumps there, from landing short to arriving at ground level), is reported
+    /// Solved, and <see cref="AimSolution.Miss"/> is the target's depth below the landing. A target given on the court
+    /// while the ground plane is at the ball's centre height, one radius up (as the tennis scene's), is such a case:
+    /// Miss is the radius.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed class AimSolver
@@ -74,13 +80,6 @@ namespace MagnusBall.Queries
         /// 1e-8 rad is 1e-6 m at 100 m, so a converged trial is far inside it; a trial that stalls short is not.
         /// </summary>
         private const double ConvergedMiss = 1e-4;
-
-        /// <summary>
-        /// How far below the ground a target may lie and still be aimed at, m (the same 1e-4 m as
-        /// <see cref="ConvergedMiss"/>): a trial from on or above the ground stops where it lands, so a target deeper than
-        /// this is never passed through, and the solve would otherwise settle on the launch that lands above it.
-        /// </summary>
-        private const double BelowGroundTolerance = ConvergedMiss;
 
         /// <summary>The largest secant step in elevation or azimuth, rad (20 degrees).</summary>
         private const double AngleStride = 0.35;
@@ -320,11 +319,6 @@ namespace MagnusBall.Queries
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
-            if (BelowTheGround(position, target))
-            {
-                return Unreachable(speed, azimuthRadians);
-            }
-
             return SolveElevation(goal, speed, azimuthRadians, PathToTarget(goal, azimuthRadians), double.NaN, out _);
         }
 
@@ -356,11 +350,6 @@ namespace MagnusBall.Queries
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
-            if (BelowTheGround(position, target))
-            {
-                return Unreachable(speed, 0);
-            }
-
             if (TryBothAngles(goal, speed, limit, out AimSolution solved))
             {
                 return solved;
@@ -390,11 +379,6 @@ namespace MagnusBall.Queries
             Require.Finite(azimuthRadians, nameof(azimuthRadians));
             AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve();
-            if (BelowTheGround(position, target))
-            {
-                return UnreachableSpeed(elevationRadians, azimuthRadians);
-            }
-
             var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthRadians);
             double scan = 0.01 * MaximumSpeed;
 
@@ -445,11 +429,6 @@ namespace MagnusBall.Queries
         private AimSolution UnreachableSpeed(double elevationRadians, double azimuthRadians) =>
             new AimSolution(
                 AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
-
-        // A target more than BelowGroundTolerance below the ground, launched from on or above it: no trial passes through
-        // it (each stops where it lands). A NaN distance (points near 1e308 m away) is not below: the solve runs as before.
-        private bool BelowTheGround(in Vector3d position, in Vector3d target) =>
-            Ground.SignedDistance(target) < -BelowGroundTolerance && Ground.SignedDistance(position) >= 0;
 
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);

@@ -145,12 +145,14 @@ namespace MagnusBall.Contact.Swings
         /// <param name="ball">The ball; not null.</param>
         /// <param name="frame">Up, forward along the target line, side; not the default frame.</param>
         /// <param name="position">The ball's centre, m; finite.</param>
-        /// <exception cref="ArgumentException">An argument is null, not finite, or the frame is the default; the message names it.</exception>
+        /// <exception cref="ArgumentException">An argument is null, not finite, the frame is the default, or the ball is over 1e12 times the
+        /// head's mass; the message names it.</exception>
         /// <exception cref="InvalidOperationException">This ClubSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position)
         {
             SwingGeometry.RequireBuilt(Speed, nameof(ClubSwing));
             Require.NotNull(ball, nameof(ball));
+            SwingGeometry.RequireMassRatio(ball, HeadMass, "head");
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));
             Vector3d normal = FaceNormal(frame);

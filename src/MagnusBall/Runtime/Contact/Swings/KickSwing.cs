@@ -74,12 +74,14 @@ namespace MagnusBall.Contact.Swings
         /// <param name="ball">The ball; not null.</param>
         /// <param name="frame">Up, forward, side; not the default frame.</param>
         /// <param name="position">The ball's centre, m; finite.</param>
-        /// <exception cref="ArgumentException">An argument is null, not finite, the frame is the default, or |offset| is not below the ball's radius.</exception>
+        /// <exception cref="ArgumentException">An argument is null, not finite, the frame is the default, |offset| is not below the ball's radius,
+        /// or the ball is over 1e12 times the foot's mass.</exception>
         /// <exception cref="InvalidOperationException">This KickSwing is the default value (not built by a constructor).</exception>
         public SwingLaunch Hit(Ball ball, in LaunchFrame frame, in Vector3d position)
         {
             SwingGeometry.RequireBuilt(Speed, nameof(KickSwing));
             Require.NotNull(ball, nameof(ball));
+            SwingGeometry.RequireMassRatio(ball, FootMass, "foot");
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Require.Finite(position, nameof(position));
             if (!(Math.Abs(Offset) < ball.Radius))

@@ -148,6 +148,17 @@ namespace MagnusBall.Contact.Swings
                 name, value, $"{name} must be finite and >= {Require.Format(MinimumBodyMass)} kg; got {Require.Format(value)}.");
         }
 
+        /// <summary>Refuses a ball over 1e12 times the struck body's mass (the impact law's limit), naming the ball.</summary>
+        internal static void RequireMassRatio(Ball ball, double bodyMass, string bodyName)
+        {
+            if (!(ball.Mass / bodyMass <= Impact.MaximumMassRatio))
+            {
+                throw new ArgumentException(
+                    $"ball's mass {Require.Format(ball.Mass)} kg must be at most {Require.Format(Impact.MaximumMassRatio)} times the {bodyName}'s "
+                    + $"{Require.Format(bodyMass)} kg (the impact law's limit).", "ball");
+            }
+        }
+
         /// <summary>The unit vector across <paramref name="direction"/> in the plane of it and up (up's part across it).</summary>
         internal static Vector3d UpAcross(in LaunchFrame frame, in Vector3d direction)
         {
