@@ -52,6 +52,24 @@ namespace MagnusBall.Tests.Contact
             Assert.That(fast.Impulse, Is.EqualTo(moderate.Impulse * TwoTo520));
             Assert.That(fast.NormalRestitution, Is.EqualTo(moderate.NormalRestitution));
 
+            // A rotating body (its surface velocity from the spin about a point off the contact) scales the same way.
+            var spinning = new ImpactBody(new Vector3d(0.1, -0.05, -0.2), new Vector3d(-3, 1, 2), new Vector3d(20, -10, 35), normal, 0.3);
+            var fastSpinning = new ImpactBody(spinning.Point, spinning.Velocity * TwoTo520, spinning.AngularVelocity * TwoTo520, normal, 0.3);
+            ImpactOutcome turned = Impact.Resolve(Ball.Tennis, Vector3d.Zero, v, w, spinning, contact);
+            ImpactOutcome fastTurned = Impact.Resolve(Ball.Tennis, Vector3d.Zero, v * TwoTo520, w * TwoTo520, fastSpinning, contact);
+            Assert.That(fastTurned.Regime, Is.EqualTo(turned.Regime));
+            Assert.That(fastTurned.Velocity, Is.EqualTo(turned.Velocity * TwoTo520));
+            Assert.That(fastTurned.AngularVelocity, Is.EqualTo(turned.AngularVelocity * TwoTo520));
+            Assert.That(fastTurned.Impulse, Is.EqualTo(turned.Impulse * TwoTo520));
+
+            // The rigid club head's law (no offset; the measured driver head, turning about its CG) too.
+            var golfBall = new Ball(0.04593, 0.02135);
+            SwingLaunch drive = new ClubSwing(50, 12, -1, 2, -1, ClubHead.MeasuredDriver).Hit(golfBall, ZUp, Vector3d.Zero);
+            SwingLaunch fastDrive = new ClubSwing(50 * TwoTo520, 12, -1, 2, -1, ClubHead.MeasuredDriver).Hit(golfBall, ZUp, Vector3d.Zero);
+            Assert.That(fastDrive.Impact.Regime, Is.EqualTo(drive.Impact.Regime));
+            Assert.That(fastDrive.Velocity, Is.EqualTo(drive.Velocity * TwoTo520));
+            Assert.That(fastDrive.AngularVelocity, Is.EqualTo(drive.AngularVelocity * TwoTo520));
+
             // The ground bounce (CrossBounce) takes the same path (on a surface whose offset does not grow with speed; the
             // built-in courts' does, so there the scaled law is a different bounce, as the law says).
             var court = new CrossBounce(new Surface("fixed offset", 0.8, 0, 0.5, tangentialRestitution, forceOffset, 0));

@@ -86,6 +86,33 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void Racket_AimedAtACourtPoint_WithTheGroundAtTheBallsCentre_LandsOverIt()
+        {
+            // The tennis scene's ground is the plane of the ball's centre, one radius up; a game gives a point on the court.
+            // The aim solver answers such a below-ground target with the launch that comes down over it (Miss: the radius),
+            // and the inverse judges that landing along the ground, so it solves (it came back Unreachable: Miss 0.033 m is
+            // over its 1e-4 m).
+            double r = Tennis.Ball.Radius;
+            Plane ground = Plane.Ground(Tennis.Model, new Vector3d(0, 0, r));
+            var aim = new SwingAim(new AimSolver(Tennis.Model, RungeKutta4.Instance, Tennis.Step, ground, maximumFlightTime: 20), Tennis.Ball);
+            var position = new Vector3d(0, 0, 1);
+            var incoming = new Vector3d(-14, 0.5, -1);
+            var courtPoint = new Vector3d(21, 1.5, 0);
+            SwingSolution<RacketSwing> s = aim.RacketFaceToReach(new RacketSwing(26, 40, 4.5), ZUp, position, incoming, Vector3d.Zero, courtPoint);
+            Assert.That(s.IsSolved, Is.True);
+            Assert.That(s.Aim.Miss, Is.EqualTo(r).Within(1e-4), "the aim solver's miss is the depth below its landing");
+
+            // Flown independently (RK4, the same step) to the ground at the ball's centre: down over the court point.
+            var predictor = new TrajectoryPredictor(Tennis.Model, RungeKutta4.Instance, Tennis.Step, new FlightEventSet(Tennis.Model.Up, ground));
+            Prediction p = predictor.Predict(s.Launch.LaunchState(position), 20, Span<Vector3d>.Empty);
+            Assert.That(p.Stopped, Is.True);
+            Vector3d landing = p.EndState.Position;
+            Assert.That(landing.Z, Is.EqualTo(r).Within(1e-9), "on the ground plane");
+            Assert.That(Math.Sqrt((landing.X - courtPoint.X) * (landing.X - courtPoint.X) + (landing.Y - courtPoint.Y) * (landing.Y - courtPoint.Y)),
+                Is.LessThan(LandingTolerance), "over the court point");
+        }
+
+        [Test]
         public void Club_FindsTheLoftAndFace_ThatCarryToTheTarget_KeepingSpeedAttackAndFaceToPath()
         {
             // A 7-iron-like delivery with a 2 deg fade (face 2 deg open to the path): the inverse keeps the curve.

@@ -77,7 +77,10 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>
         /// The aim solver's solution counts only when it passes this close to the target, m (its angle tolerance gives
-        /// about 1e-7 m at tennis distances; a solver that returns its lower elevation limit can be farther).
+        /// about 1e-7 m at tennis distances; a solver that returns its lower elevation limit can be farther). For a target
+        /// below the ground (a point on the court while the ground plane is at the ball's centre), which the aim solver
+        /// answers with the launch that comes down over it, the distance is measured along the ground: from the landing to
+        /// the point over the target.
         /// </summary>
         public const double MissTolerance = 1e-4;
 
@@ -327,7 +330,7 @@ namespace MagnusBall.Contact.Swings
             }
 
             aim = Solver.AnglesToReach(position, launch.Speed, launch.LaunchSpin, target, maximumAzimuthDegrees);
-            if (!aim.IsSolved || !(aim.Miss <= MissTolerance))
+            if (!aim.IsSolved || !(Miss(aim, position, target) <= MissTolerance))
             {
                 return false;
             }
@@ -335,6 +338,20 @@ namespace MagnusBall.Contact.Swings
             elevationError = Wrap(aim.ElevationRadians - launch.ElevationRadians);
             azimuthError = Wrap(aim.AzimuthRadians - launch.AzimuthRadians);
             return true;
+        }
+
+        // The aim solution's miss as MissTolerance judges it: its distance from the target, or for a target below the ground
+        // (launched from on or above it) its landing's distance along the ground from the point over the target.
+        private double Miss(in AimSolution aim, in Vector3d position, in Vector3d target)
+        {
+            Plane ground = Solver.Ground;
+            if (!(ground.SignedDistance(target) < 0) || !(ground.SignedDistance(position) >= 0))
+            {
+                return aim.Miss;
+            }
+
+            Vector3d d = aim.Arrival.Position - target;
+            return (d - ground.Normal * Vector3d.Dot(d, ground.Normal)).Length;
         }
 
         private static bool LaunchJacobian<TSwing, TFamily>(
