@@ -138,7 +138,12 @@ namespace MagnusBall
             return largest * Math.Sqrt(x * x + y * y + z * z); // infinity only if the length itself exceeds double.MaxValue
         }
 
-        /// <summary>The dot product <paramref name="a"/> . <paramref name="b"/>.</summary>
+        /// <summary>
+        /// The dot product <paramref name="a"/> . <paramref name="b"/>: the plain formula, for speed (it is inlined into the
+        /// library's hot paths). Where a product of components exceeds double.MaxValue (components beyond about 1.3e154)
+        /// it is infinite, and two such of opposite signs give NaN; <see cref="Length"/> and the library's own distances
+        /// to planes are formed without that overflow.
+        /// </summary>
         /// <param name="a">Left operand.</param>
         /// <param name="b">Right operand.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -175,7 +180,10 @@ namespace MagnusBall
         internal static double QuarterDotOfDifference(in Vector3d a, in Vector3d b, in Vector3d n) =>
             (0.25 * a.X - 0.25 * b.X) * n.X + (0.25 * a.Y - 0.25 * b.Y) * n.Y + (0.25 * a.Z - 0.25 * b.Z) * n.Z;
 
-        /// <summary>The cross product <paramref name="a"/> x <paramref name="b"/> (standard determinant formula).</summary>
+        /// <summary>
+        /// The cross product <paramref name="a"/> x <paramref name="b"/> (standard determinant formula, for speed): a
+        /// component whose two products exceed double.MaxValue with the same sign (components beyond about 1.3e154) is NaN.
+        /// </summary>
         /// <param name="a">Left operand.</param>
         /// <param name="b">Right operand.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
