@@ -55,14 +55,20 @@ namespace MagnusBall.Tests.Queries
             }
         }
 
+        // One RK4 step of 0.01 s of a tennis drive, with its end derivatives.
+        private static void OneStep(out FlightModel model, out FlightState start, out StateDerivative d0, out FlightState end, out StateDerivative d1)
+        {
+            model = Shots.StepanekTennis(Gravity.ZUp);
+            start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 3), Vector3d.Zero);
+            d0 = model.Derivative(start);
+            end = RungeKutta4.Instance.Step(model, start, d0, 0.01);
+            d1 = model.Derivative(end);
+        }
+
         [Test]
         public void HermiteSegment_RejectsNonFiniteStatesAndDerivatives()
         {
-            FlightModel model = Shots.StepanekTennis(Gravity.ZUp);
-            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 3), Vector3d.Zero);
-            StateDerivative d0 = model.Derivative(start);
-            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 0.01);
-            StateDerivative d1 = model.Derivative(end);
+            OneStep(out _, out FlightState start, out StateDerivative d0, out FlightState end, out StateDerivative d1);
             var nanState = new FlightState(new Vector3d(double.NaN, 0, 0), end.Velocity, end.AngularVelocity, end.Time);
             var infDerivative = new StateDerivative(d1.Velocity, new Vector3d(0, 0, double.NegativeInfinity), d1.AngularAcceleration);
 
@@ -80,11 +86,8 @@ namespace MagnusBall.Tests.Queries
         {
             // Before (a review's probes): StateAt(NaN) gave an all-NaN state, TryFindCrossing took (CrossingDirection)7, and
             // StepToward(0, 1, 0) returned a step of 0 (or -1, or the step for a NaN end time).
-            FlightModel model = Shots.StepanekTennis(Gravity.ZUp);
-            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 3), Vector3d.Zero);
-            StateDerivative d0 = model.Derivative(start);
-            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 0.01);
-            var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
+            OneStep(out FlightModel model, out FlightState start, out StateDerivative d0, out FlightState end, out StateDerivative d1);
+            var segment = new HermiteSegment(start, d0, end, d1);
             void Named(string name, TestDelegate action) =>
                 Assert.That(((ArgumentException)Assert.Throws(Is.InstanceOf<ArgumentException>(), action)!).ParamName, Is.EqualTo(name));
 
