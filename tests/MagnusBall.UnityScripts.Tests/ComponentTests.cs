@@ -199,6 +199,73 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(seen.FindIndex(e => e.Kind == FlightEventKinds.PlaneCrossing), Is.LessThan(seen.FindIndex(e => e.Kind == FlightEventKinds.Bounce)), "over the net, then the bounce");
         }
 
+        [TestCase(20f, 20f)]
+        [TestCase(0.25f, 0.25f)]
+        [TestCase(1f, 2f)]
+        public void EveryEvent_IsRaised_EvenWhenAFrameHoldsMoreThanSixteen(float frameDelta, float clamp)
+        {
+            // A review's probe: the component wrote events into a 16-slot buffer and dropped the rest, so a frame holding many
+            // (a ball bouncing to rest through a long hitch) lost bounces and even the stop: one 20 s frame raised 8 of 25
+            // bounces and no Stopped. The buffer now holds any step's events, the driver defers the rest of a frame that might
+            // overflow it (AdvanceResult.StepsDeferred), and the component takes that time after raising the events.
+            var holder = new GameObject("ball");
+            holder.transform.position = new Vector3(-10f, 1.2f, 0.5f);
+            MagnusBallFlight flight = Add<MagnusBallFlight>(holder);
+            flight.settings.surface = SurfaceChoice.Hard;
+            flight.maxFrameDelta = clamp;
+            flight.ApplySettings();
+            List<FlightEvent> seen = Record(flight);
+            flight.Launch(new Vector3(6f, 8f, 0f), Vector3.zero);
+            StubControl.DeltaTime = frameDelta;
+            for (int frame = 0; frame < 10_000 && flight.IsFlying; frame++)
+            {
+                Call(flight, "Update");
+            }
+
+            FixedStepDriver driver = flight.Driver!;
+            Assert.That(flight.IsFlying, Is.False, "the flight ended");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Rest).Count, Is.EqualTo(1), "Stopped once");
+            Assert.That(seen.FindAll(e => e.Kind == FlightEventKinds.Bounce).Count, Is.EqualTo(driver.Bounces), "every bounce the driver counted");
+            Assert.That(driver.Bounces, Is.GreaterThan(16), "more bounces than the old buffer held");
+            Assert.That(flight.ArcVersion, Is.EqualTo(driver.Bounces + 1), "one arc per launch and bounce (the preview follows each)");
+        }
+
+        [Test]
+        public void ALaunchBelowTheGround_IsRefused_AndOneOnItInFloats_IsLiftedOntoIt()
+        {
+            // A review's probe: a landing is a crossing of the touchdown plane (groundHeight + radius) from above, so a ball
+            // whose centre started below it (a GameObject at the origin with groundHeight 0) fell for ever, y = -13706 m after
+            // ten minutes. Deeper than 0.1 mm it is now refused; within it (a float position meant to be on the plane) the
+            // start is lifted onto the plane and the flight lands.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            flight.transform.position = new Vector3(0f, 0f, 0f);
+            var e = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(20f, 0f, 0f), Vector3.zero))!;
+            Assert.That(e.ParamName, Is.EqualTo("start"));
+            Assert.That(e.Message, Does.Contain("below the ground's touchdown plane"));
+            Assert.That(flight.IsFlying, Is.False, "nothing launched");
+
+            double radius = SportPresets.Tennis.Ball.Radius;
+            flight.transform.position = new Vector3(0f, (float)radius, 0f); // 0.033f: 2e-10 m below 0.033
+            Assert.That((double)(float)radius, Is.LessThan(radius), "the float position is below the plane");
+            flight.Launch(new Vector3(20f, -1f, 0f), Vector3.zero); // heading down at once
+            Assert.That(flight.Driver!.State.Position.Y, Is.EqualTo(radius), "lifted onto the plane");
+            Fly(flight, 1f / 60f);
+            Assert.That(flight.Driver.IsFinished, Is.True, "it lands");
+        }
+
+        [Test]
+        public void AHugeSpin_TurnsTheDrawnBallByAFiniteRotation()
+        {
+            // The turn rate * dt in degrees overflowed a float for a huge but finite spin (3e38 rad/s about each axis), and
+            // AngleAxis(infinity) is a NaN rotation; it is now taken modulo a turn first.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            StubControl.DeltaTime = 1f / 60f;
+            flight.Launch(new FlightState(new Vector3d(Start.x, Start.y, Start.z), new Vector3d(20, 5, 0), new Vector3d(3e38, 3e38, 3e38)));
+            Call(flight, "Update");
+            Quaternion r = flight.transform.rotation;
+            Assert.That(float.IsNaN(r.x) || float.IsNaN(r.y) || float.IsNaN(r.z) || float.IsNaN(r.w), Is.False, $"{r.x} {r.y} {r.z} {r.w}");
+        }
+
         [Test]
         public void SpinByEffect_TopspinDips_SidespinCurlsLeft_InUnitysFrame()
         {
@@ -245,6 +312,60 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(flight.Driver, Is.SameAs(driver));
             Assert.That(flight.IsFlying, Is.True);
             Assert.That(flight.FixedStep, Is.EqualTo((double)(1f / 240f)), "the old configuration stays");
+        }
+
+        [Test]
+        public void AFixedStepLongerThanTheFrameClamp_IsRefused()
+        {
+            // Frames are cut to maxFrameDelta, so a longer fixed step is never reached: the ball hung at its start, flying.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            flight.fixedStep = 1f;
+            flight.maxFrameDelta = 0.25f;
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => flight.ApplySettings())!;
+            Assert.That(e.ParamName, Is.EqualTo("fixedStep"));
+            Assert.That(e.Message, Does.Contain("maxFrameDelta"));
+            Assert.That(flight.FixedStep, Is.EqualTo((double)(1f / 240f)), "the old configuration stays");
+        }
+
+        [Test]
+        public void ThePreview_FollowsANewBall_AndRefusesABadDurationOnce()
+        {
+            // A review's probe: following another ball whose arc version matched the last one seen (a new ball per shot,
+            // each at version 1) kept the first ball's line; and maxDuration 0 threw from every LateUpdate.
+            var holder = new GameObject("line");
+            LineRenderer line = holder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            StubControl.DeltaTime = 1f / 60f;
+            for (int shot = 0; shot < 3; shot++)
+            {
+                MagnusBallFlight ball = NewFlight(SurfaceChoice.None);
+                ball.transform.position = new Vector3(0f, 1f, 5f * shot);
+                preview.flight = ball;
+                ball.Launch(new Vector3(20f, 4f, 0f), Vector3.zero);
+                Call(ball, "Update");
+                Call(preview, "LateUpdate");
+                Assert.That(preview.Predictions, Is.EqualTo(shot + 1), $"shot {shot} predicted");
+                Assert.That(line.GetPosition(0).z, Is.EqualTo(5f * shot), "the line starts at this ball");
+            }
+
+            preview.followFlight = false;
+            preview.maxDuration = 0;
+            preview.Show(new FlightState(new Vector3d(0, 1, 0), new Vector3d(20, 5, 0), Vector3d.Zero));
+            int thrown = 0;
+            for (int i = 0; i < 30; i++)
+            {
+                try
+                {
+                    Call(preview, "LateUpdate");
+                }
+                catch (System.Reflection.TargetInvocationException ex) when (ex.InnerException is ArgumentException)
+                {
+                    thrown++;
+                }
+            }
+
+            Assert.That(thrown, Is.EqualTo(1), "refused once for this request, not every frame");
+            Assert.That(line.positionCount, Is.EqualTo(0), "nothing drawn for it");
         }
 
         [Test]

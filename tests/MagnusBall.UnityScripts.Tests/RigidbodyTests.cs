@@ -7,6 +7,7 @@ using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
+using MagnusBall.Presets;
 using MagnusBall.Queries;
 using MagnusBall.Samples.TennisScene;
 using MagnusBall.Stepping;
@@ -73,6 +74,35 @@ namespace MagnusBall.UnityScripts.Tests
             d = aero.Model.Derivative(new FlightState(D(body.position), D(body.linearVelocity), aero.Spin)); // the spin has decayed a step
             Call(aero, "FixedUpdate");
             Assert.That((D(body.StubAcceleration) - d.Acceleration).Length, Is.LessThan(1e-5));
+        }
+
+        [Test]
+        public void BadInspectorSettings_AreRefusedOnce_AtAwakeAndLaunch_NotEveryPhysicsStep()
+        {
+            // A review's probe: an unknown preset made Awake throw, then every FixedUpdate (50 of 50) and every collision.
+            var holder = new GameObject("ball");
+            holder.AddComponent<Rigidbody>();
+            MagnusBallRigidbody aero = holder.AddComponent<MagnusBallRigidbody>();
+            aero.settings.preset = "squash";
+            var awake = Assert.Throws<System.Reflection.TargetInvocationException>(() => Call(aero, "Awake"))!;
+            Assert.That(awake.InnerException, Is.InstanceOf<ArgumentException>());
+            Assert.That(aero.enabled, Is.False, "disabled: Unity calls no FixedUpdate on it");
+            for (int i = 0; i < 50; i++)
+            {
+                Assert.DoesNotThrow(() => Call(aero, "FixedUpdate"));
+            }
+
+            Assert.Throws<ArgumentException>(() => aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero), "a launch says why");
+        }
+
+        [Test]
+        public void Configure_SetsTheRigidbodysMass_AsAwakeDoes()
+        {
+            // Configure after Awake left the inspector ball's mass on the Rigidbody (0.057 kg for a soccer model).
+            (Rigidbody body, MagnusBallRigidbody aero) = NewBall();
+            Assert.That(body.mass, Is.EqualTo((float)SportPresets.Tennis.Ball.Mass));
+            aero.Configure(SportPresets.Soccer.CreateModel(Air.SeaLevel, Gravity.YUp), null);
+            Assert.That(body.mass, Is.EqualTo((float)SportPresets.Soccer.Ball.Mass));
         }
 
         [Test]

@@ -19,6 +19,62 @@ namespace MagnusBall.Tests.Stepping
             // The driver's ground is where the ball's centre touches (here y = 0), so the court is one radius below.
             new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard);
 
+        [Test]
+        public void ABufferOfMaximumEventsPerStep_LosesNoEvent_TheRestOfTheFrameIsDeferred()
+        {
+            // One 20 s frame through a ball bouncing to rest: far more events than any one step makes. With a buffer of
+            // MaximumEventsPerStep the driver stops before a step whose events might not fit, keeps that time
+            // (StepsDeferred), and the caller's Advance(0, ...) takes it: every event, in the order and with the bits of a
+            // driver stepped one fixed step per call. A 16-slot buffer still counts its overflow as lost.
+            var reference = new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard, maxFrameDeltaSeconds: 30);
+            var expected = new List<FlightEvent>();
+            var big = new FlightEvent[reference.MaximumEventsPerStep];
+            for (int i = 0; i < 100_000 && !reference.IsFinished; i++)
+            {
+                AdvanceResult r = reference.Advance(Step, big);
+                Assert.That(r.EventsNotReported, Is.EqualTo(0));
+                for (int k = 0; k < r.EventCount; k++)
+                {
+                    expected.Add(big[k]);
+                }
+            }
+
+            var driver = new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard, maxFrameDeltaSeconds: 30);
+            var seen = new List<FlightEvent>();
+            AdvanceResult result = driver.Advance(20, big);
+            int deferrals = 0;
+            for (int pass = 0; pass < 100_000; pass++)
+            {
+                Assert.That(result.EventsNotReported, Is.EqualTo(0));
+                for (int k = 0; k < result.EventCount; k++)
+                {
+                    seen.Add(big[k]);
+                }
+
+                if (!result.StepsDeferred)
+                {
+                    break;
+                }
+
+                deferrals++;
+                result = driver.Advance(0, big);
+            }
+
+            Assert.That(driver.IsFinished, Is.True, "the ball came to rest within the frame");
+            Assert.That(deferrals, Is.GreaterThan(0), "the frame was deferred");
+            Assert.That(expected.Count, Is.GreaterThan(16));
+            Assert.That(seen.Count, Is.EqualTo(expected.Count));
+            for (int e = 0; e < seen.Count; e++)
+            {
+                Assert.That((seen[e].Kind, seen[e].Time, seen[e].Position), Is.EqualTo((expected[e].Kind, expected[e].Time, expected[e].Position)), $"event {e}");
+            }
+
+            var small = new FixedStepDriver(DriverShots.YUpTennis, RungeKutta4.Instance, Step, DriverShots.Drive, bounce: CrossBounce.Hard, maxFrameDeltaSeconds: 30);
+            AdvanceResult once = small.Advance(20, new FlightEvent[16]);
+            Assert.That(once.StepsDeferred, Is.False, "a buffer shorter than one step's maximum is never deferred");
+            Assert.That(once.EventCount + once.EventsNotReported, Is.EqualTo(expected.Count), "its overflow is counted");
+        }
+
         private static List<FlightEvent> Fly(FixedStepDriver driver, double[] deltas, Action<FixedStepDriver>? perFrame = null)
         {
             var all = new List<FlightEvent>();

@@ -180,6 +180,12 @@ namespace MagnusBall.Flight
             : _segmentCount > 0 ? _segments[_segmentCount - 1] : default;
 
         /// <summary>
+        /// The most events one step can report: every piece between bounces (at most <see cref="MaxPiecesPerStep"/> + 1) with
+        /// each of its events, and the rest. A buffer this long holds any step's <see cref="Events"/>.
+        /// </summary>
+        public int MaximumEventsPerStep => _events.Length;
+
+        /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
         /// step leaves them as they were; a call on a stopped flight (<see cref="StepOutcome.AlreadyStopped"/>) clears them.
         /// </summary>

@@ -11,8 +11,20 @@ namespace MagnusBall.Stepping
         /// <summary>Events written to the caller's buffer, in time order.</summary>
         public readonly int EventCount;
 
-        /// <summary>Events that happened but did not fit in the caller's buffer (they are lost; pass a larger buffer).</summary>
+        /// <summary>
+        /// Events that happened but did not fit in the caller's buffer (they are lost). Never more than 0 with a buffer of at
+        /// least <see cref="FixedStepDriver.MaximumEventsPerStep"/>: the driver then stops stepping before a step whose events
+        /// might not fit (<see cref="StepsDeferred"/>).
+        /// </summary>
         public readonly int EventsNotReported;
+
+        /// <summary>
+        /// True when the call stopped stepping because the caller's buffer (at least
+        /// <see cref="FixedStepDriver.MaximumEventsPerStep"/> long) might not hold the next step's events: the frame time
+        /// not yet stepped stays in the driver. Read the events, then call Advance(0, events) again to take it (or let the
+        /// next frame's call take it). Never true for a smaller buffer, whose overflow is counted in EventsNotReported.
+        /// </summary>
+        public readonly bool StepsDeferred;
 
         /// <summary>
         /// Frame time, s, that was not simulated: the part of a hitch above the clamp, what was left when the
@@ -24,8 +36,9 @@ namespace MagnusBall.Stepping
         /// <summary>True when a fixed step diverged: the driver refused it, kept the last finite state and ended the flight.</summary>
         public readonly bool Diverged;
 
-        internal AdvanceResult(int stepsTaken, int eventCount, int eventsNotReported, double droppedSeconds, bool diverged)
+        internal AdvanceResult(int stepsTaken, int eventCount, int eventsNotReported, double droppedSeconds, bool diverged, bool stepsDeferred = false)
         {
+            StepsDeferred = stepsDeferred;
             Diverged = diverged;
             StepsTaken = stepsTaken;
             EventCount = eventCount;
@@ -35,6 +48,6 @@ namespace MagnusBall.Stepping
 
         /// <inheritdoc />
         public override string ToString() =>
-            $"steps={StepsTaken} events={EventCount} notReported={EventsNotReported} dropped={DroppedSeconds:R} s{(Diverged ? " diverged" : string.Empty)}";
+            $"steps={StepsTaken} events={EventCount} notReported={EventsNotReported} dropped={DroppedSeconds:R} s{(Diverged ? " diverged" : string.Empty)}{(StepsDeferred ? " deferred" : string.Empty)}";
     }
 }

@@ -264,7 +264,9 @@ namespace MagnusBall.Stepping
         /// into <paramref name="events"/>. Allocates nothing.
         /// </summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0 (Unity: Time.deltaTime).</param>
-        /// <param name="events">Where to write the events (may be empty); those that do not fit are counted in
+        /// <param name="events">Where to write the events (may be empty). With at least <see cref="MaximumEventsPerStep"/> slots none is
+        /// ever lost: the call stops before a step whose events might not fit and keeps that time
+        /// (<see cref="AdvanceResult.StepsDeferred"/>; call again with 0 to go on). With fewer, those that do not fit are counted in
         /// <see cref="AdvanceResult.EventsNotReported"/>.</param>
         /// <returns>What the call did.</returns>
         /// <exception cref="ArgumentOutOfRangeException">frameDeltaSeconds is negative or not finite (nothing changes).</exception>
@@ -293,6 +295,9 @@ namespace MagnusBall.Stepping
 
             _accumulator += frameDeltaSeconds;
             int steps = 0, written = 0, lost = 0;
+            int perStep = _stepper.MaximumEventsPerStep;
+            bool deferrable = events.Length >= perStep; // a buffer that holds any one step's events: never lose one
+            bool deferred = false;
             long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount;
             // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
@@ -303,6 +308,14 @@ namespace MagnusBall.Stepping
                     double keep = _accumulator % FixedStep;
                     dropped += _accumulator - keep;
                     _accumulator = keep;
+                    break;
+                }
+
+                if (deferrable && events.Length - written < perStep)
+                {
+                    // The next step's events might not fit: keep its time for the next call (the render state holds at the
+                    // current state meanwhile, Alpha being capped at 1).
+                    deferred = true;
                     break;
                 }
 
@@ -342,7 +355,13 @@ namespace MagnusBall.Stepping
                 }
             }
 
-            return new AdvanceResult(steps, written, lost, dropped, _diverged);
+            return new AdvanceResult(steps, written, lost, dropped, _diverged, deferred);
         }
+
+        /// <summary>
+        /// The most events one fixed step can report (<see cref="FlightStepper.MaximumEventsPerStep"/>): an events buffer this
+        /// long (or longer) never loses one (<see cref="AdvanceResult.StepsDeferred"/>).
+        /// </summary>
+        public int MaximumEventsPerStep => _stepper.MaximumEventsPerStep;
     }
 }

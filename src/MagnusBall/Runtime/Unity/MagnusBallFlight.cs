@@ -33,7 +33,8 @@ namespace MagnusBall.Components
     /// <para>Unity's world is y-up and left-handed; the library runs in it unchanged (see <see cref="UnityFrame"/>),
     /// with gravity <see cref="Gravity.YUp"/>. The ground is the plane y = <see cref="groundHeight"/>; the ball
     /// touches it when its centre is one radius above.</para>
-    /// <para>Events are raised from inside <c>Update</c> (or <c>FixedUpdate</c>), once each, in time order,
+    /// <para>Events are raised from inside <c>Update</c> (or <c>FixedUpdate</c>), once each (every one: the event buffer
+    /// holds any step's, and a frame with more is finished after they are raised), in time order,
     /// with their exact time and state (located inside the step; they may lie up to one fixed step after
     /// what is drawn). Nothing allocates per frame after the launch.</para>
     /// </remarks>
@@ -80,7 +81,7 @@ namespace MagnusBall.Components
         [Tooltip("Turn the transform with the ball's spin.")]
         public bool rotateWithSpin = true;
 
-        private readonly FlightEvent[] _events = new FlightEvent[16];
+        private FlightEvent[] _events = new FlightEvent[16]; // grown at a launch to the driver's MaximumEventsPerStep: no event is lost
         private FlightModel? _model;
         private IIntegrator? _integrator;
         private FlightEventSet? _eventSet;
@@ -203,7 +204,7 @@ namespace MagnusBall.Components
         /// <param name="fixedStepSeconds">The fixed step, s; finite and &gt; 0.</param>
         /// <param name="events">What to scan each step for; its ground is where the ball's centre touches down.</param>
         /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
-        /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0.</param>
+        /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0, and at least the fixed step (frames are cut to it).</param>
         /// <exception cref="ArgumentException">A value is null or out of range (the message names it); nothing changes.</exception>
         public void Configure(
             FlightModel model, IIntegrator integratorToUse, double fixedStepSeconds, FlightEventSet events, IBounceModel? bounce,
@@ -215,7 +216,8 @@ namespace MagnusBall.Components
         /// <summary>Launches the ball from the transform's position.</summary>
         /// <param name="velocity">Launch velocity, m/s, in world coordinates.</param>
         /// <param name="angularVelocity">Spin, rad/s, about world axes by Unity's left-hand rule.</param>
-        /// <exception cref="ArgumentException">A component is not finite; nothing changes.</exception>
+        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or the transform is more than
+        /// <see cref="GroundTolerance"/> below the ground's touchdown plane (groundHeight plus the ball's radius); nothing changes.</exception>
         public void Launch(Vector3 velocity, Vector3 angularVelocity) =>
             Launch(new FlightState(UnityFrame.ToLibrary(transform.position), UnityFrame.ToLibrary(velocity), UnityFrame.ToLibrary(angularVelocity)));
 
@@ -228,8 +230,9 @@ namespace MagnusBall.Components
         /// <param name="topspinRpm">Topspin, rev/min; negative for backspin.</param>
         /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left.</param>
         /// <exception cref="ArgumentException">
-        /// A value is not finite, or there is spin and the velocity is vertical or zero (no spin axis across the
-        /// flight is defined); nothing changes.
+        /// A value is not finite, there is spin and the velocity is vertical or zero (no spin axis across the
+        /// flight is defined), the configuration is out of range, or the transform is more than <see cref="GroundTolerance"/>
+        /// below the ground's touchdown plane; nothing changes.
         /// </exception>
         public void Launch(Vector3 velocity, float topspinRpm, float sidespinRpm)
         {
@@ -241,7 +244,8 @@ namespace MagnusBall.Components
 
         /// <summary>Launches the ball from a state in double precision (its time is the flight's start time).</summary>
         /// <param name="start">Position, m; velocity, m/s; spin, rad/s (left-hand rule); all finite.</param>
-        /// <exception cref="ArgumentException">A component is not finite, or the configuration is out of range; nothing changes.</exception>
+        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or the ball's centre is more than
+        /// <see cref="GroundTolerance"/> below the ground's touchdown plane (within it, it is lifted onto the plane); nothing changes.</exception>
         public void Launch(in FlightState start)
         {
             if (!start.IsFinite)
@@ -250,13 +254,50 @@ namespace MagnusBall.Components
             }
 
             EnsureConfigured();
+            FlightState from = OnOrAboveTheGround(start);
             // Build first, swap after: a bad configuration throws with the old flight intact.
-            var driver = new FixedStepDriver(_model!, _integrator!, _fixedStep, start, _eventSet, _bounce, _maxFrameDelta);
+            var driver = new FixedStepDriver(_model!, _integrator!, _fixedStep, from, _eventSet, _bounce, _maxFrameDelta);
+            if (_events.Length < driver.MaximumEventsPerStep)
+            {
+                _events = new FlightEvent[driver.MaximumEventsPerStep]; // at a launch, never per frame
+            }
+
             _driver = driver;
             _flying = true;
-            _segmentStart = start;
+            _segmentStart = from;
             _segmentVersion++;
-            transform.position = UnityFrame.ToUnity(start.Position);
+            transform.position = UnityFrame.ToUnity(from.Position);
+        }
+
+        /// <summary>How far below the ground's touchdown plane a launch may start and be lifted onto it, m (0.1 mm: a float position meant to be on it).</summary>
+        public const double GroundTolerance = 1e-4;
+
+        // A landing is a crossing of the touchdown plane (groundHeight + radius) from above, so a flight started below it
+        // never lands: it fell for ever. Within GroundTolerance (a transform placed on the plane in floats) the start is
+        // lifted onto the plane; deeper is refused.
+        private FlightState OnOrAboveTheGround(in FlightState start)
+        {
+            if (!(_eventSet?.Ground is Plane ground))
+            {
+                return start;
+            }
+
+            double below = -ground.SignedDistance(start.Position);
+            if (!(below > 0))
+            {
+                return start;
+            }
+
+            if (below > GroundTolerance)
+            {
+                throw new ArgumentException(
+                    FormattableString.Invariant(
+                        $"start: the ball's centre is {below:G6} m below the ground's touchdown plane (groundHeight plus the ball's radius) ")
+                    + FormattableString.Invariant($"and would never land; launch it from on or above that plane (a tolerance of {GroundTolerance} m)."),
+                    "start");
+            }
+
+            return new FlightState(start.Position + ground.Normal * below, start.Velocity, start.AngularVelocity, start.Time);
         }
 
         /// <summary>
@@ -346,7 +387,8 @@ namespace MagnusBall.Components
                 {
                     // Unity rotates by the left-hand rule, the convention the spin is in: the axis goes in unchanged.
                     // NormalizedOrZero, not w / rate: that multiplies by 1/rate, +inf below 5.6e-309 rad/s (a NaN axis).
-                    float degrees = (float)(rate * Time.deltaTime * (180.0 / Math.PI));
+                    // Taken modulo a turn in double: a huge spin's angle does not fit a float (AngleAxis(inf) is a NaN rotation).
+                    float degrees = (float)((rate * Time.deltaTime * (180.0 / Math.PI)) % 360.0);
                     transform.rotation = Quaternion.AngleAxis(degrees, UnityFrame.ToUnity(render.AngularVelocity.NormalizedOrZero())) * transform.rotation;
                 }
             }
@@ -364,12 +406,28 @@ namespace MagnusBall.Components
         {
             FixedStepDriver driver = _driver!;
             AdvanceResult result = driver.Advance(frameDelta, _events);
-            for (int i = 0; i < result.EventCount; i++)
+            // The buffer holds any one step's events, so none is lost: where the next step's might not fit, the driver
+            // defers the rest of the frame, taken here after the events are raised. Bounded: each pass takes at least one
+            // step of the frame's time, and at most MaxStepsPerAdvance passes are made.
+            for (int pass = 0; ; pass++)
             {
-                Raise(_events[i]);
+                for (int i = 0; i < result.EventCount; i++)
+                {
+                    Raise(_events[i]);
+                }
+
+                if (!result.StepsDeferred || pass >= driver.MaxStepsPerAdvance || _driver != driver)
+                {
+                    break;
+                }
+
+                result = driver.Advance(0, _events);
             }
 
-            _flying = !driver.IsFinished;
+            if (_driver == driver)
+            {
+                _flying = !driver.IsFinished; // (a handler that relaunched or cancelled has set it for its own flight)
+            }
         }
 
         // The one place that knows the driver's event type: adapt here when it changes.
@@ -424,6 +482,12 @@ namespace MagnusBall.Components
 
             // The driver checks the numbers (fixed step, clamp, a ground for the bounce) and names them.
             _ = new FixedStepDriver(model, integratorToUse, step, new FlightState(Vector3d.Zero, Vector3d.Zero, Vector3d.Zero), events, bounce, maxFrame);
+            if (!(step <= maxFrame))
+            {
+                // Frames are cut to the clamp, so a longer step is never reached: the ball would hang at its start.
+                throw new ArgumentOutOfRangeException(
+                    "fixedStep", step, FormattableString.Invariant($"fixedStep ({step} s) must be at most the frame-time clamp maxFrameDelta ({maxFrame} s)."));
+            }
             _model = model;
             _integrator = integratorToUse;
             _fixedStep = step;

@@ -66,6 +66,7 @@ namespace MagnusBall.Components
         private IBounceModel? _bounce;
         private Vector3d _spin;
         private Vector3d _velocityBefore;
+        private bool _configurationFailed; // the inspector's settings were refused: no retry (and no exception) every physics step
 
         /// <summary>The ball's spin, rad/s, about world axes (left-hand rule); integrated here, not by PhysX.</summary>
         public Vector3d Spin => _spin;
@@ -80,7 +81,10 @@ namespace MagnusBall.Components
             }
         }
 
-        /// <summary>Uses a model and bounce built in code instead of the inspector's.</summary>
+        /// <summary>
+        /// Uses a model and bounce built in code instead of the inspector's (and, with <see cref="setMass"/>, sets the
+        /// Rigidbody's mass to the model's ball, as Awake does).
+        /// </summary>
         /// <param name="model">The flight model; its gravity is the one the body feels in total.</param>
         /// <param name="bounce">The bounce model for <see cref="SpinAtContact.BounceModel"/>, or null.</param>
         /// <exception cref="ArgumentNullException">model is null.</exception>
@@ -88,6 +92,11 @@ namespace MagnusBall.Components
         {
             _model = model ?? throw new ArgumentNullException(nameof(model));
             _bounce = bounce;
+            _configurationFailed = false;
+            if (setMass)
+            {
+                Body.mass = (float)model.Ball.Mass;
+            }
         }
 
         /// <summary>Sets the spin, rad/s (left-hand rule), for example after a racket hit.</summary>
@@ -106,9 +115,11 @@ namespace MagnusBall.Components
         /// <summary>Sets the Rigidbody's velocity and the spin at once: a launch.</summary>
         /// <param name="velocity">Velocity, m/s.</param>
         /// <param name="angularVelocity">Spin, rad/s (left-hand rule).</param>
-        /// <exception cref="ArgumentException">A component is not finite; nothing changes.</exception>
+        /// <exception cref="ArgumentException">A component is not finite, or the inspector's settings are out of range (the message names
+        /// the setting); nothing changes.</exception>
         public void Launch(Vector3 velocity, Vector3 angularVelocity)
         {
+            EnsureConfigured();
             Vector3d v = UnityFrame.ToLibrary(velocity);
             if (!v.IsFinite)
             {
@@ -154,7 +165,17 @@ namespace MagnusBall.Components
 
         private void Awake()
         {
-            EnsureConfigured();
+            try
+            {
+                EnsureConfigured();
+            }
+            catch (ArgumentException)
+            {
+                // Unity logs the exception once; a disabled component gets no FixedUpdate or collision calls.
+                enabled = false;
+                throw;
+            }
+
             if (setMass)
             {
                 Body.mass = (float)_model!.Ball.Mass;
@@ -163,6 +184,11 @@ namespace MagnusBall.Components
 
         private void FixedUpdate()
         {
+            if (_configurationFailed)
+            {
+                return; // refused once, loudly (Awake); not again every physics step
+            }
+
             EnsureConfigured();
             Rigidbody body = Body;
             Vector3d v = UnityFrame.ToLibrary(GetVelocity(body));
@@ -177,6 +203,11 @@ namespace MagnusBall.Components
         private void OnCollisionEnter(Collision collision)
         {
             if (spinAtContact != SpinAtContact.BounceModel || collision.contactCount == 0)
+            {
+                return;
+            }
+
+            if (_configurationFailed)
             {
                 return;
             }
@@ -210,8 +241,17 @@ namespace MagnusBall.Components
         {
             if (_model == null)
             {
-                _model = settings.CreateModel(Gravity.YUp);
-                _bounce = settings.CreateBounce();
+                try
+                {
+                    FlightModel model = settings.CreateModel(Gravity.YUp);
+                    _bounce = settings.CreateBounce();
+                    _model = model;
+                }
+                catch (ArgumentException)
+                {
+                    _configurationFailed = true;
+                    throw;
+                }
             }
         }
 

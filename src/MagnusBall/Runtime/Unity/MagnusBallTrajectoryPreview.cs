@@ -2,6 +2,7 @@
 using System;
 using MagnusBall.Flight;
 using MagnusBall.Queries;
+using MagnusBall.Stepping;
 using UnityEngine;
 
 namespace MagnusBall.Components
@@ -32,11 +33,14 @@ namespace MagnusBall.Components
         [Tooltip("While the ball flies, show its current arc (from the launch or the latest bounce).")]
         public bool followFlight = true;
 
-        /// <summary>Most points drawn (one per fixed step, plus the landing).</summary>
-        [Tooltip("Most points drawn (one per fixed step).")]
+        /// <summary>
+        /// Most points drawn (one per fixed step, plus the landing), read at Awake: an arc longer than this many fixed steps is
+        /// drawn only to its last point (2048 points are 8.5 s at 1/240 s, 2 s at 1/1000 s).
+        /// </summary>
+        [Tooltip("Most points drawn (one per fixed step), read at Awake; a longer arc is cut short.")]
         public int maxPoints = 2048;
 
-        /// <summary>Longest prediction, s.</summary>
+        /// <summary>Longest prediction, s; finite and &gt; 0 (a prediction with another value throws once, when drawn).</summary>
         [Tooltip("Longest prediction, s.")]
         public float maxDuration = 10f;
 
@@ -49,6 +53,7 @@ namespace MagnusBall.Components
         private FlightState _drawn;
         private bool _hasDrawn;
         private int _followedVersion = -1;
+        private FixedStepDriver? _followedDriver; // with the version: a new launch, or another ball, is a new arc
 
         /// <summary>How many times the path was predicted (a new launch, bounce or request each).</summary>
         public int Predictions { get; private set; }
@@ -102,9 +107,10 @@ namespace MagnusBall.Components
                 return;
             }
 
-            if (followFlight && flight.Driver != null && flight.ArcVersion != _followedVersion)
+            if (followFlight && flight.Driver != null && (flight.ArcVersion != _followedVersion || flight.Driver != _followedDriver))
             {
                 _followedVersion = flight.ArcVersion;
+                _followedDriver = flight.Driver;
                 _hasRequest = false;
                 Draw(flight.ArcStart);
             }
@@ -116,6 +122,12 @@ namespace MagnusBall.Components
 
         private void Draw(in FlightState from)
         {
+            // Marked drawn first: a prediction the settings refuse (maxDuration 0, a ball's bad inspector values) throws once
+            // for this launch or arc, not again every frame.
+            _drawn = from;
+            _hasDrawn = true;
+            _line!.positionCount = 0;
+            PointCount = 0;
             MagnusBallFlight ball = flight!;
             if (_predictor == null || _predictor.Model != ball.Model || _predictor.Integrator != ball.Integrator ||
                 _predictor.Step != ball.FixedStep || _predictor.Events != ball.EventSet)
@@ -133,8 +145,6 @@ namespace MagnusBall.Components
             _line.SetPositions(_points); // Unity uses the first positionCount points
             PointCount = count;
             Predictions++;
-            _drawn = from;
-            _hasDrawn = true;
         }
 
         private static bool Same(in FlightState a, in FlightState b) =>
