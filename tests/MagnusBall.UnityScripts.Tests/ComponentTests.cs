@@ -315,6 +315,30 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void BadInspectorFields_AreRefused_NamingTheField()
+        {
+            // ApplySettings promised "the message names it" but named the library's parameters: "point" for groundHeight
+            // and planePoint alike, "normal", "maxFrameDeltaSeconds", "density" for airDensity, "name" for preset.
+            void Refused(string field, Action<MagnusBallFlight> set)
+            {
+                MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+                set(flight);
+                var e = Assert.Throws(Is.InstanceOf<ArgumentException>(), () => flight.ApplySettings())!;
+                Assert.That(((ArgumentException)e).ParamName, Is.EqualTo(field));
+                Assert.That(e.Message, Does.Contain(field));
+            }
+
+            Refused("groundHeight", f => f.groundHeight = float.NaN);
+            Refused("groundHeight", f => f.groundHeight = float.PositiveInfinity);
+            Refused("maxFrameDelta", f => f.maxFrameDelta = 0f);
+            Refused("planePoint", f => { f.watchPlane = true; f.planePoint = new Vector3(float.NaN, 0f, 0f); });
+            Refused("planeNormal", f => { f.watchPlane = true; f.planeNormal = Vector3.zero; });
+            Refused("airDensity", f => f.settings.airDensity = -1f);
+            Refused("preset", f => f.settings.preset = "squash");
+            Refused("radius", f => { f.settings.customBall = true; f.settings.radius = 0f; });
+        }
+
+        [Test]
         public void AFixedStepLongerThanTheFrameClamp_IsRefused()
         {
             // Frames are cut to maxFrameDelta, so a longer fixed step is never reached: the ball hung at its start, flying.

@@ -97,7 +97,7 @@ namespace MagnusBall.Components
         /// <exception cref="ArgumentException"><see cref="preset"/> is not a known name (the message lists them).</exception>
         public SportPreset Preset()
         {
-            SportPreset chosen = SportPresets.FromName(preset);
+            SportPreset chosen = Field(nameof(preset), () => SportPresets.FromName(preset));
             if (customBall)
             {
                 chosen = chosen.WithBall(new Ball(mass, radius, inertiaFactor));
@@ -114,7 +114,26 @@ namespace MagnusBall.Components
         /// <summary>The flight model in Unity's world: these settings under <paramref name="gravity"/>.</summary>
         /// <param name="gravity">Gravity, m/s^2 (usually <see cref="Gravity.YUp"/>).</param>
         /// <exception cref="ArgumentException">A setting is out of range (the message names it).</exception>
-        public FlightModel CreateModel(Vector3d gravity) => Preset().CreateModel(new Air(airDensity), gravity);
+        public FlightModel CreateModel(Vector3d gravity)
+        {
+            SportPreset chosen = Preset();
+            Air air = Field(nameof(airDensity), () => new Air(airDensity));
+            return chosen.CreateModel(air, gravity);
+        }
+
+        // An inspector field's value through a library constructor: its refusal named by the field, not the constructor's
+        // parameter ("airDensity", not "density"). Configuration time only (the delegate is not per frame).
+        internal static T Field<T>(string field, Func<T> make)
+        {
+            try
+            {
+                return make();
+            }
+            catch (ArgumentException e) when (e.ParamName != field)
+            {
+                throw new ArgumentException($"{field} (the inspector field): {e.Message}", field, e);
+            }
+        }
 
         /// <summary>The bounce model <see cref="surface"/> selects, or null for none.</summary>
         public IBounceModel? CreateBounce()

@@ -184,6 +184,27 @@ namespace MagnusBall.Components
         /// <exception cref="ArgumentException">A field is out of range or the preset unknown (the message names it); nothing changes.</exception>
         public void ApplySettings()
         {
+            RequireField(groundHeight, nameof(groundHeight));
+            RequireField(maxFrameDelta, nameof(maxFrameDelta));
+            if (!(maxFrameDelta > 0))
+            {
+                throw new ArgumentOutOfRangeException(nameof(maxFrameDelta), maxFrameDelta, FormattableString.Invariant($"maxFrameDelta must be > 0 s; got {maxFrameDelta}."));
+            }
+
+            if (watchPlane)
+            {
+                RequireField(planePoint.x, nameof(planePoint));
+                RequireField(planePoint.y, nameof(planePoint));
+                RequireField(planePoint.z, nameof(planePoint));
+                RequireField(planeNormal.x, nameof(planeNormal));
+                RequireField(planeNormal.y, nameof(planeNormal));
+                RequireField(planeNormal.z, nameof(planeNormal));
+                if (planeNormal.x == 0 && planeNormal.y == 0 && planeNormal.z == 0)
+                {
+                    throw new ArgumentException("planeNormal must not be zero (it is the watched plane's normal).", nameof(planeNormal));
+                }
+            }
+
             FlightModel model = settings.CreateModel(Gravity.YUp);
             IBounceModel? bounce = settings.CreateBounce();
             Vector3d up = UnityFrame.Up;
@@ -494,6 +515,14 @@ namespace MagnusBall.Components
             _eventSet = events;
             _bounce = bounce;
             _maxFrameDelta = maxFrame;
+        }
+
+        private static void RequireField(float value, string name)
+        {
+            if (float.IsNaN(value) || float.IsInfinity(value))
+            {
+                throw new ArgumentOutOfRangeException(name, value, FormattableString.Invariant($"{name} must be finite; got {value}."));
+            }
         }
 
         private static void RequireFinite(double value, string name)
