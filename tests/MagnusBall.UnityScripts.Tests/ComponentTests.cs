@@ -372,6 +372,12 @@ namespace MagnusBall.UnityScripts.Tests
                 Assert.That(line.GetPosition(0).z, Is.EqualTo(5f * shot), "the line starts at this ball");
             }
 
+            // Cancelling the followed flight clears its line (it stayed drawn).
+            Assert.That(line.positionCount, Is.GreaterThan(0));
+            preview.flight!.Cancel();
+            Call(preview, "LateUpdate");
+            Assert.That(line.positionCount, Is.EqualTo(0), "a cancelled flight's arc is cleared");
+
             preview.followFlight = false;
             preview.maxDuration = 0;
             preview.Show(new FlightState(new Vector3d(0, 1, 0), new Vector3d(20, 5, 0), Vector3d.Zero));

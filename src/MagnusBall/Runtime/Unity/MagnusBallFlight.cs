@@ -116,8 +116,9 @@ namespace MagnusBall.Components
 
         /// <summary>
         /// True when the driver refused a step that diverged (a plain explicit integrator far beyond its
-        /// stability limit): the flight ended there, at the last good state. Use the stable RK4 integrator
-        /// or a shorter fixed step.
+        /// stability limit), or whose clock could not advance (a start time near 1e20 s, where a fixed step is below the
+        /// time's resolution): the flight ended there, at the last good state. Use the stable RK4 integrator, a shorter
+        /// fixed step, or a start time near 0.
         /// </summary>
         public bool Diverged => _driver != null && _driver.Diverged;
 

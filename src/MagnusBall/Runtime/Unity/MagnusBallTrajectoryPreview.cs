@@ -107,7 +107,13 @@ namespace MagnusBall.Components
                 return;
             }
 
-            if (followFlight && flight.Driver != null && (flight.ArcVersion != _followedVersion || flight.Driver != _followedDriver))
+            if (followFlight && flight.Driver == null && _followedDriver != null)
+            {
+                // The followed flight was cancelled: its arc is not drawn on.
+                _followedDriver = null;
+                Clear();
+            }
+            else if (followFlight && flight.Driver != null && (flight.ArcVersion != _followedVersion || flight.Driver != _followedDriver))
             {
                 _followedVersion = flight.ArcVersion;
                 _followedDriver = flight.Driver;
