@@ -251,6 +251,22 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(flight.Driver!.State.Position.Y, Is.EqualTo(radius), "lifted onto the plane");
             Fly(flight, 1f / 60f);
             Assert.That(flight.Driver.IsFinished, Is.True, "it lands");
+
+            // On a tilted ground (given through Configure) the lift leaves the start on or above the plane, never a
+            // rounding below it, and the flight lands.
+            var up = new Vector3d(0.3, 1, -0.2).NormalizedOrZero();
+            var tilted = new Plane(new Vector3d(1.7, 0.4, -2.3), up);
+            FlightModel model = SportPresets.Tennis.CreateModel(Air.SeaLevel, Gravity.YUp);
+            flight.Configure(model, RungeKutta4.Instance, 1.0 / 240, new FlightEventSet(new Vector3d(0, 1, 0), tilted), null);
+            for (int k = 1; k <= 50; k++)
+            {
+                Vector3d onIt = tilted.Point + new Vector3d(0.37 * k, 0, 0.11 * k) - up * (Vector3d.Dot(new Vector3d(0.37 * k, 0, 0.11 * k), up) + k * 1.7e-6);
+                flight.Launch(new FlightState(onIt, new Vector3d(5, -2, 1), Vector3d.Zero));
+                Assert.That(tilted.SignedDistance(flight.Driver!.State.Position), Is.GreaterThanOrEqualTo(0), $"start {k}");
+            }
+
+            Fly(flight, 1f / 60f);
+            Assert.That(flight.Driver!.IsFinished, Is.True, "it lands on the tilted ground");
         }
 
         [Test]

@@ -407,8 +407,8 @@ namespace MagnusBall.Contact
             ey = contact.NormalRestitutionAt(incomingAngleDegrees);
             double normalChange = (1 + ey) * vn / onePlusKappa; // J: the ball's normal velocity change
             // Friction above 1e290 is taken as 1e290: a larger one would overflow (1 + alpha') mu (alpha' is at most
-            // 0.4 (1 + 1e12) here). Only a friction that large changes (and only at a normal speed under about 1e-290 of
-            // the slip), where before it gave NaN.
+            // 1 + 1e12 here: an inertia factor of at most 1, a mass ratio of at most 1e12). Only a friction that large
+            // changes (and only at a normal speed under about 1e-290 of the slip), where before it gave NaN.
             double mu = Math.Min(contact.Friction, MaximumFriction);
 
             // Normal-force offset: against the rolling direction, capped so it never outruns friction (energy)

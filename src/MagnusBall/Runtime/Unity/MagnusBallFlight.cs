@@ -194,12 +194,8 @@ namespace MagnusBall.Components
 
             if (watchPlane)
             {
-                RequireField(planePoint.x, nameof(planePoint));
-                RequireField(planePoint.y, nameof(planePoint));
-                RequireField(planePoint.z, nameof(planePoint));
-                RequireField(planeNormal.x, nameof(planeNormal));
-                RequireField(planeNormal.y, nameof(planeNormal));
-                RequireField(planeNormal.z, nameof(planeNormal));
+                RequireField(planePoint, nameof(planePoint));
+                RequireField(planeNormal, nameof(planeNormal));
                 if (planeNormal.x == 0 && planeNormal.y == 0 && planeNormal.z == 0)
                 {
                     throw new ArgumentException("planeNormal must not be zero (it is the watched plane's normal).", nameof(planeNormal));
@@ -319,7 +315,17 @@ namespace MagnusBall.Components
                     "start");
             }
 
-            return new FlightState(start.Position + ground.Normal * below, start.Velocity, start.AngularVelocity, start.Time);
+            // Along the normal by the depth; on a tilted plane rounding can leave it a hair below, so it is moved on by that
+            // (at most a few passes: each step is at least the depth left, and a double's spacing grows by powers of two).
+            Vector3d position = start.Position;
+            for (int pass = 0; pass < 8 && below > 0; pass++)
+            {
+                double size = Math.Max(Math.Abs(position.X), Math.Max(Math.Abs(position.Y), Math.Abs(position.Z)));
+                position += ground.Normal * (pass == 0 ? below : below + size * 1e-15);
+                below = -ground.SignedDistance(position);
+            }
+
+            return new FlightState(position, start.Velocity, start.AngularVelocity, start.Time);
         }
 
         /// <summary>
@@ -516,6 +522,15 @@ namespace MagnusBall.Components
             _eventSet = events;
             _bounce = bounce;
             _maxFrameDelta = maxFrame;
+        }
+
+        private static void RequireField(Vector3 value, string name)
+        {
+            if (float.IsNaN(value.x) || float.IsInfinity(value.x) || float.IsNaN(value.y) || float.IsInfinity(value.y) ||
+                float.IsNaN(value.z) || float.IsInfinity(value.z))
+            {
+                throw new ArgumentException(FormattableString.Invariant($"{name} must be finite; got ({value.x}, {value.y}, {value.z})."), name);
+            }
         }
 
         private static void RequireField(float value, string name)
