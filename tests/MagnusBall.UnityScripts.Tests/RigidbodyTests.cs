@@ -93,6 +93,15 @@ namespace MagnusBall.UnityScripts.Tests
             }
 
             Assert.Throws<ArgumentException>(() => aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero), "a launch says why");
+
+            // Mended, a launch configures it and turns it on again: the physics steps act once more.
+            aero.settings.preset = "tennis";
+            aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero);
+            Assert.That(aero.enabled, Is.True);
+            Rigidbody body = holder.GetComponent<Rigidbody>();
+            Call(aero, "FixedUpdate");
+            StubControl.SimulateStep(body, 0.02f);
+            Assert.That(body.linearVelocity.x, Is.LessThan(10f), "the model's drag acts again");
         }
 
         [Test]

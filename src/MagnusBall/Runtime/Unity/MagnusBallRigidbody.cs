@@ -92,7 +92,11 @@ namespace MagnusBall.Components
         {
             _model = model ?? throw new ArgumentNullException(nameof(model));
             _bounce = bounce;
-            _configurationFailed = false;
+            if (_configurationFailed)
+            {
+                _configurationFailed = false;
+                enabled = true; // Awake had disabled it for the inspector's bad settings
+            }
             if (setMass)
             {
                 Body.mass = (float)model.Ball.Mass;
@@ -116,7 +120,8 @@ namespace MagnusBall.Components
         /// <param name="velocity">Velocity, m/s.</param>
         /// <param name="angularVelocity">Spin, rad/s (left-hand rule).</param>
         /// <exception cref="ArgumentException">A component is not finite, or the inspector's settings are out of range (the message names
-        /// the setting); nothing changes.</exception>
+        /// the setting); nothing changes. (Bad settings at Awake disable the component; a launch once they are mended, or
+        /// <see cref="Configure"/>, enables it again.)</exception>
         public void Launch(Vector3 velocity, Vector3 angularVelocity)
         {
             EnsureConfigured();
@@ -246,6 +251,12 @@ namespace MagnusBall.Components
                     FlightModel model = settings.CreateModel(Gravity.YUp);
                     _bounce = settings.CreateBounce();
                     _model = model;
+                    if (_configurationFailed)
+                    {
+                        // Settings mended after a refusal (Awake disabled the component): on again.
+                        _configurationFailed = false;
+                        enabled = true;
+                    }
                 }
                 catch (ArgumentException)
                 {
