@@ -241,7 +241,7 @@ namespace MagnusBall.UnityScripts.Tests
             flight.transform.position = new Vector3(0f, 0f, 0f);
             var e = Assert.Throws<ArgumentException>(() => flight.Launch(new Vector3(20f, 0f, 0f), Vector3.zero))!;
             Assert.That(e.ParamName, Is.EqualTo("start"));
-            Assert.That(e.Message, Does.Contain("below the ground's touchdown plane"));
+            Assert.That(e.Message, Does.Contain("below the ground plane"));
             Assert.That(flight.IsFlying, Is.False, "nothing launched");
 
             double radius = SportPresets.Tennis.Ball.Radius;
@@ -267,6 +267,40 @@ namespace MagnusBall.UnityScripts.Tests
 
             Fly(flight, 1f / 60f);
             Assert.That(flight.Driver!.IsFinished, Is.True, "it lands on the tilted ground");
+        }
+
+        [Test]
+        public void BelowTheGround_RisingLaunchesAndBouncingBalls_AreLeftAsGiven_AndAHandlerMayCancel()
+        {
+            // A second review: the first version refused every start below the plane, but a rising launch without a bounce
+            // model comes down through it and lands, and with a bounce model the core puts the ball onto the court.
+            MagnusBallFlight rising = NewFlight(SurfaceChoice.None);
+            rising.transform.position = Vector3.zero;
+            FlightEvent landed = default;
+            rising.Landed += e => landed = e;
+            rising.Launch(new Vector3(10f, 8f, 0f), Vector3.zero);
+            Fly(rising, 1f / 60f);
+            Assert.That(landed.Kind, Is.EqualTo(FlightEventKinds.Landing), "it lands");
+
+            MagnusBallFlight rolling = NewFlight(SurfaceChoice.Hard);
+            rolling.transform.position = Vector3.zero;
+            int stopped = 0;
+            rolling.Stopped += e => stopped++;
+            rolling.Launch(new Vector3(5f, 0f, 0f), Vector3.zero);
+            Fly(rolling, 1f / 60f);
+            Assert.That(stopped, Is.EqualTo(1), "it rolls to a stop on the court");
+
+            // A Landed handler that cancels: Update read the driver after the step and threw (NullReferenceException).
+            MagnusBallFlight cancelled = NewFlight(SurfaceChoice.None);
+            cancelled.Landed += e => cancelled.Cancel();
+            cancelled.Launch(Velocity, SpinVector);
+            StubControl.DeltaTime = 1f / 60f;
+            for (int frame = 0; frame < 10_000 && cancelled.IsFlying; frame++)
+            {
+                Assert.DoesNotThrow(() => Call(cancelled, "Update"));
+            }
+
+            Assert.That(cancelled.Driver, Is.Null, "cancelled at the landing");
         }
 
         [Test]

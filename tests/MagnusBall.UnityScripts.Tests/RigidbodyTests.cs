@@ -99,6 +99,7 @@ namespace MagnusBall.UnityScripts.Tests
             aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero);
             Assert.That(aero.enabled, Is.True);
             Rigidbody body = holder.GetComponent<Rigidbody>();
+            Assert.That(body.mass, Is.EqualTo((float)SportPresets.Tennis.Ball.Mass), "the mass Awake skipped is set");
             Call(aero, "FixedUpdate");
             StubControl.SimulateStep(body, 0.02f);
             Assert.That(body.linearVelocity.x, Is.LessThan(10f), "the model's drag acts again");

@@ -21,8 +21,10 @@ namespace MagnusBall.Stepping
         /// <summary>
         /// True when the call stopped stepping because the caller's buffer (at least
         /// <see cref="FixedStepDriver.MaximumEventsPerStep"/> long) might not hold the next step's events: the frame time
-        /// not yet stepped stays in the driver. Read the events, then call Advance(0, events) again to take it (or let the
-        /// next frame's call take it). Never true for a smaller buffer, whose overflow is counted in EventsNotReported.
+        /// not yet stepped stays in the driver. Read the events, then call Advance(0, events) again, in the same frame, until this
+        /// is false: left to the next frame's call, the ball is drawn behind a driver given a larger buffer (by up to a tenth of
+        /// a second in a frame with many bounces) until it catches up. Each call counts its own step and work caps. Never true
+        /// for a smaller buffer, whose overflow is counted in EventsNotReported.
         /// </summary>
         public readonly bool StepsDeferred;
 

@@ -184,7 +184,10 @@ namespace MagnusBall.Stepping
         /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
         public FlightState PreviousState => _stepper.PreviousState;
 
-        /// <summary>Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying.</summary>
+        /// <summary>
+        /// Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying, except after a call that deferred steps
+        /// (<see cref="AdvanceResult.StepsDeferred"/>), which leaves the deferred time here until a later call takes it.
+        /// </summary>
         public double Accumulator => _accumulator;
 
         /// <summary>

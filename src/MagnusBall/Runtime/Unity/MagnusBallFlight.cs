@@ -234,8 +234,8 @@ namespace MagnusBall.Components
         /// <summary>Launches the ball from the transform's position.</summary>
         /// <param name="velocity">Launch velocity, m/s, in world coordinates.</param>
         /// <param name="angularVelocity">Spin, rad/s, about world axes by Unity's left-hand rule.</param>
-        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or the transform is more than
-        /// <see cref="GroundTolerance"/> below the ground's touchdown plane (groundHeight plus the ball's radius); nothing changes.</exception>
+        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or, without a bounce model, the
+        /// transform is more than <see cref="GroundTolerance"/> below the ground plane and the launch not rising; nothing changes.</exception>
         public void Launch(Vector3 velocity, Vector3 angularVelocity) =>
             Launch(new FlightState(UnityFrame.ToLibrary(transform.position), UnityFrame.ToLibrary(velocity), UnityFrame.ToLibrary(angularVelocity)));
 
@@ -249,8 +249,8 @@ namespace MagnusBall.Components
         /// <param name="sidespinRpm">Sidespin, rev/min; positive curls to the left.</param>
         /// <exception cref="ArgumentException">
         /// A value is not finite, there is spin and the velocity is vertical or zero (no spin axis across the
-        /// flight is defined), the configuration is out of range, or the transform is more than <see cref="GroundTolerance"/>
-        /// below the ground's touchdown plane; nothing changes.
+        /// flight is defined), the configuration is out of range, or, without a bounce model, the transform is more than
+        /// <see cref="GroundTolerance"/> below the ground plane and the launch not rising; nothing changes.
         /// </exception>
         public void Launch(Vector3 velocity, float topspinRpm, float sidespinRpm)
         {
@@ -262,8 +262,9 @@ namespace MagnusBall.Components
 
         /// <summary>Launches the ball from a state in double precision (its time is the flight's start time).</summary>
         /// <param name="start">Position, m; velocity, m/s; spin, rad/s (left-hand rule); all finite.</param>
-        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or the ball's centre is more than
-        /// <see cref="GroundTolerance"/> below the ground's touchdown plane (within it, it is lifted onto the plane); nothing changes.</exception>
+        /// <exception cref="ArgumentException">A component is not finite, the configuration is out of range, or, without a bounce model, the
+        /// ball's centre is more than <see cref="GroundTolerance"/> below the ground plane and not rising (within it, it is lifted onto the
+        /// plane); nothing changes.</exception>
         public void Launch(in FlightState start)
         {
             if (!start.IsFinite)
@@ -290,28 +291,28 @@ namespace MagnusBall.Components
         /// <summary>How far below the ground's touchdown plane a launch may start and be lifted onto it, m (0.1 mm: a float position meant to be on it).</summary>
         public const double GroundTolerance = 1e-4;
 
-        // A landing is a crossing of the touchdown plane (groundHeight + radius) from above, so a flight started below it
-        // never lands: it fell for ever. Within GroundTolerance (a transform placed on the plane in floats) the start is
-        // lifted onto the plane; deeper is refused.
+        // A landing is a crossing of the ground plane from above, so a flight without a bounce model started below it and
+        // not rising never lands: it fell for ever. Within GroundTolerance (a transform placed on the plane in floats) the
+        // start is lifted onto the plane; deeper is refused. Rising starts and flights with a bounce model are left as given.
         private FlightState OnOrAboveTheGround(in FlightState start)
         {
-            if (!(_eventSet?.Ground is Plane ground))
+            if (!(_eventSet?.Ground is Plane ground) || _bounce != null)
             {
-                return start;
+                return start; // with a bounce model the flight core puts a ball below the court onto it (FlightStepper.Restart)
             }
 
             double below = -ground.SignedDistance(start.Position);
-            if (!(below > 0))
+            if (!(below > 0) || Vector3d.Dot(start.Velocity, ground.Normal) > 0)
             {
-                return start;
+                return start; // on or above the plane, or rising through it: it comes down through the plane later
             }
 
             if (below > GroundTolerance)
             {
                 throw new ArgumentException(
                     FormattableString.Invariant(
-                        $"start: the ball's centre is {below:G6} m below the ground's touchdown plane (groundHeight plus the ball's radius) ")
-                    + FormattableString.Invariant($"and would never land; launch it from on or above that plane (a tolerance of {GroundTolerance} m)."),
+                        $"start: the ball's centre is {below:G6} m below the ground plane (the touchdown plane, groundHeight plus the ball's radius, ")
+                    + FormattableString.Invariant($"unless Configure gave another) and, not rising and without a bounce model, would never land; launch it from on or above that plane (a tolerance of {GroundTolerance} m) or upward."),
                     "start");
             }
 
@@ -404,6 +405,11 @@ namespace MagnusBall.Components
                 _driver.Advance(Time.deltaTime);
             }
 
+            if (_driver == null)
+            {
+                return; // an event handler cancelled the flight
+            }
+
             // Update: the state interpolated between the last two fixed steps. FixedUpdate: the latest fixed
             // state (the ball moves in FixedUpdate-sized hops, as a non-interpolated Rigidbody does).
             FlightState render = stepIn == StepIn.Update ? _driver.RenderState : _driver.State;
@@ -416,7 +422,8 @@ namespace MagnusBall.Components
                     // Unity rotates by the left-hand rule, the convention the spin is in: the axis goes in unchanged.
                     // NormalizedOrZero, not w / rate: that multiplies by 1/rate, +inf below 5.6e-309 rad/s (a NaN axis).
                     // Taken modulo a turn in double: a huge spin's angle does not fit a float (AngleAxis(inf) is a NaN rotation).
-                    float degrees = (float)((rate * Time.deltaTime * (180.0 / Math.PI)) % 360.0);
+                    double turn = rate * Time.deltaTime * (180.0 / Math.PI);
+                    float degrees = double.IsFinite(turn) ? (float)(turn % 360.0) : 0f; // beyond a double: no meaningful angle
                     transform.rotation = Quaternion.AngleAxis(degrees, UnityFrame.ToUnity(render.AngularVelocity.NormalizedOrZero())) * transform.rotation;
                 }
             }
@@ -439,9 +446,10 @@ namespace MagnusBall.Components
             // step of the frame's time, and at most MaxStepsPerAdvance passes are made.
             for (int pass = 0; ; pass++)
             {
-                for (int i = 0; i < result.EventCount; i++)
+                FlightEvent[] events = _events; // a relaunch in a handler may replace the buffer
+                for (int i = 0; i < result.EventCount && _driver == driver; i++)
                 {
-                    Raise(_events[i]);
+                    Raise(events[i]); // not the old flight's later events once a handler relaunched or cancelled
                 }
 
                 if (!result.StepsDeferred || pass >= driver.MaxStepsPerAdvance || _driver != driver)

@@ -176,7 +176,8 @@ namespace MagnusBall.Components
             }
             catch (ArgumentException)
             {
-                // Unity logs the exception once; a disabled component gets no FixedUpdate or collision calls.
+                // Unity logs the exception once; a disabled component gets no FixedUpdate (collision messages still come, and
+                // are skipped below).
                 enabled = false;
                 throw;
             }
@@ -253,9 +254,13 @@ namespace MagnusBall.Components
                     _model = model;
                     if (_configurationFailed)
                     {
-                        // Settings mended after a refusal (Awake disabled the component): on again.
+                        // Settings mended after a refusal (Awake disabled the component, skipping the mass): on again.
                         _configurationFailed = false;
                         enabled = true;
+                        if (setMass)
+                        {
+                            Body.mass = (float)model.Ball.Mass;
+                        }
                     }
                 }
                 catch (ArgumentException)

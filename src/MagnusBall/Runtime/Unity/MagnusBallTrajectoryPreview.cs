@@ -40,7 +40,10 @@ namespace MagnusBall.Components
         [Tooltip("Most points drawn (one per fixed step), read at Awake; a longer arc is cut short.")]
         public int maxPoints = 2048;
 
-        /// <summary>Longest prediction, s; finite and &gt; 0 (a prediction with another value throws once, when drawn).</summary>
+        /// <summary>
+        /// Longest prediction, s; finite and &gt; 0 (a prediction with another value throws once, when drawn; after mending it,
+        /// call <see cref="Show"/> again, or the next launch or bounce redraws).
+        /// </summary>
         [Tooltip("Longest prediction, s.")]
         public float maxDuration = 10f;
 
