@@ -57,7 +57,7 @@ namespace MagnusBall.Components
         [Tooltip("BounceModel: the library's bounce sets velocity and spin after a contact. Keep: PhysX's response, spin unchanged.")]
         public SpinAtContact spinAtContact = SpinAtContact.BounceModel;
 
-        /// <summary>Set the Rigidbody's mass to the ball's at Awake.</summary>
+        /// <summary>Set the Rigidbody's mass to the ball's when the model is taken (at Awake, or by <see cref="Configure"/>).</summary>
         [Tooltip("Set the Rigidbody's mass to the ball's (collisions with other bodies then exchange the right momentum).")]
         public bool setMass = true;
 
@@ -90,17 +90,7 @@ namespace MagnusBall.Components
         /// <exception cref="ArgumentNullException">model is null.</exception>
         public void Configure(FlightModel model, IBounceModel? bounce)
         {
-            _model = model ?? throw new ArgumentNullException(nameof(model));
-            _bounce = bounce;
-            if (_configurationFailed)
-            {
-                _configurationFailed = false;
-                enabled = true; // Awake had disabled it for the inspector's bad settings
-            }
-            if (setMass)
-            {
-                Body.mass = (float)model.Ball.Mass;
-            }
+            Adopt(model ?? throw new ArgumentNullException(nameof(model)), bounce);
         }
 
         /// <summary>Sets the spin, rad/s (left-hand rule), for example after a racket hit.</summary>
@@ -181,11 +171,6 @@ namespace MagnusBall.Components
                 enabled = false;
                 throw;
             }
-
-            if (setMass)
-            {
-                Body.mass = (float)_model!.Ball.Mass;
-            }
         }
 
         private void FixedUpdate()
@@ -250,24 +235,31 @@ namespace MagnusBall.Components
                 try
                 {
                     FlightModel model = settings.CreateModel(Gravity.YUp);
-                    _bounce = settings.CreateBounce();
-                    _model = model;
-                    if (_configurationFailed)
-                    {
-                        // Settings mended after a refusal (Awake disabled the component, skipping the mass): on again.
-                        _configurationFailed = false;
-                        enabled = true;
-                        if (setMass)
-                        {
-                            Body.mass = (float)model.Ball.Mass;
-                        }
-                    }
+                    Adopt(model, settings.CreateBounce());
                 }
                 catch (ArgumentException)
                 {
                     _configurationFailed = true;
                     throw;
                 }
+            }
+        }
+
+        // The one place a model is taken (the inspector's or Configure's): with setMass the Rigidbody gets the ball's mass, and
+        // a component that Awake disabled for refused settings is turned on again.
+        private void Adopt(FlightModel model, IBounceModel? bounce)
+        {
+            _model = model;
+            _bounce = bounce;
+            if (_configurationFailed)
+            {
+                _configurationFailed = false;
+                enabled = true;
+            }
+
+            if (setMass)
+            {
+                Body.mass = (float)model.Ball.Mass;
             }
         }
 
