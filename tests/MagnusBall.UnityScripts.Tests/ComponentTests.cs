@@ -270,6 +270,44 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void LaunchWithAConfiguration_IsAllOrNothing()
+        {
+            // Configure then Launch(start): a refused start left the new configuration in place. The one-call form changes
+            // nothing when either part is refused, and is Configure + Launch when both are accepted.
+            MagnusBallFlight flight = NewFlight(SurfaceChoice.None);
+            flight.Launch(Velocity, SpinVector);
+            FixedStepDriver first = flight.Driver!;
+            FlightModel oldModel = flight.Model;
+            FlightEventSet oldEvents = flight.EventSet;
+            double oldStep = flight.FixedStep;
+
+            FlightModel model = SportPresets.Soccer.CreateModel(Air.SeaLevel, Gravity.YUp);
+            var events = new FlightEventSet(new Vector3d(0, 1, 0), new Plane(new Vector3d(0, 0.11, 0), new Vector3d(0, 1, 0)));
+            var belowTheGround = new FlightState(new Vector3d(0, -1, 0), new Vector3d(20, 0, 0), Vector3d.Zero);
+            var e = Assert.Throws<ArgumentException>(() => flight.Launch(belowTheGround, model, RungeKutta4.Instance, 1.0 / 120, events, null))!;
+            Assert.That(e.ParamName, Is.EqualTo("start"));
+            var notFinite = new FlightState(new Vector3d(0, 1, 0), new Vector3d(double.NaN, 0, 0), Vector3d.Zero);
+            e = Assert.Throws<ArgumentException>(() => flight.Launch(notFinite, model, RungeKutta4.Instance, 1.0 / 120, events, null))!;
+            Assert.That(e.ParamName, Is.EqualTo("start"));
+            var good = new FlightState(new Vector3d(0, 1, 0), new Vector3d(20, 5, 0), Vector3d.Zero);
+            e = Assert.Throws<ArgumentOutOfRangeException>(() => flight.Launch(good, model, RungeKutta4.Instance, 0.5, events, null, 0.25))!;
+            Assert.That(e.ParamName, Is.EqualTo("fixedStep"));
+            Assert.Throws<ArgumentNullException>(() => flight.Launch(good, null!, RungeKutta4.Instance, 1.0 / 120, events, null));
+            Assert.That(flight.Driver, Is.SameAs(first), "the flight goes on");
+            Assert.That(flight.Model, Is.SameAs(oldModel));
+            Assert.That(flight.EventSet, Is.SameAs(oldEvents));
+            Assert.That(flight.FixedStep, Is.EqualTo(oldStep));
+
+            flight.Launch(good, model, RungeKutta4.Instance, 1.0 / 120, events, null);
+            Assert.That(flight.Driver, Is.Not.SameAs(first));
+            Assert.That(flight.Driver!.State, Is.EqualTo(good));
+            Assert.That(flight.Model, Is.SameAs(model));
+            Assert.That(flight.EventSet, Is.SameAs(events));
+            Assert.That(flight.FixedStep, Is.EqualTo(1.0 / 120));
+            Assert.That(flight.BounceModel, Is.Null);
+        }
+
+        [Test]
         public void BelowTheGround_RisingLaunchesAndBouncingBalls_AreLeftAsGiven_AndAHandlerMayCancel()
         {
             // A second review: the first version refused every start below the plane, but a rising launch without a bounce

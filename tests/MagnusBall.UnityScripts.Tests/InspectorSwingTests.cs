@@ -131,6 +131,37 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void ABadLaunchField_ChangesNothing_NotEvenTheSettings()
+        {
+            // A review found Launch configuring the flight and keeping the new settings before the start was refused.
+            TennisBall ball = NewBall();
+            Assert.That(ball.Launch(), Is.True);
+            MagnusBall.FlightState before = ball.Driver.State;
+            SceneSettings settings = ball.Settings;
+            ShotSimulation simulation = ball.Simulation;
+            double step = ball.Flight.FixedStep;
+            SwingLaunch swing = ball.LastSwingLaunch;
+
+            ball.fixedStep = 1f / 120f; // a good new setting, with a bad launch field
+            ball.launchBy = LaunchInput.Launch;
+            ball.spinInput = SpinInput.Components;
+            ball.spinComponents = new Vector3(float.NaN, 0f, 0f); // refused by the flight, after the settings were built
+            var e = Assert.Throws<ArgumentException>(() => ball.Launch())!;
+            Assert.That(e.ParamName, Is.EqualTo("start"));
+            Assert.That(ball.IsFlying, Is.True);
+            Assert.That(ball.Driver.State, Is.EqualTo(before));
+            Assert.That(ball.Flight.FixedStep, Is.EqualTo(step), "the flight's configuration is unchanged");
+            Assert.That(ball.Settings, Is.SameAs(settings));
+            Assert.That(ball.Simulation, Is.SameAs(simulation));
+            Assert.That(ball.LastSwingLaunch.Velocity, Is.EqualTo(swing.Velocity));
+
+            ball.spinComponents = new Vector3(0f, 0f, -200f);
+            Assert.That(ball.Launch(), Is.True);
+            Assert.That(ball.Flight.FixedStep, Is.EqualTo((double)(1f / 120f)), "a good launch takes the new settings");
+            Assert.That(ball.Settings, Is.Not.SameAs(settings));
+        }
+
+        [Test]
         public void TheInspectorsRanges_AreTheSwingsRanges()
         {
             // Every [Range] on a swing field is inside what RacketSwing accepts (so the inspector's sliders cannot make a

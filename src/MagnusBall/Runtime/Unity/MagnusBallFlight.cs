@@ -267,15 +267,58 @@ namespace MagnusBall.Components
         /// plane); nothing changes.</exception>
         public void Launch(in FlightState start)
         {
+            RequireFiniteStart(start);
+            EnsureConfigured();
+            // Build first, swap after: a refused start throws with the old flight intact.
+            FixedStepDriver driver = Build(start, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta, out FlightState from);
+            StartFlight(driver, from);
+        }
+
+        /// <summary>
+        /// Configures and launches in one call, all or nothing: <see cref="Configure"/> with these values, then
+        /// <see cref="Launch(in FlightState)"/>, except that when either refuses, the configuration and the current flight are
+        /// both as they were (with the two calls, a refused start would leave the new configuration in place). For a
+        /// scene that builds its settings anew at every launch.
+        /// </summary>
+        /// <param name="start">Position, m; velocity, m/s; spin, rad/s (left-hand rule); all finite.</param>
+        /// <param name="model">The flight model (Unity's world: gravity along -y for a y-up scene).</param>
+        /// <param name="integratorToUse">The integrator.</param>
+        /// <param name="fixedStepSeconds">The fixed step, s; finite and &gt; 0.</param>
+        /// <param name="events">What to scan each step for; its ground is where the ball's centre touches down.</param>
+        /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
+        /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0, and at least the fixed step.</param>
+        /// <exception cref="ArgumentException">A value is null, not finite or out of range, or the start is refused as
+        /// <see cref="Launch(in FlightState)"/> refuses it (the message names which); nothing changes.</exception>
+        public void Launch(
+            in FlightState start, FlightModel model, IIntegrator integratorToUse, double fixedStepSeconds, FlightEventSet events,
+            IBounceModel? bounce, double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds)
+        {
+            RequireFiniteStart(start);
+            CheckConfiguration(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, out FlightState from);
+            Assign(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            StartFlight(driver, from);
+        }
+
+        private static void RequireFiniteStart(in FlightState start)
+        {
             if (!start.IsFinite)
             {
                 throw new ArgumentException($"start must have finite position, velocity, spin and time; got {start}.", nameof(start));
             }
+        }
 
-            EnsureConfigured();
-            FlightState from = OnOrAboveTheGround(start);
-            // Build first, swap after: a bad configuration throws with the old flight intact.
-            var driver = new FixedStepDriver(_model!, _integrator!, _fixedStep, from, _eventSet, _bounce, _maxFrameDelta);
+        // The driver for a start under a configuration; refuses (throws) before anything is changed.
+        private static FixedStepDriver Build(
+            in FlightState start, FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame,
+            out FlightState from)
+        {
+            from = OnOrAboveTheGround(start, events, bounce);
+            return new FixedStepDriver(model, integratorToUse, step, from, events, bounce, maxFrame);
+        }
+
+        private void StartFlight(FixedStepDriver driver, in FlightState from)
+        {
             if (_events.Length < driver.MaximumEventsPerStep)
             {
                 _events = new FlightEvent[driver.MaximumEventsPerStep]; // at a launch, never per frame
@@ -294,9 +337,9 @@ namespace MagnusBall.Components
         // A landing is a crossing of the ground plane from above, so a flight without a bounce model started below it and
         // not rising never lands: it fell for ever. Within GroundTolerance (a transform placed on the plane in floats) the
         // start is lifted onto the plane; deeper is refused. Rising starts and flights with a bounce model are left as given.
-        private FlightState OnOrAboveTheGround(in FlightState start)
+        private static FlightState OnOrAboveTheGround(in FlightState start, FlightEventSet events, IBounceModel? bounce)
         {
-            if (!(_eventSet?.Ground is Plane ground) || _bounce != null)
+            if (!(events.Ground is Plane ground) || bounce != null)
             {
                 return start; // with a bounce model the flight core puts a ball below the court onto it (FlightStepper.Restart)
             }
@@ -501,6 +544,12 @@ namespace MagnusBall.Components
 
         private void Set(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
         {
+            CheckConfiguration(model, integratorToUse, step, events, bounce, maxFrame);
+            Assign(model, integratorToUse, step, events, bounce, maxFrame);
+        }
+
+        private static void CheckConfiguration(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        {
             if (model == null)
             {
                 throw new ArgumentNullException(nameof(model));
@@ -524,6 +573,10 @@ namespace MagnusBall.Components
                 throw new ArgumentOutOfRangeException(
                     "fixedStep", step, FormattableString.Invariant($"fixedStep ({step} s) must be at most the frame-time clamp maxFrameDelta ({maxFrame} s)."));
             }
+        }
+
+        private void Assign(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        {
             _model = model;
             _integrator = integratorToUse;
             _fixedStep = step;

@@ -250,13 +250,15 @@ namespace MagnusBall.Samples.TennisScene.Scripts
                 start = LaunchState();
             }
 
-            _settings = settings;
-            _simulation = new ShotSimulation(settings);
-            LastSwingLaunch = swingLaunch;
+            // Configure and launch in one call, all or nothing: a refused start (a launch field not finite) leaves the
+            // flight, its configuration and this component's settings as they were.
+            var simulation = new ShotSimulation(settings);
             MagnusBallFlight flight = Flight;
+            flight.Launch(start, settings.Model, settings.Integrator, settings.FixedStep, simulation.Events, settings.Bounce, maxFrameDelta);
             flight.stepIn = stepInFixedUpdate ? StepIn.FixedUpdate : StepIn.Update;
-            flight.Configure(settings.Model, settings.Integrator, settings.FixedStep, _simulation.Events, settings.Bounce, maxFrameDelta);
-            flight.Launch(start);
+            _settings = settings;
+            _simulation = simulation;
+            LastSwingLaunch = swingLaunch;
             return true;
         }
 
