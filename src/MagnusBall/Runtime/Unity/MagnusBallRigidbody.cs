@@ -144,6 +144,25 @@ namespace MagnusBall.Components
             return d.Acceleration - engineGravity;
         }
 
+        // PhysX adds a dt to the velocity (semi-implicit Euler). Where the aerodynamic part would more than stop the ball in
+        // the air within one step (|a_aero| dt > |v - wind|: from 2,000-3,000 m/s for a tennis ball at 50 Hz, far beyond any
+        // flight speed), that step overshoots, reversing the ball faster each step, and from about 1e19 m/s the acceleration
+        // leaves a float's range (AddForce got infinity, PhysX then NaN). There the aerodynamic part is scaled to stop the
+        // ball in the air in the step, and to at most 1e38 m/s^2 (a float reaches 3.4e38); below, it is passed as it is.
+        private static Vector3d WithinOneStep(FlightModel model, Vector3d position, Vector3d velocity, Vector3d added, Vector3d engineGravity, double dt)
+        {
+            Vector3d aero = added + engineGravity - model.Gravity;
+            double airSpeed = (velocity - model.Air.WindAt(position, model.Up)).Length;
+            double aeroLength = aero.Length;
+            if (!(aeroLength * dt > airSpeed))
+            {
+                return added;
+            }
+
+            double limit = Math.Min(airSpeed / dt, 1e38);
+            return aero * (limit / aeroLength) + (model.Gravity - engineGravity);
+        }
+
         // Unity's own null test (UnityEngine.Object's ==), not ??=, which sees a destroyed component as alive.
         private Rigidbody Body
         {
@@ -184,10 +203,19 @@ namespace MagnusBall.Components
             Rigidbody body = Body;
             Vector3d v = UnityFrame.ToLibrary(GetVelocity(body));
             Vector3d g = body.useGravity ? UnityFrame.ToLibrary(Physics.gravity) : Vector3d.Zero;
-            Vector3d a = AddedAcceleration(_model!, UnityFrame.ToLibrary(body.position), v, _spin, g, out Vector3d spinRate);
-            body.AddForce(UnityFrame.ToUnity(a), ForceMode.Acceleration);
-            // The spin steps with the velocity, by the same semi-implicit Euler step PhysX takes.
-            _spin += spinRate * Time.fixedDeltaTime;
+            Vector3d position = UnityFrame.ToLibrary(body.position);
+            Vector3d a = AddedAcceleration(_model!, position, v, _spin, g, out Vector3d spinRate);
+            double dt = Time.fixedDeltaTime;
+            body.AddForce(UnityFrame.ToUnity(WithinOneStep(_model!, position, v, a, g, dt)), ForceMode.Acceleration);
+            // The spin steps with the velocity, by the same semi-implicit Euler step PhysX takes (a decay that would more
+            // than stop the spin in one step, at absurd speeds, stops it instead of reversing it).
+            double spinRateLength = spinRate.Length, spinLength = _spin.Length;
+            if (spinRateLength * dt > spinLength && Vector3d.Dot(spinRate, _spin) < 0)
+            {
+                spinRate *= spinLength / (spinRateLength * dt);
+            }
+
+            _spin += spinRate * dt;
             _velocityBefore = v;
         }
 
