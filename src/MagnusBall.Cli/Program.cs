@@ -106,9 +106,16 @@ namespace MagnusBall.Cli
             string? svg = null;
             var views = TrajectorySvg.SvgViews.Both;
             bool viewGiven = false;
+            var seen = new HashSet<string>(StringComparer.Ordinal);
             for (int i = 1; i < args.Length; i++)
             {
                 string a = args[i];
+                if (a.StartsWith("--", StringComparison.Ordinal) && !seen.Add(a))
+                {
+                    // As a repeated JSON field is an error: which one was meant is not for the tool to guess.
+                    throw new UsageError($"{a} is given twice; give each option once");
+                }
+
                 switch (a)
                 {
                     case "--csv":

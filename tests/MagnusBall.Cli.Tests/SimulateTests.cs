@@ -360,6 +360,19 @@ namespace MagnusBall.Cli.Tests
         }
 
         [Test]
+        public void AnOptionGivenTwice_IsAUsageError()
+        {
+            // The last one won silently (a new user's report), where a repeated JSON field is an error.
+            foreach (string[] options in new[] { new[] { "--samples", "5", "--samples", "10" }, new[] { "--csv", "--csv" } })
+            {
+                CliRun run = CliRun.Simulate(CliRun.DriveJson, options);
+                Assert.That(run.ExitCode, Is.EqualTo(2), string.Join(" ", options));
+                Assert.That(run.Stderr, Does.Contain(options[0] + " is given twice"));
+                Assert.That(run.Stdout, Is.Empty);
+            }
+        }
+
+        [Test]
         public void Svg_ThatCannotBeWritten_SaysItIsTheSvgFile()
         {
             string path = Path.Combine(Path.GetTempPath(), $"magnusball-missing-{Guid.NewGuid():N}", "x.svg");

@@ -154,7 +154,7 @@ namespace MagnusBall.UnityScripts.Tests
             // at a point in the deuce box; the table prints the landing to the centimetre.
             (int code, string output, string error) = Run("--shot", "kick serve", "--aim", "5.5,3", "--no-svg");
             Assert.That(code, Is.EqualTo(0), error);
-            string row = output.Split('\n').Single(r => r.StartsWith("custom shot", StringComparison.Ordinal));
+            string row = output.Split('\n').Single(r => r.StartsWith("kick serve* ", StringComparison.Ordinal)); // it named itself "custom shot"
             Assert.That(row, Does.Contain("  5.50,  3.00 in"), row);
         }
 

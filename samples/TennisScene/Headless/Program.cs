@@ -274,7 +274,8 @@ exit codes: 0 ok, 2 bad options";
                 }
             }
 
-            string label = reshaped ? "custom shot" : basis.Name;
+            // A standard shot the options change keeps its name, marked with a star; without --shot it is a custom shot.
+            string label = !reshaped ? basis.Name : values.ContainsKey("--shot") ? basis.Name + "*" : "custom shot";
             var shot = new TennisShot(label, new Vector3d(x, height, z), speed, elevation, azimuth, topspin, sidespin, target);
             if (values.TryGetValue("--aim", out string? aim))
             {

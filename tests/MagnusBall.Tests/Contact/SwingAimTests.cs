@@ -261,6 +261,9 @@ namespace MagnusBall.Tests.Contact
             SwingAim golf = Golf.Aim, baseball = Baseball.Aim, tennis = Tennis.Aim;
             Check("solver", () => new SwingAim(null!, Ball.Tennis));
             Check("ball", () => new SwingAim(golf.Solver, null!));
+            Check("ball", () => new SwingAim(Soccer.Aim.Solver, Ball.Tennis)); // a tennis ball hit, flown as a soccer ball
+            Check("solver", () => new SwingAim(null!));
+            Assert.That(new SwingAim(Soccer.Aim.Solver).Ball, Is.SameAs(Soccer.Aim.Solver.Model.Ball), "the one-argument form hits the model's ball");
             Check("swing", () => golf.ClubFaceToReach(default, ZUp, p, t));
             Check("swing", () => baseball.BatPathToReach(default, ZUp, p, new Vector3d(-40, 0, 0), Vector3d.Zero, t));
             Check("kick", () => Soccer.Aim.KickToReach(default, UnityYUp, p, t));

@@ -87,14 +87,34 @@ namespace MagnusBall.Contact.Swings
         private const double DifferenceDegrees = 1e-4;
         private const int MaximumHalvings = 12;
 
-        /// <summary>Creates the inverse on an aim solver.</summary>
+        /// <summary>Creates the inverse on an aim solver; the swings hit the ball its model flies.</summary>
         /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
-        /// <param name="ball">The ball the swings hit; not null (its mass and radius enter the impact).</param>
+        /// <exception cref="ArgumentNullException"><paramref name="solver"/> is null.</exception>
+        public SwingAim(AimSolver solver)
+        {
+            Solver = Require.NotNull(solver, nameof(solver));
+            Ball = solver.Model.Ball;
+        }
+
+        /// <summary>Creates the inverse on an aim solver, naming the ball the swings hit (it must be the one the solver's model flies).</summary>
+        /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
+        /// <param name="ball">The ball the swings hit; not null, with the mass, radius and inertia factor of the solver's model's ball
+        /// (the impact and the trial flights are of one ball).</param>
         /// <exception cref="ArgumentNullException">An argument is null.</exception>
+        /// <exception cref="ArgumentException"><paramref name="ball"/> is not the model's ball (a tennis ball hit and flown with a soccer model's aerodynamics).</exception>
         public SwingAim(AimSolver solver, Ball ball)
         {
             Solver = Require.NotNull(solver, nameof(solver));
             Ball = Require.NotNull(ball, nameof(ball));
+            Ball flown = solver.Model.Ball;
+            if (ball.Mass != flown.Mass || ball.Radius != flown.Radius || ball.InertiaFactor != flown.InertiaFactor)
+            {
+                throw new ArgumentException(
+                    FormattableString.Invariant(
+                        $"ball ({ball.Mass} kg, radius {ball.Radius} m, inertia factor {ball.InertiaFactor}) must be the ball the aim solver's model flies ") +
+                    FormattableString.Invariant($"({flown.Mass} kg, radius {flown.Radius} m, inertia factor {flown.InertiaFactor}): the swing hits the ball its trials fly."),
+                    nameof(ball));
+            }
         }
 
         /// <summary>The aim solver.</summary>

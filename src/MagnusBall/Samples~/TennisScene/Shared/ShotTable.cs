@@ -61,6 +61,7 @@ namespace MagnusBall.Samples.TennisScene
 
         /// <summary>What the columns mean, for a legend under the table.</summary>
         public const string Legend =
+            "shot: a name with * is a standard shot changed by the shot options.\n" +
             "v, elev, azim: launch speed and angles (azimuth + toward the hitter's left); top, side: launch spin (top < 0: backspin; side > 0 curls left).\n" +
             "net: bottom of the ball above the net cord; landing: first contact point (x from the net, z + to the hitter's left); in?: in the target\n" +
             "area (service box for serves), NET if it did not clear; tof: time to the first bounce; apex: highest centre height; v_in, a_in: speed and\n" +
