@@ -15,7 +15,12 @@ namespace MagnusBall
         /// <summary>Density of dry air at 15 degC and 101325 Pa (ISA sea level), 1.225 kg/m^3.</summary>
         public const double SeaLevelDensity = 1.225;
 
-        /// <summary>Dynamic viscosity of air at 15 degC, 1.81e-5 Pa s (used for Reynolds numbers).</summary>
+        /// <summary>
+        /// The default dynamic viscosity, 1.81e-5 Pa s (used for Reynolds numbers): air near 20 degC (Sutherland's law gives
+        /// 1.8134e-5 there), not the ISA's 15 degC value 1.7894e-5, which <see cref="AtAltitude"/> and <see cref="FromWeather"/>
+        /// compute. Kept as the default because the presets' Reynolds-dependent laws were checked and calibrated with it; with
+        /// it a Reynolds number is 1.2 % below the ISA's at 15 degC.
+        /// </summary>
         public const double SeaLevelDynamicViscosity = 1.81e-5;
 
         /// <summary>
@@ -56,7 +61,7 @@ namespace MagnusBall
         /// <summary>Dynamic viscosity, Pa s.</summary>
         public double DynamicViscosity { get; }
 
-        /// <summary>Still dry air at ISA sea level (1.225 kg/m^3).</summary>
+        /// <summary>Still dry air at ISA sea level density (1.225 kg/m^3), with the default viscosity <see cref="SeaLevelDynamicViscosity"/> (near 20 degC; <c>AtAltitude(0)</c> has the ISA's).</summary>
         public static Air SeaLevel { get; } = new Air(SeaLevelDensity);
 
         /// <summary>No air at all: density 0, so no drag and no lift whatever the models say.</summary>

@@ -16,8 +16,9 @@ namespace MagnusBall
     /// e_s = 610.78 exp(17.27 T / (T + 237.3)) Pa with T in degC (within about 0.1 % of the Goff-Gratch
     /// values over water between 0 and 35 degC; over water also below 0 degC).</para>
     /// <para>Standard atmosphere: ISO 2533:1975 (ICAO/ISA): sea level 288.15 K and 101325 Pa, lapse rate
-    /// 6.5 K/km up to 11 km, isothermal 216.65 K from 11 to 20 km. Altitudes are geopotential; the difference
-    /// from geometric altitude is below 0.1 % up to 20 km.</para>
+    /// 6.5 K/km up to 11 km, isothermal 216.65 K from 11 to 20 km. Altitudes are geopotential; geometric altitude z
+    /// is higher by the fraction z / (r_earth + z): below 0.04 % at sports altitudes (up to 2.4 km), 0.1 % at 6.4 km and
+    /// 0.31 % at 20 km (the density at 15 km then differs from a geometric-altitude table by about 0.6 %).</para>
     /// <para>Viscosity: Sutherland's law, mu = 1.458e-6 T^1.5 / (T + 110.4) Pa s (the ISA's own formula),
     /// 1.789e-5 Pa s at 15 degC.</para>
     /// </remarks>
@@ -56,10 +57,10 @@ namespace MagnusBall
         /// <summary>Highest temperature accepted, 60 degC.</summary>
         public const double MaximumTemperatureCelsius = 60.0;
 
-        // g0 M / (R* L) for the ISA troposphere: 9.80665 * 0.0289644 / (8.3144598 * 0.0065).
+        // g0 M / (R* L) for the ISA troposphere: 9.80665 * 0.0289644 / (8.31432 * 0.0065), with the ISA's R* = 8.31432.
         private const double PressureExponent = 5.255877;
 
-        // g0 / (R_d) with the ISA's own gas constant, for the isothermal layer.
+        // g0 / R_d for the isothermal layer (R_d = 287.058, within 2e-5 of the ISA's 287.05287).
         private const double IsothermalScale = Gravity.Standard / DryAirGasConstant;
 
         /// <summary>

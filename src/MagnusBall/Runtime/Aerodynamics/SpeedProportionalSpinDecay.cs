@@ -8,10 +8,12 @@ namespace MagnusBall.Aerodynamics
     /// </summary>
     /// <remarks>
     /// <para>This is the form a friction torque proportional to the dynamic pressure and to the surface speed
-    /// r|w| gives: Nathan (2008, "The effect of spin on the flight of a baseball", Am. J. Phys. 76:119) writes
-    /// I dw/dt = -1/2 k R rho A C_L s^2 with C_L ~ S, i.e. dw/dt = -0.020 k s w with s in mph; with his k = 0.1
-    /// that is a time constant of 5 s at 100 mph, k = 1/(5 s x 44.704 m/s) = 0.004474 per metre
-    /// (<see cref="BaseballNathan"/>). Tennis: Cross &amp; Lindsey (2014) measured about 2 % of the spin lost
+    /// r|w| gives: Nathan (2008, "The Effect of Spin-Down on the Flight of a Baseball", an unpublished note of July 14,
+    /// 2008, not his Am. J. Phys. 76:119 paper) writes I dw/dt = -1/2 k R rho A C_L s^2 with C_L ~ S, i.e.
+    /// dw/dt = -0.020 k s w with s in mph; "as a numerical example", k = 0.1 gives a time constant of 5 s at 100 mph,
+    /// k = 1/(5 s x 44.704 m/s) = 0.004474 per metre (<see cref="BaseballNathan"/>). That k is an illustration, not a
+    /// measurement: Nathan's trajectory calculator takes tau with the same 1/v scaling as an input (30 s at 100 mph in
+    /// one sheet of a public copy, 10,000 s, no decay, in another), and no measured baseball spin decay was found. Tennis: Cross &amp; Lindsey (2014) measured about 2 % of the spin lost
     /// over 6.4 m of flight, k = -ln(0.98)/6.4 m = 0.003157 per metre (<see cref="TennisCrossLindsey"/>).
     /// See docs/references.md section 3.</para>
     /// </remarks>
@@ -50,7 +52,7 @@ namespace MagnusBall.Aerodynamics
         public static SpeedProportionalSpinDecay TennisCrossLindsey { get; } = FromLossOverDistance(0.02, 6.4);
 
         /// <summary>
-        /// Baseball, Nathan (2008): time constant 5 s at 100 mph (44.704 m/s), k = 0.004474 per metre.
+        /// Baseball, Nathan (2008 note): time constant 5 s at 100 mph (44.704 m/s), k = 0.004474 per metre (his illustration, not a measurement).
         /// </summary>
         public static SpeedProportionalSpinDecay BaseballNathan { get; } = new SpeedProportionalSpinDecay(1.0 / (5.0 * 44.704));
 

@@ -24,7 +24,9 @@ namespace MagnusBall.Flight
         /// <param name="bounce">The bounce law (for example <see cref="CrossBounce.Hard"/>).</param>
         /// <param name="plane">The surface; the ball bounces when its surface (its centre one radius above the plane) touches it.</param>
         /// <param name="restNormalSpeed">Outgoing normal speed below which the ball rolls, m/s; finite, &gt;= 0.</param>
-        /// <param name="rollingResistance">Rolling-resistance coefficient c_rr; finite, &gt;= 0.</param>
+        /// <param name="rollingResistance">Rolling-resistance coefficient c_rr, the deceleration over the normal gravity (a = c_rr g_n);
+        /// finite, &gt;= 0. A coefficient defined by a resisting force whose work is the rolling ball's lost kinetic energy
+        /// decelerates by c_rr g_n / (1 + alpha): divide it by 1 + alpha (the ball's inertia factor plus one) first.</param>
         /// <exception cref="ArgumentException">bounce is null, the plane's normal is zero or not finite, or a number is out of range.</exception>
         public GroundContact(
             IBounceModel bounce, Plane plane, double restNormalSpeed = DefaultRestNormalSpeed, double rollingResistance = DefaultRollingResistance)
@@ -46,7 +48,7 @@ namespace MagnusBall.Flight
         /// <summary>Outgoing normal speed below which the ball rolls, m/s.</summary>
         public double RestNormalSpeed { get; }
 
-        /// <summary>Rolling-resistance coefficient c_rr.</summary>
+        /// <summary>Rolling-resistance coefficient c_rr: the rolling ball decelerates at c_rr times the gravity along the normal.</summary>
         public double RollingResistance { get; }
     }
 }

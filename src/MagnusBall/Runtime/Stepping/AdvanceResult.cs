@@ -35,7 +35,10 @@ namespace MagnusBall.Stepping
         /// </summary>
         public readonly double DroppedSeconds;
 
-        /// <summary>True when a fixed step diverged: the driver refused it, kept the last finite state and ended the flight.</summary>
+        /// <summary>
+        /// True when a fixed step was refused, its state not finite (diverged) or its clock unable to advance (a start time
+        /// near 1e20 s): the driver kept the last finite state and ended the flight (<see cref="FixedStepDriver.Diverged"/>).
+        /// </summary>
         public readonly bool Diverged;
 
         internal AdvanceResult(int stepsTaken, int eventCount, int eventsNotReported, double droppedSeconds, bool diverged, bool stepsDeferred = false)

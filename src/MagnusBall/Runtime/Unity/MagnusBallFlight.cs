@@ -115,8 +115,8 @@ namespace MagnusBall.Components
         public bool IsFlying => _flying;
 
         /// <summary>
-        /// True when the driver refused a step that diverged (a plain explicit integrator far beyond its
-        /// stability limit), or whose clock could not advance (a start time near 1e20 s, where a fixed step is below the
+        /// True when the driver refused a step whose state was not finite (a plain explicit integrator far beyond its
+        /// stability limit, once its growth overflows; growth that stays finite is not detected), or whose clock could not advance (a start time near 1e20 s, where a fixed step is below the
         /// time's resolution): the flight ended there, at the last good state. Use the stable RK4 integrator, a shorter
         /// fixed step, or a start time near 0.
         /// </summary>
