@@ -280,11 +280,14 @@ namespace MagnusBall.UnityScripts.Tests
             FlightModel oldModel = flight.Model;
             FlightEventSet oldEvents = flight.EventSet;
             double oldStep = flight.FixedStep;
+            IIntegrator oldIntegrator = flight.Integrator;
+            IBounceModel? oldBounce = flight.BounceModel;
+            double oldClamp = first.MaxFrameDeltaSeconds;
 
             FlightModel model = SportPresets.Soccer.CreateModel(Air.SeaLevel, Gravity.YUp);
             var events = new FlightEventSet(new Vector3d(0, 1, 0), new Plane(new Vector3d(0, 0.11, 0), new Vector3d(0, 1, 0)));
             var belowTheGround = new FlightState(new Vector3d(0, -1, 0), new Vector3d(20, 0, 0), Vector3d.Zero);
-            var e = Assert.Throws<ArgumentException>(() => flight.Launch(belowTheGround, model, RungeKutta4.Instance, 1.0 / 120, events, null))!;
+            var e = Assert.Throws<ArgumentException>(() => flight.Launch(belowTheGround, model, SemiImplicitEuler.Instance, 1.0 / 120, events, null, 0.1))!;
             Assert.That(e.ParamName, Is.EqualTo("start"));
             var notFinite = new FlightState(new Vector3d(0, 1, 0), new Vector3d(double.NaN, 0, 0), Vector3d.Zero);
             e = Assert.Throws<ArgumentException>(() => flight.Launch(notFinite, model, RungeKutta4.Instance, 1.0 / 120, events, null))!;
@@ -297,6 +300,11 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(flight.Model, Is.SameAs(oldModel));
             Assert.That(flight.EventSet, Is.SameAs(oldEvents));
             Assert.That(flight.FixedStep, Is.EqualTo(oldStep));
+            Assert.That(flight.Integrator, Is.SameAs(oldIntegrator));
+            Assert.That(flight.BounceModel, Is.SameAs(oldBounce));
+            flight.Launch(Velocity, SpinVector); // a relaunch takes the configuration in place: the old frame clamp
+            Assert.That(flight.Driver!.MaxFrameDeltaSeconds, Is.EqualTo(oldClamp));
+            first = flight.Driver;
 
             flight.Launch(good, model, RungeKutta4.Instance, 1.0 / 120, events, null);
             Assert.That(flight.Driver, Is.Not.SameAs(first));
@@ -325,6 +333,11 @@ namespace MagnusBall.UnityScripts.Tests
             int stopped = 0;
             rolling.Stopped += e => stopped++;
             rolling.Launch(new Vector3(5f, 0f, 0f), Vector3.zero);
+            // The core put the ball onto the court, rolling; the arc (the preview's start) and the transform start there too,
+            // not at the start given one radius below (a review found them left there).
+            Assert.That(rolling.Driver!.State.Position.Y, Is.GreaterThan(0), "moved onto the court");
+            Assert.That(rolling.ArcStart, Is.EqualTo(rolling.Driver.State));
+            Assert.That(rolling.transform.position.y, Is.EqualTo((float)rolling.Driver.State.Position.Y));
             Fly(rolling, 1f / 60f);
             Assert.That(stopped, Is.EqualTo(1), "it rolls to a stop on the court");
 

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Text.RegularExpressions;
+using MagnusBall.Aerodynamics;
 using MagnusBall.Flight;
 using MagnusBall.Components;
 using MagnusBall.Contact;
@@ -79,10 +80,12 @@ namespace MagnusBall.UnityScripts.Tests
         [Test]
         public void AnAbsurdLaunch_NeverGivesPhysXAnInfiniteOrNaNForce()
         {
-            // A review's probe: at 1e20 m/s the tennis ball's drag, about 2e38 m/s^2, left a float's range, so AddForce got an
-            // infinite acceleration and PhysX's velocity became NaN. Where the aerodynamic part would more than stop the ball
-            // in the air within one step (the explicit step overshooting), it is now scaled to stop it, within a float's range.
-            foreach (float speed in new[] { 1e20f, 1e30f, 3e38f })
+            // A review's probe: past about 5,350 m/s (twice the speed where one 50 Hz step's drag stops the tennis ball) the
+            // explicit step reversed the ball faster every step until its drag left a float's range: AddForce got an infinite
+            // acceleration (6,000 m/s at the 7th step, 1e20 m/s at the 2nd) and PhysX's velocity became NaN. Where the
+            // aerodynamic part would more than stop the ball in the air within one step, it is now scaled to stop it, within
+            // a float's range.
+            foreach (float speed in new[] { 6000f, 1e20f, 1e30f, 3e38f })
             {
                 (Rigidbody body, MagnusBallRigidbody aero) = NewBall();
                 body.position = new Vector3(0, 1, 0);
@@ -124,6 +127,25 @@ namespace MagnusBall.UnityScripts.Tests
             Call(table, "FixedUpdate");
             StateDerivative d = table.Model.Derivative(new FlightState(D(light.position), D(light.linearVelocity), new Vector3d(0, 0, -600)));
             Assert.That(D(light.StubAcceleration), Is.EqualTo(D(F(d.Acceleration - D(Physics.gravity)))), "bit for bit the model's (in floats)");
+
+            // The spin cap acts on the part of the rate along the spin only: a law that turns the axis fast while barely
+            // decaying is stepped as it is (a review's probe: a first version scaled the whole rate, halving the turn).
+            FlightModel turning = new FlightModel(Ball.Tennis, Air.SeaLevel, Gravity.YUp, new ConstantDrag(0.55), null, new TurningSpin());
+            (Rigidbody turned, MagnusBallRigidbody spun) = NewBall(turning);
+            turned.position = new Vector3(0, 1, 0);
+            spun.Launch(new Vector3(20, 0, 0), new Vector3(0, 0, -200));
+            Vector3d before = spun.Spin;
+            Vector3d rate = new TurningSpin().SpinAcceleration(before, default);
+            Call(spun, "FixedUpdate");
+            Assert.That(spun.Spin, Is.EqualTo(before + rate * Time.fixedDeltaTime), "the plain Euler step, not capped");
+        }
+
+        // Turns the spin about +y at 100 rad/s (and decays it by 1 %/s): |rate| dt = 400 rad/s exceeds |w| = 200 rad/s, but
+        // only its across part, which never reverses the spin.
+        private sealed class TurningSpin : ISpinDecayModel
+        {
+            public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
+                Vector3d.Cross(new Vector3d(0, 100, 0), angularVelocity) - angularVelocity * 0.01;
         }
 
         [Test]

@@ -19,7 +19,7 @@ namespace MagnusBall
         /// The default dynamic viscosity, 1.81e-5 Pa s (used for Reynolds numbers): air near 20 degC (Sutherland's law gives
         /// 1.8134e-5 there), not the ISA's 15 degC value 1.7894e-5, which <see cref="AtAltitude"/> and <see cref="FromWeather"/>
         /// compute. Kept as the default because the presets' Reynolds-dependent laws were checked and calibrated with it; with
-        /// it a Reynolds number is 1.2 % below the ISA's at 15 degC.
+        /// it a Reynolds number is 1.1 % below the ISA's at 15 degC.
         /// </summary>
         public const double SeaLevelDynamicViscosity = 1.81e-5;
 

@@ -457,5 +457,43 @@ namespace MagnusBall.Tests.Integration
             Assert.That(method.TryStep(model, start, model.Derivative(start), 0.5, out DormandPrince54Step rejected), Is.False);
             Assert.That(DormandPrince54.StepAskedFor(rejected), Is.NaN);
         }
+
+        [Test]
+        public void Adaptive_InARotatedFrame_AgreesToItsTolerance_TheFixedStepToRounding()
+        {
+            // The adaptive error norm is per component (as DOPRI5's), so a rotated frame takes other steps: the results
+            // agree to the tolerance, not to rounding (docs/integrators.md). One soccer kick (sidespin about a tilted
+            // axis), 1.5 s, flown in z-up and in a frame turned 37 deg about (1, 2, 3).
+            Vector3d axis = new Vector3d(1, 2, 3).NormalizedOrZero();
+            double angle = 37 * Math.PI / 180;
+            Vector3d Turn(Vector3d v) => // Rodrigues
+                v * Math.Cos(angle) + Vector3d.Cross(axis, v) * Math.Sin(angle) + axis * (Vector3d.Dot(axis, v) * (1 - Math.Cos(angle)));
+            var start = new FlightState(new Vector3d(0.5, -0.3, 0.11), new Vector3d(25, 2, 6), new Vector3d(30, -150, 40));
+            var turnedStart = new FlightState(Turn(start.Position), Turn(start.Velocity), Turn(start.AngularVelocity));
+            FlightModel zUp = MagnusBall.Presets.SportPresets.Soccer.CreateModel(Air.SeaLevel, Gravity.ZUp);
+            FlightModel turned = MagnusBall.Presets.SportPresets.Soccer.CreateModel(Air.SeaLevel, Turn(Gravity.ZUp));
+
+            FlightState a = AdaptiveFlight.Fly(DormandPrince54.Instance, zUp, start, 1.5, out long evaluationsA);
+            FlightState b = AdaptiveFlight.Fly(DormandPrince54.Instance, turned, turnedStart, 1.5, out long evaluationsB);
+            double adaptive = (Turn(a.Position) - b.Position).Length / a.Position.Length;
+
+            FlightState c = start, d = turnedStart;
+            for (int k = 0; k < 360; k++)
+            {
+                c = RungeKutta4.Instance.Step(zUp, c, 1.0 / 240);
+                d = RungeKutta4.Instance.Step(turned, d, 1.0 / 240);
+            }
+
+            double fixedStep = (Turn(c.Position) - d.Position).Length / c.Position.Length;
+            long steps = Math.Max(evaluationsA, evaluationsB) / 6; // six evaluations per accepted step (FSAL), a few retries
+            TestContext.Out.WriteLine(
+                $"rotated frame, relative difference of the end position: adaptive {adaptive:E2} ({steps} steps at most), fixed-step RK4 {fixedStep:E2}");
+            // Fixed step: the same operations on rotated numbers, so rounding only (a few ulp per step over 360 steps).
+            Assert.That(fixedStep, Is.LessThan(1e-13));
+            // Adaptive: each accepted step's error is held to about rtol (1e-6) of the state, so each run is within steps x
+            // rtol of the true flight, and the two runs within twice that.
+            Assert.That(adaptive, Is.LessThan(2 * steps * 1e-6));
+            Assert.That(adaptive, Is.GreaterThan(1e-12), "not equal to rounding: if this fails, the norm became rotation-invariant; update docs/integrators.md");
+        }
 }
 }

@@ -270,8 +270,7 @@ namespace MagnusBall.Components
             RequireFiniteStart(start);
             EnsureConfigured();
             // Build first, swap after: a refused start throws with the old flight intact.
-            FixedStepDriver driver = Build(start, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta, out FlightState from);
-            StartFlight(driver, from);
+            StartFlight(Build(start, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta));
         }
 
         /// <summary>
@@ -295,9 +294,9 @@ namespace MagnusBall.Components
         {
             RequireFiniteStart(start);
             CheckConfiguration(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
-            FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, out FlightState from);
+            FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
             Assign(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
-            StartFlight(driver, from);
+            StartFlight(driver);
         }
 
         private static void RequireFiniteStart(in FlightState start)
@@ -310,15 +309,17 @@ namespace MagnusBall.Components
 
         // The driver for a start under a configuration; refuses (throws) before anything is changed.
         private static FixedStepDriver Build(
-            in FlightState start, FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame,
-            out FlightState from)
+            in FlightState start, FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
         {
-            from = OnOrAboveTheGround(start, events, bounce);
+            FlightState from = OnOrAboveTheGround(start, events, bounce);
             return new FixedStepDriver(model, integratorToUse, step, from, events, bounce, maxFrame);
         }
 
-        private void StartFlight(FixedStepDriver driver, in FlightState from)
+        // The arc starts, and the transform is put, where the driver starts: with a bounce model the flight core moves a start
+        // on or below the court onto it (rolling), so that is not always the start given.
+        private void StartFlight(FixedStepDriver driver)
         {
+            FlightState from = driver.State;
             if (_events.Length < driver.MaximumEventsPerStep)
             {
                 _events = new FlightEvent[driver.MaximumEventsPerStep]; // at a launch, never per frame

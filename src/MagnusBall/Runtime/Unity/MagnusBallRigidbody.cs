@@ -129,7 +129,8 @@ namespace MagnusBall.Components
         /// <summary>
         /// The acceleration, m/s^2, to add to a body at <paramref name="position"/> moving at
         /// <paramref name="velocity"/> with <paramref name="spin"/>: the model's total acceleration minus
-        /// <paramref name="engineGravity"/>, the gravity the physics engine applies itself.
+        /// <paramref name="engineGravity"/>, the gravity the physics engine applies itself. (<c>FixedUpdate</c> adds this,
+        /// except where its aerodynamic part would more than stop the ball in the air within one physics step: see docs/unity.md.)
         /// </summary>
         /// <param name="model">The flight model.</param>
         /// <param name="position">Position, m.</param>
@@ -145,14 +146,17 @@ namespace MagnusBall.Components
         }
 
         // PhysX adds a dt to the velocity (semi-implicit Euler). Where the aerodynamic part would more than stop the ball in
-        // the air within one step (|a_aero| dt > |v - wind|: from 2,000-3,000 m/s for a tennis ball at 50 Hz, far beyond any
-        // flight speed), that step overshoots, reversing the ball faster each step, and from about 1e19 m/s the acceleration
-        // leaves a float's range (AddForce got infinity, PhysX then NaN). There the aerodynamic part is scaled to stop the
-        // ball in the air in the step, and to at most 1e38 m/s^2 (a float reaches 3.4e38); below, it is passed as it is.
+        // the air within one step (|a_aero| dt > s = |v - wind|, i.e. s > 2m / (rho A C_D dt) for drag: for a tennis ball at
+        // 50 Hz between 2,000 and 3,000 m/s, far beyond any flight speed; a light, large custom ball much sooner), the step
+        // overshoots: it reverses the ball, and beyond twice that speed (about 5,350 m/s for the tennis ball) faster every step
+        // until the acceleration leaves a float's range (6,000 m/s: AddForce got infinity at the 7th step, PhysX then NaN).
+        // There the aerodynamic part is scaled to stop the ball in the air in the step, and to at most 1e38 m/s^2 (a float
+        // reaches 3.4e38; gravity is not capped); below, it is passed as it is.
         private static Vector3d WithinOneStep(FlightModel model, Vector3d position, Vector3d velocity, Vector3d added, Vector3d engineGravity, double dt)
         {
             Vector3d aero = added + engineGravity - model.Gravity;
-            double airSpeed = (velocity - model.Air.WindAt(position, model.Up)).Length;
+            Vector3d air = velocity - model.Air.WindAt(position, model.Up);
+            double airSpeed = air.Length;
             double aeroLength = aero.Length;
             if (!(aeroLength * dt > airSpeed))
             {
@@ -160,7 +164,10 @@ namespace MagnusBall.Components
             }
 
             double limit = Math.Min(airSpeed / dt, 1e38);
-            return aero * (limit / aeroLength) + (model.Gravity - engineGravity);
+            Vector3d capped = aeroLength <= double.MaxValue
+                ? aero * (limit / aeroLength)
+                : air.NormalizedOrZero() * -limit; // an infinite aerodynamic part: taken as drag (scaling it would give inf x 0)
+            return capped + (model.Gravity - engineGravity);
         }
 
         // Unity's own null test (UnityEngine.Object's ==), not ??=, which sees a destroyed component as alive.
@@ -207,15 +214,22 @@ namespace MagnusBall.Components
             Vector3d a = AddedAcceleration(_model!, position, v, _spin, g, out Vector3d spinRate);
             double dt = Time.fixedDeltaTime;
             body.AddForce(UnityFrame.ToUnity(WithinOneStep(_model!, position, v, a, g, dt)), ForceMode.Acceleration);
-            // The spin steps with the velocity, by the same semi-implicit Euler step PhysX takes (a decay that would more
-            // than stop the spin in one step, at absurd speeds, stops it instead of reversing it).
-            double spinRateLength = spinRate.Length, spinLength = _spin.Length;
-            if (spinRateLength * dt > spinLength && Vector3d.Dot(spinRate, _spin) < 0)
+            // The spin steps with the velocity, by the same semi-implicit Euler step PhysX takes. A decay whose part along the
+            // spin would more than stop it in one step (at absurd speeds) stops that part instead of reversing it; the part
+            // across the spin (a law that turns the axis) is kept.
+            double spinLength = _spin.Length;
+            Vector3d axis = _spin.NormalizedOrZero();
+            double along = Vector3d.Dot(spinRate, axis);
+            if (-along * dt > spinLength)
             {
-                spinRate *= spinLength / (spinRateLength * dt);
+                Vector3d across = spinRate - axis * along;
+                _spin = across.IsFinite ? across * dt : Vector3d.Zero;
+            }
+            else
+            {
+                _spin += spinRate * dt;
             }
 
-            _spin += spinRate * dt;
             _velocityBefore = v;
         }
 

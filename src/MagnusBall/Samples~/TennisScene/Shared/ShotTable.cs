@@ -9,7 +9,7 @@ namespace MagnusBall.Samples.TennisScene
     public static class ShotTable
     {
         private const string Layout =
-            "{0,-16} {1,5} {2,5} {3,5} {4,5} {5,5} {6,6} {7,13} {8,-3} {9,5} {10,5} {11,5} {12,5} {13,5} {14,5} {15,6} {16,-5} {17,13}";
+            "{0,-17} {1,5} {2,5} {3,5} {4,5} {5,5} {6,6} {7,13} {8,-3} {9,5} {10,5} {11,5} {12,5} {13,5} {14,5} {15,6} {16,-5} {17,13}";
 
         /// <summary>The table's header line.</summary>
         public static string Header =>
