@@ -61,7 +61,8 @@ namespace MagnusBall
         public static Ball Tennis { get; } = new Ball(0.057, 0.033, 0.55);
 
         /// <summary>
-        /// The soccer ball of Javorova &amp; Ivanov (2018) as quoted by the thesis: 0.425 kg, 0.11 m, thin shell.
+        /// The soccer ball of Javorova &amp; Ivanov (2018) as quoted by the thesis: 0.425 kg, 0.11 m, thin shell (for their
+        /// free kicks; the <c>soccer</c> preset, <see cref="Presets.SportPresets.Soccer"/>, flies 0.43 kg, inside FIFA's 410-450 g).
         /// </summary>
         public static Ball Soccer { get; } = new Ball(0.425, 0.11, ThinShellInertiaFactor);
 
