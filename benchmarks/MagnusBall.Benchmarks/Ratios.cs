@@ -41,7 +41,7 @@ namespace MagnusBall.Benchmarks
                 ("BallBatch 10,000, one frame", work.Batch10000),
                 ("1,000 drivers (stable-rk4), frame", work.Drivers1000),
                 ("1,000 drivers (rk4), frame", work.Drivers1000Rk4),
-                ("RK4 480 steps, thesis, internal run", work.Rk4ThesisRun),
+                ("RK4 480 steps, thesis, one Advance", work.Rk4ThesisRun),
                 ("aim ElevationToReach, RK4 trials", work.AimBaselineFixed),
                 ("aim AnglesToReach, RK4 trials", work.AimCornerFixed),
                 ("1,000 drivers (rk4), thesis model", work.Drivers1000Thesis),
@@ -97,7 +97,7 @@ namespace MagnusBall.Benchmarks
             Console.WriteLine();
             Console.WriteLine("targets (issue 11):");
             Report($"RK4 on the thesis ODE <= {rk4Limit:0.0} x thesis-style", best[1] / shot, rk4Limit);
-            Report($"  (the same through the kernel's internal multi-step call)", best[13] / shot, rk4Limit);
+            Report($"  (the same in one RungeKutta4.Advance call)", best[13] / shot, rk4Limit);
             Report("predicted 2 s shot + events, thesis model <= 1 U", best[3] / shot, 1.0);
             Report("predicted 2 s shot + events, full model <= 1.6 U", best[4] / shot, 1.6);
             double worstAim = Math.Max(Math.Max(best[5], best[6]), Math.Max(best[7], best[8]));

@@ -59,11 +59,12 @@ namespace MagnusBall
         internal abstract void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end);
 
         /// <summary>
-        /// <paramref name="count"/> RK4 steps of <paramref name="step"/> seconds; <paramref name="derivative"/> is the
-        /// start derivative on entry and the end derivative on return. 4 x count evaluations. No checks, no events:
-        /// a step that overflows carries the non-finite state on (the caller checks the end).
+        /// Up to <paramref name="count"/> RK4 steps of <paramref name="step"/> seconds, in place: <paramref name="state"/> and
+        /// <paramref name="derivative"/> (its derivative) are the start on entry and the end on return. Stops before a
+        /// step whose end state or end derivative is not finite, leaving the last finite pair. Returns the steps taken
+        /// (count, or fewer where it stopped). 4 evaluations a step (and the declined step's). No argument checks.
         /// </summary>
-        internal abstract FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count);
+        internal abstract int RungeKutta4Advance(ref FlightState state, ref StateDerivative derivative, double step, int count);
 
         /// <summary>
         /// Test hook: RK4's straight-line form of the thesis model's common case (see PreferStraightLine), whatever the
@@ -261,22 +262,27 @@ namespace MagnusBall
             if (speed > FlightModel.MinimumAerodynamicSpeed)
             {
                 var plain = new AeroConditions(speed, spinRate, 0, _radius, _density, 0, 0, 0);
+                double ux = 0, uy = 0, uz = 0;
                 if (_drag.IsPresent)
                 {
-                    double dragScale = -_factor * _drag.Coefficient(plain) * speed;
-                    ax += rx * dragScale;
-                    ay += ry * dragScale;
-                    az += rz * dragScale;
+                    double dragScale = -_factor * _drag.Coefficient(plain);
+                    ux = rx * dragScale;
+                    uy = ry * dragScale;
+                    uz = rz * dragScale;
                 }
 
                 if (_lift.IsPresent && spinRate > FlightModel.MinimumLiftSpinRate)
                 {
-                    double liftScale = _factor * _lift.Coefficient(plain) * speed * inverseSpinRate;
+                    double liftScale = _factor * _lift.Coefficient(plain) * inverseSpinRate;
                     // (w x v_rel) liftScale, Vector3d.Cross's formula
-                    ax += (wy * rz - wz * ry) * liftScale;
-                    ay += (wz * rx - wx * rz) * liftScale;
-                    az += (wx * ry - wy * rx) * liftScale;
+                    ux += (wy * rz - wz * ry) * liftScale;
+                    uy += (wz * rx - wx * rz) * liftScale;
+                    uz += (wx * ry - wy * rx) * liftScale;
                 }
+
+                ax += speed * ux;
+                ay += speed * uy;
+                az += speed * uz;
 
                 if (_decay.IsPresent)
                 {
@@ -315,28 +321,58 @@ namespace MagnusBall
         internal override void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end) =>
             Rk4(state, k1, step, out next, out end);
 
-        internal override FlightState RungeKutta4Steps(in FlightState state, ref StateDerivative derivative, double step, int count)
+        internal override int RungeKutta4Advance(ref FlightState state, ref StateDerivative derivative, double step, int count)
         {
             // Two pairs of locals in turn: each step writes the other pair (the outputs may not alias the inputs), so no
             // state is copied between steps.
-            FlightState a = state, b = default;
-            StateDerivative ka = derivative, kb = default;
+            FlightState a = state, b;
+            StateDerivative ka = derivative, kb;
             int i = 0;
             for (; i + 1 < count; i += 2)
             {
                 Rk4(a, ka, step, out b, out kb);
+                if (!IsFinite(b, kb))
+                {
+                    state = a;
+                    derivative = ka;
+                    return i;
+                }
+
                 Rk4(b, kb, step, out a, out ka);
+                if (!IsFinite(a, ka))
+                {
+                    state = b;
+                    derivative = kb;
+                    return i + 1;
+                }
             }
 
             if (i < count)
             {
                 Rk4(a, ka, step, out b, out kb);
-                derivative = kb;
-                return b;
+                if (IsFinite(b, kb))
+                {
+                    state = b;
+                    derivative = kb;
+                    return i + 1;
+                }
             }
 
+            state = a;
             derivative = ka;
-            return a;
+            return i;
+        }
+
+        // Every component of the state and its derivative finite (the derivative's velocity is the state's): x - x is 0 for
+        // a finite x and NaN otherwise, and a sum of them is 0 only if each is.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool IsFinite(in FlightState y, in StateDerivative k)
+        {
+            Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity, a = k.Acceleration, s = k.AngularAcceleration;
+            double zero = ((p.X - p.X) + (p.Y - p.Y) + (p.Z - p.Z)) + ((v.X - v.X) + (v.Y - v.Y) + (v.Z - v.Z)) +
+                (((w.X - w.X) + (w.Y - w.Y) + (w.Z - w.Z)) + ((a.X - a.X) + (a.Y - a.Y) + (a.Z - a.Z))) +
+                (((s.X - s.X) + (s.Y - s.Y) + (s.Z - s.Z)) + (y.Time - y.Time));
+            return zero == 0;
         }
 
         internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
@@ -642,9 +678,9 @@ namespace MagnusBall
             }
 
             double inverseSpinRate = 1.0 / spinRate;
-            // Rates' -_factor C_D speed and _factor C_L speed (1/|w|), whose first products are these (left to right).
+            // FoldedRates' -_factor C_D and _factor C_L (1/|w|), the same products (left to right).
             double dragFactor = -_factor * _drag.Coefficient(NoConditions);
-            double liftFactor = _factor * _lift.Coefficient(NoConditions);
+            double liftFactor = _factor * _lift.Coefficient(NoConditions) * inverseSpinRate;
             double gx = _gravity.X, gy = _gravity.Y, gz = _gravity.Z;
             double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
             Vector3d k1a = k1.Acceleration;
@@ -655,32 +691,30 @@ namespace MagnusBall
             double squared = v2x * v2x + v2y * v2y + v2z * v2z;
             double speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
-            double drag = dragFactor * speed, lift = liftFactor * speed * inverseSpinRate;
-            double a2x = gx + v2x * drag + (wy * v2z - wz * v2y) * lift;
-            double a2y = gy + v2y * drag + (wz * v2x - wx * v2z) * lift;
-            double a2z = gz + v2z * drag + (wx * v2y - wy * v2x) * lift;
+            double u2x = v2x * dragFactor + (wy * v2z - wz * v2y) * liftFactor;
+            double u2y = v2y * dragFactor + (wz * v2x - wx * v2z) * liftFactor;
+            double u2z = v2z * dragFactor + (wx * v2y - wy * v2x) * liftFactor;
+            double a2x = gx + speed * u2x, a2y = gy + speed * u2y, a2z = gz + speed * u2z;
 
             // k3 at y + h/2 k2
             double v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
             squared = v3x * v3x + v3y * v3y + v3z * v3z;
             speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
-            drag = dragFactor * speed;
-            lift = liftFactor * speed * inverseSpinRate;
-            double a3x = gx + v3x * drag + (wy * v3z - wz * v3y) * lift;
-            double a3y = gy + v3y * drag + (wz * v3x - wx * v3z) * lift;
-            double a3z = gz + v3z * drag + (wx * v3y - wy * v3x) * lift;
+            double u3x = v3x * dragFactor + (wy * v3z - wz * v3y) * liftFactor;
+            double u3y = v3y * dragFactor + (wz * v3x - wx * v3z) * liftFactor;
+            double u3z = v3z * dragFactor + (wx * v3y - wy * v3x) * liftFactor;
+            double a3x = gx + speed * u3x, a3y = gy + speed * u3y, a3z = gz + speed * u3z;
 
             // k4 at y + h k3
             double v4x = vx + step * a3x, v4y = vy + step * a3y, v4z = vz + step * a3z;
             squared = v4x * v4x + v4y * v4y + v4z * v4z;
             speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
-            drag = dragFactor * speed;
-            lift = liftFactor * speed * inverseSpinRate;
-            double a4x = gx + v4x * drag + (wy * v4z - wz * v4y) * lift;
-            double a4y = gy + v4y * drag + (wz * v4x - wx * v4z) * lift;
-            double a4z = gz + v4z * drag + (wx * v4y - wy * v4x) * lift;
+            double u4x = v4x * dragFactor + (wy * v4z - wz * v4y) * liftFactor;
+            double u4y = v4y * dragFactor + (wz * v4x - wx * v4z) * liftFactor;
+            double u4z = v4z * dragFactor + (wx * v4y - wy * v4x) * liftFactor;
+            double a4x = gx + speed * u4x, a4y = gy + speed * u4y, a4z = gz + speed * u4z;
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, and the end rates
             Vector3d k1v = k1.Velocity;
@@ -699,12 +733,10 @@ namespace MagnusBall
             squared = vex * vex + vey * vey + vez * vez;
             speed = System.Math.Sqrt(squared);
             common &= squared <= double.MaxValue & speed > FlightModel.MinimumAerodynamicSpeed;
-            drag = dragFactor * speed;
-            lift = liftFactor * speed * inverseSpinRate;
             endAcceleration = new Vector3d(
-                gx + vex * drag + (ey * vez - ez * vey) * lift,
-                gy + vey * drag + (ez * vex - ex * vez) * lift,
-                gz + vez * drag + (ex * vey - ey * vex) * lift);
+                gx + speed * (vex * dragFactor + (ey * vez - ez * vey) * liftFactor),
+                gy + speed * (vey * dragFactor + (ez * vex - ex * vez) * liftFactor),
+                gz + speed * (vez * dragFactor + (ex * vey - ey * vex) * liftFactor));
             end = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
             return common;
         }

@@ -527,14 +527,14 @@ namespace MagnusBall.Tests.Integration
 
         private static string Bits(in Vector3d v) => $"({v.X:R}, {v.Y:R}, {v.Z:R})";
 
-        // The multi-step call alternates two pairs of locals; odd counts end on the other pair (0, 1 and 479 included).
+        // RungeKutta4.Advance alternates two pairs of locals; odd counts end on the other pair (0, 1 and 479 included).
         [TestCase(false, 480)]
         [TestCase(false, 479)]
         [TestCase(false, 1)]
         [TestCase(false, 0)]
         [TestCase(true, 480)]
         [TestCase(true, 479)]
-        public void Rk4Steps_EqualsOneStepAtATime_BitForBit(bool thesis, int count)
+        public void Advance_EqualsOneStepAtATime_BitForBit(bool thesis, int count)
         {
             var air = new Air(1.21).WithLogarithmicWind(new Vector3d(5, 0, 0));
             FlightModel model = thesis
@@ -542,7 +542,9 @@ namespace MagnusBall.Tests.Integration
                 : new FlightModel(Ball.Tennis, air, Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
             StateDerivative run = model.Derivative(start);
-            FlightState many = model.Kernel.RungeKutta4Steps(start, ref run, 1.0 / 240, count);
+            FlightState many = start;
+            int taken = RungeKutta4.Instance.Advance(model, ref many, ref run, 1.0 / 240, count);
+            Assert.That(taken, Is.EqualTo(count));
             FlightState one = start;
             StateDerivative k = model.Derivative(start);
             for (int i = 0; i < count; i++)
@@ -554,6 +556,83 @@ namespace MagnusBall.Tests.Integration
             AssertSame(run.Velocity, k.Velocity, start);
             AssertSame(run.Acceleration, k.Acceleration, start);
             AssertSame(run.AngularAcceleration, k.AngularAcceleration, start);
+        }
+
+        [Test]
+        public void Advance_EvaluatesTheModelFourTimesAStep()
+        {
+            var drag = new CountingDrag();
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            var calls = new EvaluationCount();
+            model.CountedEvaluations = calls;
+            var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative k = model.Derivative(state);
+            calls.Calls = 0;
+            drag.Calls = 0;
+            int taken = RungeKutta4.Instance.Advance(model, ref state, ref k, 1.0 / 240, 37);
+            Assert.That(taken, Is.EqualTo(37));
+            Assert.That(calls.Calls, Is.EqualTo(4 * 37));
+            Assert.That(drag.Calls, Is.EqualTo(4 * 37));
+        }
+
+        [TestCase(-1, 1.0 / 240, "count")]
+        [TestCase(250_001, 1.0 / 240, "count")]
+        [TestCase(10, 0.0, "step")]
+        [TestCase(10, double.NaN, "step")]
+        [TestCase(10, double.PositiveInfinity, "step")]
+        public void Advance_RefusesBadArguments_AndChangesNothing(int count, double step, string parameter)
+        {
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative startRates = model.Derivative(start);
+            FlightState state = start;
+            StateDerivative rates = startRates;
+            var error = Assert.Throws(Is.InstanceOf<ArgumentException>(), () => RungeKutta4.Instance.Advance(model, ref state, ref rates, step, count));
+            Assert.That(((ArgumentException)error!).ParamName, Is.EqualTo(parameter));
+            Assert.That(error.Message, Does.Contain(parameter == "count" ? "[0, 250000]" : "> 0"));
+            AssertSame(state, start, start);
+            AssertSame(rates.Acceleration, startRates.Acceleration, start);
+        }
+
+        [Test]
+        public void Advance_RefusesANonFiniteStateOrNoModel_AndChangesNothing()
+        {
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, double.NaN, 1), new Vector3d(30, 1, 5), Vector3d.Zero);
+            FlightState state = start;
+            StateDerivative rates = default;
+            var error = Assert.Throws(Is.InstanceOf<ArgumentException>(), () => RungeKutta4.Instance.Advance(model, ref state, ref rates, 0.01, 5));
+            Assert.That(((ArgumentException)error!).ParamName, Is.EqualTo("state"));
+            Assert.That(double.IsNaN(state.Position.Y) && state.Position.X == 0 && state.Velocity.X == 30, Is.True);
+            Assert.Throws<ArgumentNullException>(() => RungeKutta4.Instance.Advance(null!, ref state, ref rates, 0.01, 5));
+        }
+
+        [Test]
+        public void Advance_StopsBeforeTheFirstStepThatIsNotFinite()
+        {
+            // Half-second steps of a light, large ball at 300 m/s: far past RK4's stability limit, so each step's speed grows
+            // until one overflows. Advance stops before it, on the last finite state, and says how many steps it took.
+            FlightModel model = FlightModel.Thesis(new Ball(0.005, 0.1), new Air(1.21), Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(300, 1, 5), new Vector3d(10, 150, 20));
+            FlightState state = start;
+            StateDerivative rates = model.Derivative(start);
+            int taken = RungeKutta4.Instance.Advance(model, ref state, ref rates, 0.5, 1000);
+            Assert.That(taken, Is.GreaterThan(0).And.LessThan(1000));
+            Assert.That(state.IsFinite, Is.True);
+            Assert.That(state.Time, Is.EqualTo(0.5 * taken));
+
+            FlightState one = start;
+            StateDerivative k = model.Derivative(start);
+            for (int i = 0; i < taken; i++)
+            {
+                one = RungeKutta4.Instance.Step(model, one, k, 0.5, out k, out _);
+            }
+
+            AssertSame(state, one, start);
+            AssertSame(rates.Acceleration, k.Acceleration, start);
+            FlightState next = RungeKutta4.Instance.Step(model, one, k, 0.5, out StateDerivative nextRates, out _);
+            Assert.That(next.IsFinite && nextRates.Acceleration.IsFinite, Is.False, "the step it declined is not finite");
+            Assert.That(RungeKutta4.Instance.Advance(model, ref state, ref rates, 0.5, 1000), Is.EqualTo(0), "and it declines it again");
         }
 
         [Test]
@@ -583,8 +662,9 @@ namespace MagnusBall.Tests.Integration
             FlightState end = default;
             Action steps = () =>
             {
+                end = start;
                 StateDerivative k = model.Derivative(start);
-                end = model.Kernel.RungeKutta4Steps(start, ref k, 1.0 / 240, 480);
+                RungeKutta4.Instance.Advance(model, ref end, ref k, 1.0 / 240, 480);
             };
             long allocated = Allocation.SteadyStateBytes(steps);
             Assert.That(allocated, Is.EqualTo(0));

@@ -164,6 +164,33 @@ namespace MagnusBall.Batch
             bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || Lift == LiftKind.Stepanek;
             Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
 
+            if (Drag != DragKind.Stepanek && (Lift == LiftKind.None || Lift == LiftKind.Constant))
+            {
+                // No law reads a spin parameter: the kernel's folded form, s ((-k C_D) v_rel + (k C_L / |w|) (w x v_rel)).
+                Vector<double> ux = Vector<double>.Zero, uy = Vector<double>.Zero, uz = Vector<double>.Zero;
+                if (Drag == DragKind.Constant)
+                {
+                    var dragScale = new Vector<double>(_dragConstant);
+                    ux = rx * dragScale;
+                    uy = ry * dragScale;
+                    uz = rz * dragScale;
+                }
+
+                if (Lift == LiftKind.Constant)
+                {
+                    Vector<double> liftScale = new Vector<double>(_liftConstant) * (Vector<double>.One / spinRate);
+                    Vector<long> lifts = Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
+                    ux = Vector.ConditionalSelect(lifts, ux + (wy * rz - wz * ry) * liftScale, ux);
+                    uy = Vector.ConditionalSelect(lifts, uy + (wz * rx - wx * rz) * liftScale, uy);
+                    uz = Vector.ConditionalSelect(lifts, uz + (wx * ry - wy * rx) * liftScale, uz);
+                }
+
+                ax = Vector.ConditionalSelect(aero, gx + speed * ux, gx);
+                ay = Vector.ConditionalSelect(aero, gy + speed * uy, gy);
+                az = Vector.ConditionalSelect(aero, gz + speed * uz, gz);
+                return;
+            }
+
             if (Drag != DragKind.None)
             {
                 Vector<double> dragScale;
@@ -182,17 +209,7 @@ namespace MagnusBall.Batch
                 az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
             }
 
-            if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
-            {
-                // No law reads a spin parameter: the kernel's folded form, ((rho A / 2m) C_L s / |w|) (w x v_rel).
-                Vector<double> cx = wy * rz - wz * ry, cy = wz * rx - wx * rz, cz = wx * ry - wy * rx;
-                Vector<double> liftScale = new Vector<double>(_liftConstant) * speed * (Vector<double>.One / spinRate);
-                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
-                ax = Vector.ConditionalSelect(lifts, ax + cx * liftScale, ax);
-                ay = Vector.ConditionalSelect(lifts, ay + cy * liftScale, ay);
-                az = Vector.ConditionalSelect(lifts, az + cz * liftScale, az);
-            }
-            else if (Lift != LiftKind.None)
+            if (Lift != LiftKind.None)
             {
                 Vector<double> unit = Vector<double>.One / speed;
                 Vector<double> dx = rx * unit, dy = ry * unit, dz = rz * unit;
