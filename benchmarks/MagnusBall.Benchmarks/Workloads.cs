@@ -118,6 +118,19 @@ namespace MagnusBall.Benchmarks
             return state.Position.X;
         }
 
+        /// <summary>The 480 steps on the thesis's ODE as 480 calls of RungeKutta4.Advance with count 1 (a game's one step a frame, in place).</summary>
+        public double Rk4ThesisAdvanceEach()
+        {
+            FlightState state = _start;
+            StateDerivative derivative = _thesisModel.Derivative(state);
+            for (int i = 0; i < ShotSteps; i++)
+            {
+                RungeKutta4.Instance.Advance(_thesisModel, ref state, ref derivative, Step, 1);
+            }
+
+            return state.Position.X;
+        }
+
         private double Rk4Shot(FlightModel model)
         {
             FlightState state = _start;

@@ -323,19 +323,26 @@ namespace MagnusBall
 
         internal override int RungeKutta4Advance(ref FlightState state, ref StateDerivative derivative, double step, int count)
         {
-            // Two pairs of locals in turn: each step writes the other pair (the outputs may not alias the inputs), so no
-            // state is copied between steps.
-            FlightState a = state, b;
-            StateDerivative ka = derivative, kb;
-            int i = 0;
+            if (count <= 0)
+            {
+                return 0;
+            }
+
+            // The first step straight from the caller's pair (no copy of it), then two pairs of locals in turn: each step
+            // writes the other pair (the outputs may not alias the inputs), so no state is copied between steps.
+            Rk4(state, derivative, step, out FlightState a, out StateDerivative ka);
+            if (!IsFinite(a, ka))
+            {
+                return 0;
+            }
+
+            int i = 1;
             for (; i + 1 < count; i += 2)
             {
-                Rk4(a, ka, step, out b, out kb);
+                Rk4(a, ka, step, out FlightState b, out StateDerivative kb);
                 if (!IsFinite(b, kb))
                 {
-                    state = a;
-                    derivative = ka;
-                    return i;
+                    break;
                 }
 
                 Rk4(b, kb, step, out a, out ka);
@@ -347,14 +354,14 @@ namespace MagnusBall
                 }
             }
 
-            if (i < count)
+            if (i + 1 == count)
             {
-                Rk4(a, ka, step, out b, out kb);
+                Rk4(a, ka, step, out FlightState b, out StateDerivative kb);
                 if (IsFinite(b, kb))
                 {
                     state = b;
                     derivative = kb;
-                    return i + 1;
+                    return count;
                 }
             }
 

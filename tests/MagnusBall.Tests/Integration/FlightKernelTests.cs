@@ -610,29 +610,43 @@ namespace MagnusBall.Tests.Integration
         [Test]
         public void Advance_StopsBeforeTheFirstStepThatIsNotFinite()
         {
-            // Half-second steps of a light, large ball at 300 m/s: far past RK4's stability limit, so each step's speed grows
-            // until one overflows. Advance stops before it, on the last finite state, and says how many steps it took.
-            FlightModel model = FlightModel.Thesis(new Ball(0.005, 0.1), new Air(1.21), Gravity.ZUp);
-            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(300, 1, 5), new Vector3d(10, 150, 20));
-            FlightState state = start;
-            StateDerivative rates = model.Derivative(start);
-            int taken = RungeKutta4.Instance.Advance(model, ref state, ref rates, 0.5, 1000);
-            Assert.That(taken, Is.GreaterThan(0).And.LessThan(1000));
-            Assert.That(state.IsFinite, Is.True);
-            Assert.That(state.Time, Is.EqualTo(0.5 * taken));
-
-            FlightState one = start;
-            StateDerivative k = model.Derivative(start);
-            for (int i = 0; i < taken; i++)
+            // Half-second steps of a tennis ball at 236 m/s: past RK4's stability limit for its drag (it flies on at 234 m/s),
+            // so each step's speed grows until the fifth overflows. Advance stops before it, on the last finite state, and
+            // says how many steps it took: from three starts (4, 3 and 0 finite steps left) and for counts around the
+            // overflow (0-6 and 1,000), which reach each of its exits (the first step, either step of a pair, the odd last step).
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(236, 1, 5), new Vector3d(10, 150, 20));
+            var states = new List<FlightState> { start };
+            var rates = new List<StateDerivative> { model.Derivative(start) };
+            while (true)
             {
-                one = RungeKutta4.Instance.Step(model, one, k, 0.5, out k, out _);
+                FlightState next = RungeKutta4.Instance.Step(model, states[^1], rates[^1], 0.5, out StateDerivative end, out _);
+                if (!(next.IsFinite && end.IsFinite))
+                {
+                    break;
+                }
+
+                states.Add(next);
+                rates.Add(end);
+                Assert.That(states.Count, Is.LessThan(1000), "the steps overflow");
             }
 
-            AssertSame(state, one, start);
-            AssertSame(rates.Acceleration, k.Acceleration, start);
-            FlightState next = RungeKutta4.Instance.Step(model, one, k, 0.5, out StateDerivative nextRates, out _);
-            Assert.That(next.IsFinite && nextRates.Acceleration.IsFinite, Is.False, "the step it declined is not finite");
-            Assert.That(RungeKutta4.Instance.Advance(model, ref state, ref rates, 0.5, 1000), Is.EqualTo(0), "and it declines it again");
+            int finite = states.Count - 1; // the steps that stay finite from the start
+            Assert.That(finite, Is.EqualTo(4), "four steps before the overflow");
+            foreach (int offset in new[] { 0, 1, finite })
+            {
+                int left = finite - offset;
+                foreach (int count in new[] { 0, 1, 2, 3, 4, 5, 6, 1000 })
+                {
+                    FlightState state = states[offset];
+                    StateDerivative k = rates[offset];
+                    int taken = RungeKutta4.Instance.Advance(model, ref state, ref k, 0.5, count);
+                    int expected = Math.Min(count, left);
+                    Assert.That(taken, Is.EqualTo(expected), $"offset {offset}, count {count}");
+                    AssertSame(state, states[offset + expected], start);
+                    AssertSame(k.Acceleration, rates[offset + expected].Acceleration, start);
+                }
+            }
         }
 
         [Test]
