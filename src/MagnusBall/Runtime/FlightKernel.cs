@@ -37,7 +37,7 @@ namespace MagnusBall
         internal static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
 #endif
 
-        /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the same as the general formula).</summary>
+        /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the general formula, except a constant lift's folded form: to rounding).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
 
         /// <summary>
@@ -257,32 +257,40 @@ namespace MagnusBall
             double speed = Vector3d.LengthOf(rx, ry, rz);
             // No law reads a spin parameter (the thesis's constant coefficients): the same force with the algebra
             // folded, (rho A / 2m) C_L s^2 (w x v_hat) / |w| = ((rho A / 2m) C_L s / |w|) (w x v_rel), so no 1/s,
-            // and 1/|w| once per step where the spin is constant. Equal to the general formula to rounding
-            // (FlightKernelTests: within 4 ulp of the largest term), not bit for bit.
+            // and 1/|w| once per step where the spin is constant. Where the lift acts, the speed is multiplied in last,
+            // g + s ((-k C_D) v_rel + (k C_L / |w|) (w x v_rel)), so all but one product and one sum are computed while
+            // its square root runs (RK4's dependent chain; docs/performance.md). Equal to the general formula to
+            // rounding (FlightKernelTests: within 4 ulp of the largest term), not bit for bit; drag alone (no lift, or a
+            // spin at or below FlightModel.MinimumLiftSpinRate) is the general formula's drag term, bit for bit.
             if (speed > FlightModel.MinimumAerodynamicSpeed)
             {
                 var plain = new AeroConditions(speed, spinRate, 0, _radius, _density, 0, 0, 0);
-                double ux = 0, uy = 0, uz = 0;
-                if (_drag.IsPresent)
-                {
-                    double dragScale = -_factor * _drag.Coefficient(plain);
-                    ux = rx * dragScale;
-                    uy = ry * dragScale;
-                    uz = rz * dragScale;
-                }
-
                 if (_lift.IsPresent && spinRate > FlightModel.MinimumLiftSpinRate)
                 {
                     double liftScale = _factor * _lift.Coefficient(plain) * inverseSpinRate;
                     // (w x v_rel) liftScale, Vector3d.Cross's formula
-                    ux += (wy * rz - wz * ry) * liftScale;
-                    uy += (wz * rx - wx * rz) * liftScale;
-                    uz += (wx * ry - wy * rx) * liftScale;
-                }
+                    double ux = (wy * rz - wz * ry) * liftScale;
+                    double uy = (wz * rx - wx * rz) * liftScale;
+                    double uz = (wx * ry - wy * rx) * liftScale;
+                    if (_drag.IsPresent)
+                    {
+                        double dragScale = -_factor * _drag.Coefficient(plain);
+                        ux = rx * dragScale + ux;
+                        uy = ry * dragScale + uy;
+                        uz = rz * dragScale + uz;
+                    }
 
-                ax += speed * ux;
-                ay += speed * uy;
-                az += speed * uz;
+                    ax += speed * ux;
+                    ay += speed * uy;
+                    az += speed * uz;
+                }
+                else if (_drag.IsPresent)
+                {
+                    double dragScale = -_factor * _drag.Coefficient(plain) * speed;
+                    ax += rx * dragScale;
+                    ay += ry * dragScale;
+                    az += rz * dragScale;
+                }
 
                 if (_decay.IsPresent)
                 {

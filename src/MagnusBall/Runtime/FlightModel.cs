@@ -192,7 +192,9 @@ namespace MagnusBall
         /// struct the JIT inlines, and only the inputs some law reads are computed (no Reynolds number unless a law
         /// reads it). Laws of your own (any <see cref="IDragModel"/>, <see cref="ILiftModel"/> or
         /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
-        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit.
+        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit, except with a
+        /// lift law that reads no spin parameter (a constant C_L, as in <see cref="Thesis"/>): that force is computed in a
+        /// folded form, equal to the formula to rounding (within about 4 ulp of the largest term).
         /// </remarks>
         public StateDerivative Derivative(in FlightState state)
         {

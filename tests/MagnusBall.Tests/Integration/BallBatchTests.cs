@@ -29,6 +29,8 @@ namespace MagnusBall.Tests.Integration
             yield return new TestCaseData(new FlightModel(Ball.Tennis, new Air(1.21), g, ConstantDrag.CrossLindseyTennis, LinearSpinLift.Cross2020Tennis), true)
                 .SetName("CrossLinearLift");
             yield return new TestCaseData(FlightModel.Vacuum(Ball.Tennis, g), true).SetName("Vacuum");
+            yield return new TestCaseData(new FlightModel(Ball.Tennis, new Air(1.21, new Vector3d(2, -1, 0)), g, ConstantDrag.CrossLindseyTennis), true)
+                .SetName("ConstantDragOnly");
             yield return new TestCaseData(new FlightModel(Ball.Soccer, new Air(1.2).WithLogarithmicWind(new Vector3d(5, 0, 0)), g,
                 GoffCarreSoccerDrag.Instance, PiecewiseLinearLift.SoccerGoffCarre), false).SetName("SoccerWindProfile_BallByBall");
         }

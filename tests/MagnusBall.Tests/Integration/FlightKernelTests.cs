@@ -69,6 +69,16 @@ namespace MagnusBall.Tests.Integration
             yield return new TestCaseData(
                 new FlightModel(Ball.Tennis, Air.Vacuum, g, StepanekDrag.Instance, StepanekLift.Instance, SpeedProportionalSpinDecay.TennisCrossLindsey),
                 "NoDrag, NoLift, SpeedProportionalSpinDecayLaw").SetName("VacuumWithSpinDecay");
+            // Gravity.Along gives -0 components ((0, 1, 0) * -9.80665): the kernel must leave them as they are.
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, Air.Vacuum, Gravity.Along(new Vector3d(0, 1, 0)), StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+                "NoDrag, NoLift, ExponentialSpinDecayLaw").SetName("VacuumWithSpinDecayNegativeZeros");
+            // Constant drag without lift reads nothing (the folded kernel) but is the general formula bit for bit.
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, windy, g, ConstantDrag.CrossLindseyTennis), "ConstantDragLaw, NoLift, NoSpinDecay").SetName("ConstantDragOnly");
+            yield return new TestCaseData(
+                new FlightModel(Ball.Tennis, air, Gravity.Along(new Vector3d(0, 1, 0)), ConstantDrag.CrossLindseyTennis, null, new ExponentialSpinDecay(3)),
+                "ConstantDragLaw, NoLift, ExponentialSpinDecayLaw").SetName("ConstantDragWithSpinDecay");
         }
 
         // States across the reachable range: fast and slow, spin along and across the flight, no spin, still (below the
@@ -573,6 +583,17 @@ namespace MagnusBall.Tests.Integration
             Assert.That(taken, Is.EqualTo(37));
             Assert.That(calls.Calls, Is.EqualTo(4 * 37));
             Assert.That(drag.Calls, Is.EqualTo(4 * 37));
+        }
+
+        [Test]
+        public void Advance_TakesItsLargestCount()
+        {
+            FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
+            var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
+            StateDerivative k = model.Derivative(state);
+            Assert.That(RungeKutta4.MaximumAdvanceSteps, Is.EqualTo(250_000));
+            Assert.That(RungeKutta4.Instance.Advance(model, ref state, ref k, 1.0 / 240, RungeKutta4.MaximumAdvanceSteps), Is.EqualTo(250_000));
+            Assert.That(state.Time, Is.EqualTo(250_000 / 240.0).Within(1e-6), "17 minutes of flight (falling at its terminal speed)");
         }
 
         [TestCase(-1, 1.0 / 240, "count")]

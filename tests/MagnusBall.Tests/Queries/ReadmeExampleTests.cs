@@ -36,6 +36,23 @@ namespace MagnusBall.Tests.Queries
         }
 
         [Test]
+        public void ReadmeFirstSteps_Run()
+        {
+            // README's first example (one step through IIntegrator, then 239 in one RungeKutta4.Advance call), compiled and run.
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance);
+            var velocity = new Vector3d(29.7, 0, 4.2);
+            var state = new FlightState(new Vector3d(0, 0, 1), velocity, Spin.Topspin(velocity, up: Vector3d.UnitZ, Spin.FromRpm(1200)));
+            IIntegrator rk4 = RungeKutta4.Instance;
+            var k1 = model.Derivative(state);
+            state = rk4.Step(model, state, k1, 1.0 / 240, out k1, out _);
+            int taken = RungeKutta4.Instance.Advance(model, ref state, ref k1, 1.0 / 240, 239);
+
+            Assert.That(taken, Is.EqualTo(239));
+            Assert.That(state.Time, Is.EqualTo(1.0).Within(1e-12), "240 steps of 1/240 s");
+            Assert.That(state.Position.X, Is.GreaterThan(15).And.LessThan(29.7), "a second of a 29.7 m/s drive, slowed by drag");
+        }
+
+        [Test]
         public void DefaultSegment_GivesNoNaN()
         {
             var stepper = new FlightStepper(FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp), RungeKutta4.Instance);

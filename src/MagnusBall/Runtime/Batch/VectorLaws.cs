@@ -164,30 +164,28 @@ namespace MagnusBall.Batch
             bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || Lift == LiftKind.Stepanek;
             Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
 
-            if (Drag != DragKind.Stepanek && (Lift == LiftKind.None || Lift == LiftKind.Constant))
+            if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
             {
-                // No law reads a spin parameter: the kernel's folded form, s ((-k C_D) v_rel + (k C_L / |w|) (w x v_rel)).
-                Vector<double> ux = Vector<double>.Zero, uy = Vector<double>.Zero, uz = Vector<double>.Zero;
+                // No law reads a spin parameter: the kernel's folded form. Where the lift acts,
+                // g + s ((-k C_D) v_rel + (k C_L / |w|) (w x v_rel)); elsewhere the drag alone, g + v_rel ((-k C_D) s).
+                Vector<double> liftScale = new Vector<double>(_liftConstant) * (Vector<double>.One / spinRate);
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
+                Vector<double> ux = (wy * rz - wz * ry) * liftScale, uy = (wz * rx - wx * rz) * liftScale, uz = (wx * ry - wy * rx) * liftScale;
                 if (Drag == DragKind.Constant)
                 {
-                    var dragScale = new Vector<double>(_dragConstant);
-                    ux = rx * dragScale;
-                    uy = ry * dragScale;
-                    uz = rz * dragScale;
+                    var dragFactor = new Vector<double>(_dragConstant);
+                    ux = rx * dragFactor + ux;
+                    uy = ry * dragFactor + uy;
+                    uz = rz * dragFactor + uz;
+                    Vector<double> dragScale = dragFactor * speed;
+                    ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
+                    ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
+                    az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
                 }
 
-                if (Lift == LiftKind.Constant)
-                {
-                    Vector<double> liftScale = new Vector<double>(_liftConstant) * (Vector<double>.One / spinRate);
-                    Vector<long> lifts = Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
-                    ux = Vector.ConditionalSelect(lifts, ux + (wy * rz - wz * ry) * liftScale, ux);
-                    uy = Vector.ConditionalSelect(lifts, uy + (wz * rx - wx * rz) * liftScale, uy);
-                    uz = Vector.ConditionalSelect(lifts, uz + (wx * ry - wy * rx) * liftScale, uz);
-                }
-
-                ax = Vector.ConditionalSelect(aero, gx + speed * ux, gx);
-                ay = Vector.ConditionalSelect(aero, gy + speed * uy, gy);
-                az = Vector.ConditionalSelect(aero, gz + speed * uz, gz);
+                ax = Vector.ConditionalSelect(lifts, gx + speed * ux, ax);
+                ay = Vector.ConditionalSelect(lifts, gy + speed * uy, ay);
+                az = Vector.ConditionalSelect(lifts, gz + speed * uz, az);
                 return;
             }
 
