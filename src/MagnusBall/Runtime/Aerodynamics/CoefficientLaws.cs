@@ -164,7 +164,7 @@ namespace MagnusBall.Aerodynamics
         public AeroInputs Reads => AeroInputs.SpinParameter;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double Coefficient(in AeroConditions conditions) => StepanekDrag.Evaluate(conditions.SpinParameter);
+        public double Coefficient(in AeroConditions conditions) => StepanekDrag.FromConditions(conditions);
     }
 
     internal readonly struct LinearSpinDragLaw : IDragLaw

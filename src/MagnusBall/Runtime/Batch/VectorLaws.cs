@@ -198,7 +198,7 @@ namespace MagnusBall.Batch
                 }
                 else
                 {
-                    Vector<double> cd = StepanekDrag(spinRate * inverse);
+                    Vector<double> cd = StepanekDrag(spinRate * inverse, speed, spinRate);
                     dragScale = new Vector<double>(_negativeFactor) * cd * speed;
                 }
 
@@ -233,12 +233,12 @@ namespace MagnusBall.Batch
             }
         }
 
-        // Aerodynamics.StepanekDrag.Evaluate, lane by lane.
+        // Aerodynamics.StepanekDrag.FromConditions, lane by lane: spin parameter s, speed and spin rate.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector<double> StepanekDrag(Vector<double> s)
+        private Vector<double> StepanekDrag(Vector<double> s, Vector<double> speed, Vector<double> spinRate)
         {
             Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
-            Vector<double> u = Vector<double>.One / s;
+            Vector<double> u = speed * (Vector<double>.One / (new Vector<double>(_radius) * spinRate));
             Vector<double> x = new Vector<double>(22.053) + new Vector<double>(4.196) * (u * u * Vector.SquareRoot(u));
             return Vector.ConditionalSelect(positive, new Vector<double>(0.508) + PowMinusTwoFifths(x), new Vector<double>(0.508));
         }
