@@ -345,7 +345,7 @@ namespace MagnusBall
         }
 
         // The largest |C| a built-in law can give (null when unknown: a user's law, or one whose bound is not worked out).
-        // Stepanek drag: 0.508 + (22.053 + ...)^(-2/5) <= 0.508 + 22.053^(-2/5) = 0.7978; Stepanek lift: S / (2.022 S + 0.981)
+        // Stepanek drag: 0.508 + (22.053 + ...)^(-2/5) <= 0.508 + 22.053^(-2/5) = 0.7981; Stepanek lift: S / (2.022 S + 0.981)
         // < 1/2.022 = 0.4946 (Stepanek 1988's fits, Aerodynamics/Stepanek.cs).
         private static double? CoefficientBound(object? law) => law switch
         {

@@ -81,11 +81,13 @@ namespace MagnusBall.Tests.Aerodynamics
         [Test]
         public void DragCoefficient_FormsOneOverS_FromTheSpeed_WithinAnUlpOfEvaluate()
         {
-            // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S: a few
-            // roundings of 1/S apart, which the law's 2.5 power and 2/5 root shrink to at most 1 ulp of C_D (in rounding
-            // to nearest, two results within 0.5 ulp each of nearby values; measured worst printed). Log-uniform speeds
-            // 1e-3 to 1e3 m/s and spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the extremes: S past 1e300 and below
-            // 1e-300 (r |w| overflowing and underflowing), a speed whose r / s overflows.
+            // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S. The two
+            // u differ by a few roundings (up to about 3 ulp); the 2.5 power and the 2/5 root scale that to about 3 ulp of
+            // the root's value, which is below C_D's binade (half its ulp), and each evaluation's root is within 1.2 ulp of
+            // exact (the sweep above): at most about 3.5 ulp of C_D, asserted 4 (measured worst printed: 1 ulp when
+            // written). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
+            // r |w| underflowing and overflowing (where 1/S is taken as 1/S: a review found s (1/(r |w|)) 1.7e7 ulp off
+            // there), S past 1e300 and below 1e-300, a speed whose r / s overflows, infinite speed and spin.
             var random = new Random(11);
             double worst = 0;
             for (int i = 0; i < 100_000; i++)
@@ -105,13 +107,17 @@ namespace MagnusBall.Tests.Aerodynamics
                 new AeroConditions(5e-324, 100, 0, 0.033, 1.2, 1.8e-5),
                 new AeroConditions(30, 0, 0, 0.033, 1.2, 1.8e-5),
                 new AeroConditions(0, 100, 0, 0.033, 1.2, 1.8e-5),
+                new AeroConditions(1e-300, 1e-307, 0, 0.033, 1.2, 1.8e-5),
+                new AeroConditions(1e-295, 1e-308, 0, 0.033, 1.2, 1.8e-5),
+                new AeroConditions(1e308, 1e308, 0, 2, 1.2, 1.8e-5),
+                new AeroConditions(double.PositiveInfinity, double.PositiveInfinity, 0, 0.033, 1.2, 1.8e-5),
             })
             {
                 worst = Math.Max(worst, Check(c));
             }
 
             TestContext.WriteLine($"worst {worst} ulp of C_D");
-            Assert.That(worst, Is.LessThanOrEqualTo(1));
+            Assert.That(worst, Is.LessThanOrEqualTo(4));
 
             static double Check(in AeroConditions c)
             {

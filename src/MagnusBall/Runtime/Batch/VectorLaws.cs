@@ -77,6 +77,10 @@ namespace MagnusBall.Batch
                     dragValue = c.Value;
                     break;
                 case StepanekDrag _:
+                    // StepanekDrag.FromConditions takes 1/S as 1/S itself where r |w| is not a normal double. The lanes never
+                    // need that (their |w| is at most about 1.3e154 rad/s and their speed above 1e-150 m/s, so an underflowing
+                    // r |w| gives u^2.5 = +inf either way) unless the radius passes about 1e154 m: such a ball goes ball by ball.
+                    supported &= model.Ball.Radius <= 1e150;
                     drag = DragKind.Stepanek;
                     break;
                 default:
