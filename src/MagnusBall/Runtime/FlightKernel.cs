@@ -378,17 +378,9 @@ namespace MagnusBall
             return i;
         }
 
-        // Every component of the state and its derivative finite (the derivative's velocity is the state's): x - x is 0 for
-        // a finite x and NaN otherwise, and a sum of them is 0 only if each is.
+        // Every component of the state and its derivative finite (the derivative's velocity is the state's).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static bool IsFinite(in FlightState y, in StateDerivative k)
-        {
-            Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity, a = k.Acceleration, s = k.AngularAcceleration;
-            double zero = ((p.X - p.X) + (p.Y - p.Y) + (p.Z - p.Z)) + ((v.X - v.X) + (v.Y - v.Y) + (v.Z - v.Z)) +
-                (((w.X - w.X) + (w.Y - w.Y) + (w.Z - w.Z)) + ((a.X - a.X) + (a.Y - a.Y) + (a.Z - a.Z))) +
-                (((s.X - s.X) + (s.Y - s.Y) + (s.Z - s.Z)) + (y.Time - y.Time));
-            return zero == 0;
-        }
+        private static bool IsFinite(in FlightState y, in StateDerivative k) => y.IsFinite && k.Acceleration.IsFinite && k.AngularAcceleration.IsFinite;
 
         internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
         {
