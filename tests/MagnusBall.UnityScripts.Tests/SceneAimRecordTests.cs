@@ -34,9 +34,12 @@ namespace MagnusBall.UnityScripts.Tests
             var r = Array.Find(Recorded, c => c.Name == name);
             TennisShot shot = Array.Find(StandardShots.All(), s => s.Name == name)!;
             ShotReport today = Simulation.Run(shot, Span<MagnusBall.Vector3d>.Empty);
-            // The targets themselves: the driver's flight is not part of the aim solver (bit for bit).
-            Assert.That(today.Landing.X, Is.EqualTo(r.X));
-            Assert.That(today.Landing.Z, Is.EqualTo(r.Z));
+            // The targets themselves: the driver's flight is not part of the aim solver. Bit for bit until the flight kernel
+            // folded Stepanek's lift and drag (equal to the formula to rounding: within 1e-15 of the rates, FlightKernelTests);
+            // now within that rounding accumulated over the flight: at most about 250 steps x 1e-15 of a 10 m flight,
+            // 2.5e-12 m (measured: 6e-15 m). The aims below take the recorded targets, as recorded.
+            Assert.That(today.Landing.X, Is.EqualTo(r.X).Within(2.5e-12));
+            Assert.That(today.Landing.Z, Is.EqualTo(r.Z).Within(2.5e-12));
 
             TennisShot? aimed = Simulation.Aim(shot, r.X, r.Z);
             TennisSwing start = Array.Find(StandardSwings.All(), s => s.Name == name)!;

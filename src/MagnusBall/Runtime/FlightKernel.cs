@@ -37,7 +37,7 @@ namespace MagnusBall
         internal static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
 #endif
 
-        /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the general formula, except a constant lift's folded form: to rounding).</summary>
+        /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the general formula, except the folded forms of a constant lift and of Stepanek's lift: to rounding).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
 
         /// <summary>
@@ -109,6 +109,7 @@ namespace MagnusBall
         private readonly double _viscosity;
         private readonly bool _windVaries;
         private readonly bool _stillAir; // every wind component +0: v - wind is v itself
+        private readonly bool _foldsLift; // k and r in the folded lift's range (FoldsStepanekLift)
 
         internal FlightKernel(FlightModel model, TDrag drag, TLift lift, TDecay decay)
         {
@@ -125,6 +126,7 @@ namespace MagnusBall
             _viscosity = model.Air.DynamicViscosity;
             _windVaries = model.Air.WindProfile != null && model.Up.LengthSquared > 0;
             _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
+            _foldsLift = _factor >= FoldMinimum && _factor <= FoldMaximum && _radius >= FoldMinimum && _radius <= FoldMaximum;
         }
 
         private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
@@ -144,6 +146,113 @@ namespace MagnusBall
             out Vector3d acceleration, out Vector3d spinAcceleration)
         {
             Counter?.Add();
+            if (FoldsStepanekLift)
+            {
+                // Stepanek's lift: the folded form where it applies, else the general formula out of line, so that what is
+                // inlined at each evaluation site stays small enough for the JIT to inline it (with the general code inline
+                // too, Rates was no longer inlined into Rk4Loop, and every evaluation became a call).
+                if (!_windVaries && TryFoldedRates(vx, vy, vz, spin, spinRate, out acceleration, out spinAcceleration))
+                {
+                    return;
+                }
+
+                // Through copies: a caller's variable passed by reference to a call that is not inlined would live in memory
+                // on every path, the folded one too (a store and a load on RK4's dependent chain).
+                Vector3d at = position, around = spin;
+                OutOfLineRates(at, vx, vy, vz, around, spinRate, inverseSpinRate, out Vector3d generalAcceleration, out Vector3d generalSpinAcceleration);
+                acceleration = generalAcceleration;
+                spinAcceleration = generalSpinAcceleration;
+                return;
+            }
+
+            GeneralRates(position, vx, vy, vz, spin, spinRate, inverseSpinRate, out acceleration, out spinAcceleration);
+        }
+
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private void OutOfLineRates(
+            in Vector3d position, double vx, double vy, double vz, in Vector3d spin, double spinRate, double inverseSpinRate,
+            out Vector3d acceleration, out Vector3d spinAcceleration) =>
+            GeneralRates(position, vx, vy, vz, spin, spinRate, inverseSpinRate, out acceleration, out spinAcceleration);
+
+        // The rates with Stepanek's lift folded (StepanekLiftFold), in still air or a uniform wind. False, with nothing
+        // meaningful written, where the fold's range does not hold (then the general formula).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private bool TryFoldedRates(double vx, double vy, double vz, in Vector3d spin, double spinRate, out Vector3d acceleration, out Vector3d spinAcceleration)
+        {
+            acceleration = default;
+            spinAcceleration = default;
+            if (!(_foldsLift && spinRate >= FoldMinimum && spinRate <= FoldMaximum))
+            {
+                return false;
+            }
+
+            // v - wind, as GeneralRates forms it
+            double rx = vx, ry = vy, rz = vz;
+            if (!_stillAir)
+            {
+                rx = vx - _wind.X;
+                ry = vy - _wind.Y;
+                rz = vz - _wind.Z;
+            }
+
+            double wx = spin.X, wy = spin.Y, wz = spin.Z;
+            double qx = wy * rz - wz * ry, qy = wz * rx - wx * rz, qz = wx * ry - wy * rx; // w x v_rel
+            double squared = rx * rx + ry * ry + rz * rz;
+            double transverseSquared = qx * qx + qy * qy + qz * qz;
+            if (!(squared >= FoldMinimumSquare && squared <= FoldMaximumSquare &&
+                (transverseSquared == 0 || (transverseSquared >= FoldMinimumSquare && transverseSquared <= FoldMaximumSquare))))
+            {
+                return false;
+            }
+
+            // Vector3d.LengthOf's value (its squares are a normal double here), and above MinimumAerodynamicSpeed.
+            double speed = System.Math.Sqrt(squared);
+            AeroInputs reads = _drag.Reads | _lift.Reads | _decay.Reads;
+            double spinParameter = (reads & SpinParameterBit) != 0 ? spinRate * (_radius / speed) : 0;
+            var conditions = new AeroConditions(
+                speed, spinRate, 0, _radius, _density, spinParameter, 0,
+                (reads & AeroInputs.ReynoldsNumber) != 0 ? _density * speed * 2 * _radius / _viscosity : 0);
+            double ax = _gravity.X, ay = _gravity.Y, az = _gravity.Z;
+            double liftScale = StepanekLiftFold(squared, transverseSquared, _radius, _factor / spinRate * speed);
+            if (typeof(TDrag) == typeof(StepanekDragLaw))
+            {
+                // Stepanek's drag folded too: -k C_D s v_rel with C_D = 0.508 + G, as (g + lift + 0.508 e) + G e with
+                // e = -k s v_rel, so the late G (the end of the drag's chain: two square roots and the power) meets one
+                // product and one sum, not five operations.
+                double spinPart = StepanekDrag.SpinPart(speed, spinRate, _radius, spinParameter);
+                double scale = -_factor * speed;
+                double ex = rx * scale, ey = ry * scale, ez = rz * scale;
+                acceleration = new Vector3d(
+                    (ax + qx * liftScale + ex * 0.508) + spinPart * ex,
+                    (ay + qy * liftScale + ey * 0.508) + spinPart * ey,
+                    (az + qz * liftScale + ez * 0.508) + spinPart * ez);
+            }
+            else
+            {
+                if (_drag.IsPresent)
+                {
+                    double dragScale = -_factor * _drag.Coefficient(conditions) * speed;
+                    ax += rx * dragScale;
+                    ay += ry * dragScale;
+                    az += rz * dragScale;
+                }
+
+                acceleration = new Vector3d(ax + qx * liftScale, ay + qy * liftScale, az + qz * liftScale);
+            }
+            if (_decay.IsPresent)
+            {
+                spinAcceleration = _decay.SpinAcceleration(spin, conditions);
+            }
+
+            return true;
+        }
+
+        // The general formula's rates (see Rates).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private void GeneralRates(
+            in Vector3d position, double vx, double vy, double vz, in Vector3d spin, double spinRate, double inverseSpinRate,
+            out Vector3d acceleration, out Vector3d spinAcceleration)
+        {
             double ax = _gravity.X, ay = _gravity.Y, az = _gravity.Z;
             spinAcceleration = default;
             bool aero = _drag.IsPresent || _lift.IsPresent;
@@ -245,6 +354,40 @@ namespace MagnusBall
             }
 
             acceleration = new Vector3d(ax, ay, az);
+        }
+
+        /// <summary>
+        /// True where the lift is Stepanek's and no other law reads the transverse spin: Rates then takes the folded lift
+        /// (a constant of the type parameters; the check folds away).
+        /// </summary>
+        /// <remarks>
+        /// A static readonly field, not a property: optimised code reads it as a constant without inlining anything, so the
+        /// other kernels' evaluation sites spend none of the JIT's inlining budget on it (as a property, the thesis kernel's
+        /// four inlined stages ran out of budget and its laws' getters became calls).
+        /// </remarks>
+        private static readonly bool FoldsStepanekLift =
+            typeof(TLift) == typeof(StepanekLiftLaw) && ((default(TDrag).Reads | default(TDecay).Reads) & AeroInputs.TransverseSpinRate) == 0;
+
+        // The range the folded lift is taken in: every product in it stays finite and normal (|w| and s within 1e50 and 1e100
+        // of 1, with k and r within 1e50 of 1 in _foldsLift); outside it the general formula, as before.
+        private const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
+
+        /// <summary>
+        /// Stepanek's lift in folded form: the factor that multiplies w x v_rel. With S_perp = r|w x v_hat|/s =
+        /// r|w x v_rel|/s^2, the law's (k C_L s^2 / |w|) (w x v_hat) is (k s / |w|) C_L (w x v_rel) with
+        /// C_L = r|w x v_rel| / (2.022 r|w x v_rel| + 0.981 s^2): no 1/s, no unit vector and one division, and the
+        /// square root of |w x v_rel|^2 runs beside the speed's (RK4's dependent chain; docs/performance.md). Equal to the
+        /// general formula to rounding (s^2 is the sum of squares, not the rounded speed squared), not bit for bit.
+        /// </summary>
+        /// <param name="speedSquared">|v_rel|^2.</param>
+        /// <param name="transverseSquared">|w x v_rel|^2.</param>
+        /// <param name="radius">r.</param>
+        /// <param name="scale">k s / |w|.</param>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static double StepanekLiftFold(double speedSquared, double transverseSquared, double radius, double scale)
+        {
+            double rt = radius * System.Math.Sqrt(transverseSquared);
+            return scale * (rt / (2.022 * rt + 0.981 * speedSquared));
         }
 
         // Rates for laws that read no spin parameter (see Rates), from the air-relative velocity r: gravity already in a.

@@ -192,9 +192,11 @@ namespace MagnusBall
         /// struct the JIT inlines, and only the inputs some law reads are computed (no Reynolds number unless a law
         /// reads it). Laws of your own (any <see cref="IDragModel"/>, <see cref="ILiftModel"/> or
         /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
-        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit, except with a
-        /// lift law that reads no spin parameter (a constant C_L, as in <see cref="Thesis"/>): that force is computed in a
-        /// folded form, equal to the formula to rounding (within about 4 ulp of the largest term).
+        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit, except in two
+        /// folded forms, equal to the formula to rounding (within about 4 ulp of the largest term), which compute the same
+        /// force with fewer operations after the speed's square root: a lift law that reads no spin parameter (a constant
+        /// C_L, as in <see cref="Thesis"/>), and <see cref="StepanekLift"/> (with <see cref="StepanekDrag"/> beside it, in
+        /// still air or a uniform wind, for speeds and spins within 1e100 and 1e50 of 1: the tennis presets).
         /// </remarks>
         public StateDerivative Derivative(in FlightState state)
         {
@@ -208,7 +210,7 @@ namespace MagnusBall
 
         /// <summary>
         /// The general formula, every law called through its interface: what <see cref="Derivative"/> computes, bit for
-        /// bit (the tests hold the kernel to it).
+        /// bit, except in the kernel's folded forms (to rounding; the tests hold the kernel to both).
         /// </summary>
         /// <param name="state">The state.</param>
         internal StateDerivative GeneralDerivative(in FlightState state)

@@ -12,13 +12,15 @@ namespace MagnusBall.Tests.Aerodynamics
     [TestFixture]
     public class StepanekPowTests
     {
-        // The worst error of the sweep below, measured when the function was written: 1.19 ulp of the exact x^(-2/5).
-        // Bound asserted: 1.5 ulp (the measured worst plus a margin for the sweep's other random points; 1e-15
-        // relative, the brief's target, is 4.5 ulp).
-        private const double UlpBound = 1.5;
+        // The worst error of the sweep below, measured when the function was written: 1.75 ulp of the exact x^(-2/5) (the
+        // degree-23 polynomial's own error is below 4e-19; what remains is the rounding of its Estrin sum, about 1.3 ulp
+        // measured alone, then the rounded constant 2^(-2r/5) and the product with it, 0.5 ulp each at most, so 2.3 ulp
+        // bounds it from above). Bound asserted: 2 ulp, the measured worst with a margin for the sweep's other points (1e-15
+        // relative, the brief's target, is 4.5 ulp). The earlier form (a correction step on M^2 y^5 = 1) measured 1.19 ulp.
+        private const double UlpBound = 2.0;
 
         [Test]
-        public void WholeRange_IsWithinOnePointFiveUlpOfTheExactPower()
+        public void WholeRange_IsWithinTwoUlpOfTheExactPower()
         {
             var random = new Random(11);
             double worst = 0, worstAt = 0;

@@ -197,6 +197,43 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void BallsOutsideTheStepanekFold_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // The kernel folds Stepanek's lift (and drag) only within a range of |w|, s^2 and |w x v|^2; outside it, the general
+            // formula. The lanes compute the fold: a ball outside its range takes the per-ball kernel step, its neighbours in
+            // the vector keep theirs (all equal to the single-ball path).
+            var ground = new Plane(new Vector3d(0, 0, -1e6), Vector3d.UnitZ);
+            foreach (FlightModel model in new[]
+            {
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+                new FlightModel(Ball.Tennis, new Air(1.1, new Vector3d(3, -2, 0.5)), Gravity.ZUp, ConstantDrag.CrossLindseyTennis, StepanekLift.Instance),
+                new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, null, StepanekLift.Instance),
+            })
+            {
+                Vector3d wind = model.Air.Wind;
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 1e-60, 0)),          // |w| below 1e-50
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 3e50, 1)),           // |w| past 1e50
+                    new FlightState(new Vector3d(0, 0, 1), wind + new Vector3d(30, 0, 0), new Vector3d(1, 1e-110, 0)), // |w x v|^2 below 1e-200
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 3, 9), new Vector3d(-40, 200, 5)),
+                };
+                (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
+
+                for (int step = 0; step < 24; step++)
+                {
+                    batch.Advance(1.0 / 240);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        Assert.That(steppers[i].TryStep(1.0 / 240, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}, step {step}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {step}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void BallsFasterThan1e154_FlyAsTheSingleBallPath_BitForBit()
         {
             // The vector lanes take the speed as a plain square root of the squares, which overflows past about 1.34e154

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Collections.Generic;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Flight;
@@ -125,8 +126,9 @@ namespace MagnusBall.Tests.Integration
             }
         }
 
-        // A lift law that reads no spin parameter (constant C_L) runs through the folded form (C_L s / |w|) (w x v_rel).
-        private static bool Folded(string laws) => laws.Contains("ConstantLiftLaw");
+        // A lift law that reads no spin parameter (constant C_L) runs through the folded form (C_L s / |w|) (w x v_rel), and
+        // Stepanek's lift through its own (FlightKernel.StepanekLiftFold, with Stepanek's drag folded beside it).
+        private static bool Folded(string laws) => laws.Contains("ConstantLiftLaw") || laws.Contains("StepanekLiftLaw");
 
         [Test]
         public void FoldedDerivative_EqualsTheGeneralFormula_ToRounding()
@@ -151,6 +153,64 @@ namespace MagnusBall.Tests.Integration
                     AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
                 }
             }
+        }
+
+        private static IEnumerable<FlightModel> StepanekLiftModels()
+        {
+            var windy = new Air(1.1, new Vector3d(3, -2, 0.5));
+            yield return new FlightModel(Ball.Tennis, windy, Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            yield return new FlightModel(Ball.Tennis, new Air(1.21), Gravity.YUp, StepanekDrag.Instance, StepanekLift.Instance);
+            yield return new FlightModel(Ball.Tennis, windy, Gravity.ZUp, ConstantDrag.CrossLindseyTennis, StepanekLift.Instance, SpeedProportionalSpinDecay.TennisCrossLindsey);
+            yield return new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, null, StepanekLift.Instance);
+            // A wind profile: the general formula throughout (the fold is for still air and a uniform wind).
+            yield return new FlightModel(Ball.Tennis, new Air(1.2).WithLogarithmicWind(new Vector3d(6, 1, 0)), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance);
+        }
+
+        // States outside the range the Stepanek fold is taken in (FlightKernel.FoldMinimum and the rest), relative to the
+        // model's air: the general formula there, bit for bit. The first two overflow within an RK4 step.
+        private static IEnumerable<FlightState> StatesOutsideTheFold(FlightModel model)
+        {
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(3e100, 1, 5), new Vector3d(10, 150, 20));   // s^2 past 1e200
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(1e60, 0, 0), new Vector3d(0, 1e45, 0));     // |w x v|^2 past 1e200
+            Vector3d wind = model.Air.Wind;
+            yield return new FlightState(new Vector3d(0, 0, 1), wind + new Vector3d(3e-101, 0, 1e-101), new Vector3d(10, 150, 20)); // s^2 below 1e-200
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 1e-60, 0));      // |w| below 1e-50
+            yield return new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 3e50, 1));       // |w| past 1e50
+            yield return new FlightState(new Vector3d(0, 0, 1), wind + new Vector3d(30, 0, 0), new Vector3d(1, 1e-110, 0)); // |w x v|^2 = 9e-218: below 1e-200, not 0
+        }
+
+        [Test]
+        public void FoldedStepanekLift_EqualsTheGeneralFormula_ToRounding()
+        {
+            // The fold differs from the general formula in rounding only: C_L from the sum of squares rather than the rounded
+            // speed squared, w x v_rel rather than w x v_hat, and the drag as (g + lift + 0.508 e) + G e. Each is a few
+            // roundings of terms no larger than gravity + k s^2 (C_D + C_L) with C_D <= 0.7981 and C_L <= 0.4946 (the laws'
+            // limits), so within 1e-15 (about 4.5 ulp) of that sum, component by component. The spin's rates are untouched.
+            double worst = 0;
+            foreach (FlightModel model in StepanekLiftModels())
+            {
+                foreach (FlightState state in States())
+                {
+                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative general = model.GeneralDerivative(state);
+                    double speed = (state.Velocity - model.Air.WindAt(state.Position, model.Up)).Length;
+                    double scale = model.Gravity.Length + model.AerodynamicFactor * speed * speed * (0.7981 + 0.4946);
+                    double difference = (fast.Acceleration - general.Acceleration).Length;
+                    worst = Math.Max(worst, difference / scale);
+                    Assert.That(difference, Is.LessThanOrEqualTo(1e-15 * scale), $"{model}: {state}");
+                    AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
+                }
+
+                foreach (FlightState state in StatesOutsideTheFold(model))
+                {
+                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative general = model.GeneralDerivative(state);
+                    AssertSame(fast.Acceleration, general.Acceleration, state);
+                    AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
+                }
+            }
+
+            TestContext.WriteLine($"worst difference {worst:E2} of |g| + k s^2 (C_D + C_L)");
         }
 
         [TestCaseSource(nameof(Models))]
@@ -382,9 +442,9 @@ namespace MagnusBall.Tests.Integration
                 FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(3, -2, 0.5)), Gravity.ZUp),
                 new FlightModel(Ball.Tennis, new Air(1.2).WithLogarithmicWind(new Vector3d(6, 1, 0)), Gravity.ZUp,
                     ConstantDrag.CrossLindseyTennis, new ConstantLift(-0.3), new ExponentialSpinDecay(3)),
-            })
+            }.Concat(StepanekLiftModels()))
             {
-                foreach (FlightState state in States())
+                foreach (FlightState state in States().Concat(StatesOutsideTheFold(model).Skip(2)))
                 {
                     foreach (double step in new[] { 1.0 / 240, 0.03 })
                     {

@@ -36,20 +36,40 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary><see cref="DragCoefficient"/>'s arithmetic, shared with the flight kernel and (lane by lane) the ball batch.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        internal static double FromConditions(in AeroConditions conditions)
+        internal static double FromConditions(in AeroConditions conditions) =>
+            FromParts(conditions.Speed, conditions.SpinRate, conditions.Radius, conditions.SpinParameter);
+
+        /// <summary>
+        /// <see cref="FromConditions"/> from the four numbers it reads (the flight kernel passes them in registers rather
+        /// than through an <see cref="AeroConditions"/> in memory, which put store-to-load delays on RK4's chain).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static double FromParts(double speed, double spinRate, double radius, double spinParameter) =>
+            0.508 + SpinPart(speed, spinRate, radius, spinParameter); // S <= 0: 0.508 + 0, the no-spin value
+
+        /// <summary>
+        /// C_D - 0.508 = (22.053 + 4.196 (1/S)^2.5)^-0.4 (0 for S &lt;= 0): <see cref="FromParts"/> without the constant, which
+        /// the flight kernel's folded form adds to the drag by itself (FlightKernel's TryFoldedRates).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static double SpinPart(double speed, double spinRate, double radius, double spinParameter)
         {
-            if (!(conditions.SpinParameter > 0))
+            if (!(spinParameter > 0))
             {
-                return 0.508;
+                return 0;
             }
 
             // u = 1/S = s / (r |w|) where r |w| is a normal double (the test depends on the spin only, so it is off the
             // speed's path); elsewhere (r |w| subnormal or past double.MaxValue, where s (1/(r |w|)) would give the wrong
             // limit or inf x 0) 1/S itself, as Evaluate takes it.
-            double rw = conditions.Radius * conditions.SpinRate;
-            double u = rw >= 2.2250738585072014e-308 && rw <= double.MaxValue ? conditions.Speed * (1.0 / rw) : 1.0 / conditions.SpinParameter;
-            return 0.508 + PowMinusTwoFifths(22.053 + 4.196 * (u * u * Math.Sqrt(u)));
+            double rw = radius * spinRate;
+            double u = rw >= 2.2250738585072014e-308 && rw <= double.MaxValue ? speed * (1.0 / rw) : 1.0 / spinParameter;
+            return PowMinusTwoFifths(Argument(u));
         }
+
+        // 22.053 + 4.196 u^2.5 as (4.196 u^2) sqrt(u): the product 4.196 u^2 is formed while the square root runs.
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double Argument(double u) => 22.053 + 4.196 * (u * u) * Math.Sqrt(u);
 
         /// <summary>C_D at spin parameter <paramref name="spinParameter"/> (S &lt;= 0 gives the no-spin value 0.508).</summary>
         /// <param name="spinParameter">S = r|w|/s.</param>
@@ -64,27 +84,29 @@ namespace MagnusBall.Aerodynamics
             // PowMinusTwoFifths instead of Math.Pow (Pow dominated the model's cost, docs/performance.md). It overflows
             // to +inf for tiny S; inf^-0.4 is 0, the correct limit.
             double u = 1.0 / spinParameter;
-            return 0.508 + PowMinusTwoFifths(22.053 + 4.196 * (u * u * Math.Sqrt(u)));
+            return 0.508 + PowMinusTwoFifths(Argument(u));
         }
 
         /// <summary>
-        /// x^(-2/5) for x &gt;= 1 (+inf gives 0): the law's Math.Pow(x, -0.4), about twice as cheap and the same on every
-        /// runtime (only + - * and bit operations, no library call), within 1.2 ulp of the exact x^(-2/5) over the whole
-        /// range (StepanekDragTests sweeps it).
+        /// x^(-2/5) for x &gt;= 1 (+inf gives 0): the law's Math.Pow(x, -0.4), about three times as cheap in a flight and the
+        /// same on every runtime (only + - * and bit operations, no library call), within 2 ulp of the exact x^(-2/5) over
+        /// the whole range (StepanekPowTests sweeps it: 1.7 ulp measured).
         /// </summary>
         /// <remarks>
-        /// <para>Range reduction: x = m 2^e with m in [1, 2), e = 5q + r with r in 0..4, so x^(-2/5) = 2^(-2q) M^(-2/5)
-        /// with M = m 2^r in [1, 32). A degree-7 polynomial in s = 2m - 3 (Chebyshev interpolant of m^(-2/5) on [1, 2],
-        /// relative error 2.3e-7) times 2^(-2r/5) gives y0 ~ M^(-2/5); one third-order correction on the exact relation
-        /// M^2 y^5 = 1 finishes it: with d = 1 - M^2 y0^5, y = y0 (1 + d/5 + 3 d^2/25), error about 0.09 d^3 ~ 1e-19, so
-        /// what remains is rounding. The constants need not be exact: the correction absorbs their error; they only
-        /// have to be the same everywhere, which literals are.</para>
+        /// <para>Range reduction: x = m 2^e with m in [1, 2), e = 5q + r with r in 0..4, so x^(-2/5) = 2^(-2q) 2^(-2r/5)
+        /// m^(-2/5). m^(-2/5) is a degree-23 polynomial in t = m - 3/2 (the Chebyshev interpolant on [1, 2], computed in
+        /// 60-digit arithmetic and rounded to doubles; its own error is below 4e-19, so what remains is rounding), summed as
+        /// C0 + t R(t) with R by Estrin's scheme: pairs, then quadruples, ..., so the terms run side by side and the chain is
+        /// about ten operations long where Horner's would be 46. The earlier form (a degree-7 polynomial refined by a
+        /// third-order correction on M^2 y^5 = 1) was within 1.2 ulp, but its correction lay on RK4's dependent chain; this
+        /// one is about 6 ns shorter per evaluation (docs/performance.md).</para>
         /// <para>Math.Pow(x, -0.4) itself computes x to the double nearest -0.4, which is 2.2e-17 below -2/5: it
         /// differs from the exact law by up to 142 ulp at x ~ 1e308 (a spin parameter of 1e-123), while this function
-        /// stays within 1.2 ulp of it.</para>
+        /// stays within 2 ulp of it.</para>
         /// <para>Written for x &gt;= 1 (the law's argument is at least 22.053); a NaN or an x below 1 is not handled.</para>
         /// </remarks>
         /// <param name="x">The argument, &gt;= 1 or +inf.</param>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         internal static double PowMinusTwoFifths(double x)
         {
             if (!(x <= double.MaxValue))
@@ -97,30 +119,55 @@ namespace MagnusBall.Aerodynamics
             double m = BitConverter.Int64BitsToDouble((bits & 0x000F_FFFF_FFFF_FFFFL) | 0x3FF0_0000_0000_0000L);
             int q = e / 5;
             int r = e - 5 * q;
-            double s = 2 * m - 3;
-            double s2 = s * s;
-            double p = (C0 + s * C1) + s2 * (C2 + s * C3) + (s2 * s2) * ((C4 + s * C5) + s2 * (C6 + s * C7));
-            double y = p * TwoToMinusTwoFifths[r];
-            double big = m * BitConverter.Int64BitsToDouble((long)(1023 + r) << 52); // M = m 2^r, exact
-            double a = big * big;
-            double y2 = y * y;
-            double d = 1 - (a * y) * (y2 * y2);
-            y += (y * d) * (0.2 + d * 0.12);
-            return y * BitConverter.Int64BitsToDouble((long)(1023 - 2 * q) << 52); // 2^(-2q), exact (q <= 204)
+            double t = m - 1.5; // exact
+            return (C0 + t * Rest(t)) * TwoToMinusTwoFifths[r] * BitConverter.Int64BitsToDouble((long)(1023 - 2 * q) << 52); // 2^(-2q), exact (q <= 204)
         }
 
-        // m^(-2/5) on [1, 2] in powers of s = 2m - 3: the degree-7 Chebyshev interpolant (relative error 2.3e-7).
-        internal const double C0 = 0.8502828422008286;
-        internal const double C1 = -0.1133710173698683;
-        internal const double C2 = 0.026458296327941805;
-        internal const double C3 = -0.007055774091898004;
-        internal const double C4 = 0.0019738696706810277;
-        internal const double C5 = -0.000578542072451893;
-        internal const double C6 = 0.0002139579862423524;
-        internal const double C7 = -6.547004208679041E-05;
+        // R(t) of m^(-2/5) = C0 + t R(t) at t = m - 3/2, by Estrin's scheme (VectorLaws.PowMinusTwoFifths takes the same steps).
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double Rest(double t)
+        {
+            double t2 = t * t, t4 = t2 * t2, t8 = t4 * t4, t16 = t8 * t8;
+            double q0 = (D0 + t * D1) + t2 * (D2 + t * D3);
+            double q1 = (D4 + t * D5) + t2 * (D6 + t * D7);
+            double q2 = (D8 + t * D9) + t2 * (D10 + t * D11);
+            double q3 = (D12 + t * D13) + t2 * (D14 + t * D15);
+            double q4 = (D16 + t * D17) + t2 * (D18 + t * D19);
+            double q5 = (D20 + t * D21) + t2 * D22;
+            return ((q0 + t4 * q1) + t8 * (q2 + t4 * q3)) + t16 * (q4 + t4 * q5);
+        }
 
-        // 2^(-2r/5), r = 0..4 (the doubles nearest; the correction step absorbs their rounding).
-        private static readonly double[] TwoToMinusTwoFifths = { 1.0, 0.757858283255199, 0.5743491774985175, 0.43527528164806206, 0.32987697769322355 };
+        // m^(-2/5) on [1, 2] = C0 + t (D0 + D1 t + ... + D22 t^22) with t = m - 3/2: the degree-23 Chebyshev interpolant
+        // (error below 4e-19), computed in powers of s = 2t = 2m - 3 and written here for t, each coefficient times the
+        // power of two that makes the two the same numbers (D_k = c_(k+1) 2^(k+1)): exact, so the sum is the same, bit for bit,
+        // one operation shorter (t = m - 1.5 is exact).
+        internal const double C0 = 0.8502830004171938;
+        internal const double D0 = -0.22674213344458505;
+        internal const double D1 = 0.10581299560747306;
+        internal const double D2 = -0.05643359765731898;
+        internal const double D3 = 0.03197903867247056;
+        internal const double D4 = -0.01876103602118207;
+        internal const double D5 = 0.011256621613470345;
+        internal const double D6 = -0.006861178888242232;
+        internal const double D7 = 0.004231060285063281;
+        internal const double D8 = -0.0026326597320797005;
+        internal const double D9 = 0.001649800766625627;
+        internal const double D10 = -0.0010398744364568877;
+        internal const double D11 = 0.0006585775108352798;
+        internal const double D12 = -0.00041878760521706277;
+        internal const double D13 = 0.0002673178211823087;
+        internal const double D14 = -0.00017108440349645348;
+        internal const double D15 = 0.00010920006130503545;
+        internal const double D16 = -7.022615884999406e-05;
+        internal const double D17 = 4.767903425507203e-05;
+        internal const double D18 = -3.0794816575262266e-05;
+        internal const double D19 = 1.348930395338362e-05;
+        internal const double D20 = -8.715802210227895e-06;
+        internal const double D21 = 1.5441405801522207e-05;
+        internal const double D22 = -1.0039743760367213e-05;
+
+        // 2^(-2r/5), r = 0..4 (the doubles nearest).
+        internal static readonly double[] TwoToMinusTwoFifths = { 1.0, 0.757858283255199, 0.5743491774985175, 0.43527528164806206, 0.32987697769322355 };
 
         /// <inheritdoc />
         public override string ToString() => "StepanekDrag";

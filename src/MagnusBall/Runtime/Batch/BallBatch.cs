@@ -362,8 +362,9 @@ namespace MagnusBall.Batch
             Vector<double> nax, nay, naz, nsx, nsy, nsz;
             // Lanes where a decaying spin's stage spin has squares past double.MaxValue (the check above sees only the
             // start spin; with an exponential decay and a step several time constants long, the stage spins of RK4 grow):
-            // the kernel's step for those balls, as for the start spin.
-            Vector<long> spinOverflow = Vector<long>.Zero;
+            // the kernel's step for those balls, as for the start spin. Likewise lanes the laws mark as computed otherwise than
+            // the kernel computes them (Stepanek's lift outside its folded form's range).
+            Vector<long> perBall = Vector<long>.Zero;
             for (int stage = 0; ; stage++)
             {
                 if (stage < 3)
@@ -403,10 +404,11 @@ namespace MagnusBall.Batch
 
                 if (spins)
                 {
-                    spinOverflow |= Vector.GreaterThan(nwx * nwx + nwy * nwy + nwz * nwz, new Vector<double>(double.MaxValue));
+                    perBall |= Vector.GreaterThan(nwx * nwx + nwy * nwy + nwz * nwz, new Vector<double>(double.MaxValue));
                 }
 
-                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz);
+                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz, out Vector<long> unfolded);
+                perBall |= unfolded;
                 if (stage == 3)
                 {
                     break;
@@ -467,7 +469,7 @@ namespace MagnusBall.Batch
             Vector<long> near = ~(Vector.GreaterThan(f0, reach) & Vector.GreaterThan(f1, reach));
             Vector<double> check = (npx - npx) + (npy - npy) + (npz - npz) + (nvx - nvx) + (nvy - nvy) + (nvz - nvz) +
                 (nwx - nwx) + (nwy - nwy) + (nwz - nwz) + (nax - nax) + (nay - nay) + (naz - naz) + (nsx - nsx) + (nsy - nsy) + (nsz - nsz);
-            Vector<long> bad = ~Vector.Equals(check, Vector<double>.Zero) | spinOverflow;
+            Vector<long> bad = ~Vector.Equals(check, Vector<double>.Zero) | perBall;
             Vector<long> special = (near | bad) & active;
             Vector<long> plain = active & ~special;
 

@@ -44,6 +44,10 @@ namespace MagnusBall.Batch
         private readonly double _radius;
         private readonly Vector3d _gravity;
         private readonly Vector3d _wind;
+        private readonly bool _foldsLift; // the kernel folds Stepanek's lift for this model (k and r in range)
+
+        // FlightKernel's fold range (FlightKernel<,,>.FoldMinimum and the rest).
+        private const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
 
         private VectorLaws(
             bool supported, DragKind drag, LiftKind lift, DecayKind decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
@@ -60,6 +64,7 @@ namespace MagnusBall.Batch
             _radius = model.Ball.Radius;
             _gravity = model.Gravity;
             _wind = model.Air.Wind;
+            _foldsLift = _factor >= FoldMinimum && _factor <= FoldMaximum && _radius >= FoldMinimum && _radius <= FoldMaximum;
         }
 
         internal static VectorLaws For(FlightModel model)
@@ -128,13 +133,19 @@ namespace MagnusBall.Batch
             return new VectorLaws(supported, drag, lift, decay, dragValue, liftValue, decayFactor, model);
         }
 
-        /// <summary>The acceleration and spin acceleration at velocity v and spin w, lane by lane (the kernel's Rates).</summary>
+        /// <summary>
+        /// The acceleration and spin acceleration at velocity v and spin w, lane by lane (the kernel's Rates).
+        /// <paramref name="unfolded"/> marks the lanes where the kernel would take the general formula for Stepanek's
+        /// lift instead of its folded form (values out of the fold's range): their numbers here are not the kernel's,
+        /// and the caller steps those balls one by one.
+        /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal void Rates(
             Vector<double> vx, Vector<double> vy, Vector<double> vz, Vector<double> wx, Vector<double> wy, Vector<double> wz,
             out Vector<double> ax, out Vector<double> ay, out Vector<double> az,
-            out Vector<double> sx, out Vector<double> sy, out Vector<double> sz)
+            out Vector<double> sx, out Vector<double> sy, out Vector<double> sz, out Vector<long> unfolded)
         {
+            unfolded = Vector<long>.Zero;
             var gx = new Vector<double>(_gravity.X);
             var gy = new Vector<double>(_gravity.Y);
             var gz = new Vector<double>(_gravity.Z);
@@ -193,6 +204,58 @@ namespace MagnusBall.Batch
                 return;
             }
 
+            if (Lift == LiftKind.Stepanek && _foldsLift)
+            {
+                // The kernel's folded Stepanek lift and drag (FlightKernel's TryFoldedRates), the same operations. Lanes outside
+                // the range the kernel folds in (where it takes the general formula) are marked for the per-ball step.
+                Vector<double> qx = wy * rz - wz * ry, qy = wz * rx - wx * rz, qz = wx * ry - wy * rx;
+                Vector<double> squared = rx * rx + ry * ry + rz * rz;
+                Vector<double> transverseSquared = qx * qx + qy * qy + qz * qz;
+                Vector<double> rt = new Vector<double>(_radius) * Vector.SquareRoot(transverseSquared);
+                Vector<double> cl = rt / (new Vector<double>(2.022) * rt + new Vector<double>(0.981) * squared);
+                Vector<double> liftScale = new Vector<double>(_factor) / spinRate * speed * cl;
+                Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
+                var low = new Vector<double>(FoldMinimumSquare);
+                var high = new Vector<double>(FoldMaximumSquare);
+                Vector<long> inRange = Vector.GreaterThanOrEqual(spinRate, new Vector<double>(FoldMinimum)) &
+                    Vector.LessThanOrEqual(spinRate, new Vector<double>(FoldMaximum)) &
+                    Vector.GreaterThanOrEqual(squared, low) & Vector.LessThanOrEqual(squared, high) &
+                    (Vector.Equals(transverseSquared, Vector<double>.Zero) |
+                        (Vector.GreaterThanOrEqual(transverseSquared, low) & Vector.LessThanOrEqual(transverseSquared, high)));
+                unfolded = lifts & ~inRange;
+                Vector<double> fx = gx + qx * liftScale, fy = gy + qy * liftScale, fz = gz + qz * liftScale;
+                if (Drag == DragKind.Stepanek)
+                {
+                    Vector<double> spinPart = StepanekSpinPart(spinRate * inverse, speed, spinRate);
+                    Vector<double> scale = new Vector<double>(_negativeFactor) * speed;
+                    Vector<double> ex = rx * scale, ey = ry * scale, ez = rz * scale;
+                    var constant = new Vector<double>(0.508);
+                    fx = (fx + ex * constant) + spinPart * ex;
+                    fy = (fy + ey * constant) + spinPart * ey;
+                    fz = (fz + ez * constant) + spinPart * ez;
+                    // Lanes that fly without lift (|w| at or below FlightModel.MinimumLiftSpinRate): the general drag.
+                    Vector<double> dragScale = new Vector<double>(_negativeFactor) * (constant + spinPart) * speed;
+                    ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
+                    ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
+                    az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
+                }
+                else if (Drag == DragKind.Constant)
+                {
+                    Vector<double> dragScale = new Vector<double>(_dragConstant) * speed;
+                    ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
+                    ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
+                    az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
+                    fx = ax + qx * liftScale;
+                    fy = ay + qy * liftScale;
+                    fz = az + qz * liftScale;
+                }
+
+                ax = Vector.ConditionalSelect(lifts, fx, ax);
+                ay = Vector.ConditionalSelect(lifts, fy, ay);
+                az = Vector.ConditionalSelect(lifts, fz, az);
+                return;
+            }
+
             if (Drag != DragKind.None)
             {
                 Vector<double> dragScale;
@@ -239,12 +302,17 @@ namespace MagnusBall.Batch
 
         // Aerodynamics.StepanekDrag.FromConditions, lane by lane: spin parameter s, speed and spin rate.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private Vector<double> StepanekDrag(Vector<double> s, Vector<double> speed, Vector<double> spinRate)
+        private Vector<double> StepanekDrag(Vector<double> s, Vector<double> speed, Vector<double> spinRate) =>
+            new Vector<double>(0.508) + StepanekSpinPart(s, speed, spinRate);
+
+        // Aerodynamics.StepanekDrag.SpinPart, lane by lane (0 where S <= 0).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private Vector<double> StepanekSpinPart(Vector<double> s, Vector<double> speed, Vector<double> spinRate)
         {
             Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
             Vector<double> u = speed * (Vector<double>.One / (new Vector<double>(_radius) * spinRate));
-            Vector<double> x = new Vector<double>(22.053) + new Vector<double>(4.196) * (u * u * Vector.SquareRoot(u));
-            return Vector.ConditionalSelect(positive, new Vector<double>(0.508) + PowMinusTwoFifths(x), new Vector<double>(0.508));
+            Vector<double> x = new Vector<double>(22.053) + new Vector<double>(4.196) * (u * u) * Vector.SquareRoot(u);
+            return Vector.ConditionalSelect(positive, PowMinusTwoFifths(x), Vector<double>.Zero);
         }
 
         // Aerodynamics.StepanekLift.Evaluate, lane by lane.
@@ -267,30 +335,28 @@ namespace MagnusBall.Batch
             Vector<double> biased = Vector.ConvertToDouble(bits & new Vector<long>(0x7FF0_0000_0000_0000L)) * new Vector<double>(1.0 / 4503599627370496.0);
             Vector<double> e = biased - new Vector<double>(1023);
             Vector<double> m = Vector.AsVectorDouble((bits & new Vector<long>(0x000F_FFFF_FFFF_FFFFL)) | new Vector<long>(0x3FF0_0000_0000_0000L));
-            // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 has a fractional part in [0.1, 0.9], far from an integer.
             // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 - 0.5 lies within 0.4 of q, and adding and subtracting 2^52 rounds it
             // to the nearest integer (exact: every value here is a small integer or within 2^52).
             Vector<double> q = (((e + new Vector<double>(0.5)) * new Vector<double>(0.2) - new Vector<double>(0.5)) + new Vector<double>(Magic)) -
                 new Vector<double>(Magic);
             Vector<double> r = e - new Vector<double>(5) * q;
-            Vector<double> s = new Vector<double>(2) * m - new Vector<double>(3);
-            Vector<double> s2 = s * s;
-            Vector<double> p = (new Vector<double>(Aerodynamics.StepanekDrag.C0) + s * new Vector<double>(Aerodynamics.StepanekDrag.C1)) +
-                s2 * (new Vector<double>(Aerodynamics.StepanekDrag.C2) + s * new Vector<double>(Aerodynamics.StepanekDrag.C3)) +
-                (s2 * s2) * ((new Vector<double>(Aerodynamics.StepanekDrag.C4) + s * new Vector<double>(Aerodynamics.StepanekDrag.C5)) +
-                    s2 * (new Vector<double>(Aerodynamics.StepanekDrag.C6) + s * new Vector<double>(Aerodynamics.StepanekDrag.C7)));
-            // 2^(-2r/5) and 2^r for r = 0..4 by selection (the scalar code reads a table and builds 2^r from bits).
-            Vector<double> table = Vector<double>.One, power = Vector<double>.One;
-            Select(r, 1, 0.757858283255199, 2, ref table, ref power);
-            Select(r, 2, 0.5743491774985175, 4, ref table, ref power);
-            Select(r, 3, 0.43527528164806206, 8, ref table, ref power);
-            Select(r, 4, 0.32987697769322355, 16, ref table, ref power);
+            Vector<double> t = m - new Vector<double>(1.5);
+            Vector<double> t2 = t * t, t4 = t2 * t2, t8 = t4 * t4, t16 = t8 * t8;
+            Vector<double> q0 = Pair(t, Aerodynamics.StepanekDrag.D0, Aerodynamics.StepanekDrag.D1) + t2 * Pair(t, Aerodynamics.StepanekDrag.D2, Aerodynamics.StepanekDrag.D3);
+            Vector<double> q1 = Pair(t, Aerodynamics.StepanekDrag.D4, Aerodynamics.StepanekDrag.D5) + t2 * Pair(t, Aerodynamics.StepanekDrag.D6, Aerodynamics.StepanekDrag.D7);
+            Vector<double> q2 = Pair(t, Aerodynamics.StepanekDrag.D8, Aerodynamics.StepanekDrag.D9) + t2 * Pair(t, Aerodynamics.StepanekDrag.D10, Aerodynamics.StepanekDrag.D11);
+            Vector<double> q3 = Pair(t, Aerodynamics.StepanekDrag.D12, Aerodynamics.StepanekDrag.D13) + t2 * Pair(t, Aerodynamics.StepanekDrag.D14, Aerodynamics.StepanekDrag.D15);
+            Vector<double> q4 = Pair(t, Aerodynamics.StepanekDrag.D16, Aerodynamics.StepanekDrag.D17) + t2 * Pair(t, Aerodynamics.StepanekDrag.D18, Aerodynamics.StepanekDrag.D19);
+            Vector<double> q5 = Pair(t, Aerodynamics.StepanekDrag.D20, Aerodynamics.StepanekDrag.D21) + t2 * new Vector<double>(Aerodynamics.StepanekDrag.D22);
+            Vector<double> rest = ((q0 + t4 * q1) + t8 * (q2 + t4 * q3)) + t16 * (q4 + t4 * q5);
+            Vector<double> p = new Vector<double>(Aerodynamics.StepanekDrag.C0) + t * rest;
+            // 2^(-2r/5) for r = 0..4 by selection (the scalar code reads StepanekDrag.TwoToMinusTwoFifths; a test holds the two equal).
+            Vector<double> table = Vector<double>.One;
+            Select(r, 1, 0.757858283255199, ref table);
+            Select(r, 2, 0.5743491774985175, ref table);
+            Select(r, 3, 0.43527528164806206, ref table);
+            Select(r, 4, 0.32987697769322355, ref table);
             Vector<double> y = p * table;
-            Vector<double> big = m * power;
-            Vector<double> a = big * big;
-            Vector<double> y2 = y * y;
-            Vector<double> d = Vector<double>.One - (a * y) * (y2 * y2);
-            y += (y * d) * (new Vector<double>(0.2) + d * new Vector<double>(0.12));
             // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
             // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
             // which Vector<T> lacks on some runtimes).
@@ -305,11 +371,11 @@ namespace MagnusBall.Batch
         private const long MagicBits = 0x4330_0000_0000_0000L; // its bit pattern
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Select(Vector<double> r, double value, double tableValue, double powerValue, ref Vector<double> table, ref Vector<double> power)
-        {
-            Vector<long> hit = Vector.Equals(r, new Vector<double>(value));
-            table = Vector.ConditionalSelect(hit, new Vector<double>(tableValue), table);
-            power = Vector.ConditionalSelect(hit, new Vector<double>(powerValue), power);
-        }
+        private static void Select(Vector<double> r, double value, double tableValue, ref Vector<double> table) =>
+            table = Vector.ConditionalSelect(Vector.Equals(r, new Vector<double>(value)), new Vector<double>(tableValue), table);
+
+        // c0 + t c1, the Estrin scheme's first level (Aerodynamics.StepanekDrag.Rest).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> Pair(Vector<double> t, double c0, double c1) => new Vector<double>(c0) + t * new Vector<double>(c1);
     }
 }
