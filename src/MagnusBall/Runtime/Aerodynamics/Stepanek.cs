@@ -120,7 +120,10 @@ namespace MagnusBall.Aerodynamics
             int q = e / 5;
             int r = e - 5 * q;
             double t = m - 1.5; // exact
-            return (C0 + t * Rest(t)) * TwoToMinusTwoFifths[r] * BitConverter.Int64BitsToDouble((long)(1023 - 2 * q) << 52); // 2^(-2q), exact (q <= 204)
+            // 2^(-2r/5) 2^(-2q) is exact (a power of two times a normal double, itself normal), so multiplying by it once
+            // gives the bits of multiplying by its two factors in turn, one product sooner (the polynomial is the late operand).
+            double scale = TwoToMinusTwoFifths[r] * BitConverter.Int64BitsToDouble((long)(1023 - 2 * q) << 52); // 2^(-2q), q <= 204
+            return (C0 + t * Rest(t)) * scale;
         }
 
         // R(t) of m^(-2/5) = C0 + t R(t) at t = m - 3/2, by Estrin's scheme (VectorLaws.PowMinusTwoFifths takes the same steps).

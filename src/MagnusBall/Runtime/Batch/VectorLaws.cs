@@ -356,7 +356,6 @@ namespace MagnusBall.Batch
             Select(r, 2, 0.5743491774985175, ref table);
             Select(r, 3, 0.43527528164806206, ref table);
             Select(r, 4, 0.32987697769322355, ref table);
-            Vector<double> y = p * table;
             // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
             // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
             // which Vector<T> lacks on some runtimes).
@@ -364,7 +363,7 @@ namespace MagnusBall.Batch
                 new Vector<long>(MagicBits);
             Vector<double> scale = Vector.AsVectorDouble(biasedScale * new Vector<long>(1L << 52));
             Vector<long> finite = Vector.LessThanOrEqual(x, new Vector<double>(double.MaxValue));
-            return Vector.ConditionalSelect(finite, y * scale, Vector<double>.Zero);
+            return Vector.ConditionalSelect(finite, p * (table * scale), Vector<double>.Zero); // the scalar code's grouping
         }
 
         private const double Magic = 4503599627370496.0; // 2^52
