@@ -368,8 +368,11 @@ namespace MagnusBall
         private static readonly bool FoldsStepanekLift =
             typeof(TLift) == typeof(StepanekLiftLaw) && ((default(TDrag).Reads | default(TDecay).Reads) & AeroInputs.TransverseSpinRate) == 0;
 
-        // The range the folded lift is taken in: every product in it stays finite and normal (|w| and s within 1e50 and 1e100
-        // of 1, with k and r within 1e50 of 1 in _foldsLift); outside it the general formula, as before.
+        // The range the folded lift is taken in (|w| and s within 1e50 and 1e100 of 1, with k and r within 1e50 of 1 in
+        // _foldsLift): no square or product of the fold's inputs overflows, none of the squares is subnormal, and the scale
+        // k s / |w| stays within 1e200 of 1. The results may still underflow where the lift itself is below 1e-300 or so
+        // (C_L of an extreme ratio of |w x v_rel| to s^2): the fold then keeps the tiny value the general formula's k C_L
+        // loses to zero. Outside the range the general formula, as before.
         private const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
 
         /// <summary>

@@ -12,15 +12,16 @@ namespace MagnusBall.Tests.Aerodynamics
     [TestFixture]
     public class StepanekPowTests
     {
-        // The worst error of the sweep below, measured when the function was written: 1.75 ulp of the exact x^(-2/5) (the
-        // degree-23 polynomial's own error is below 4e-19; what remains is the rounding of its Estrin sum, about 1.3 ulp
-        // measured alone, then the rounded constant 2^(-2r/5) and the product with it, 0.5 ulp each at most, so 2.3 ulp
-        // bounds it from above). Bound asserted: 2 ulp, the measured worst with a margin for the sweep's other points (1e-15
-        // relative, the brief's target, is 4.5 ulp). The earlier form (a correction step on M^2 y^5 = 1) measured 1.19 ulp.
-        private const double UlpBound = 2.0;
+        // The function's worst error: 2.05 ulp of the exact x^(-2/5), at x = 64.94873128683717 (found by a review's targeted
+        // search near t = m - 3/2 = -0.5 with r = 1, checked against 200-bit arithmetic; a sweep of 1e6 random points reached
+        // 1.86, the 2e5 below 1.75). Where it comes from: C0 and 2^(-2/5) are rounded doubles, 0.38 and 0.42 ulp off with
+        // the same sign, the Estrin sum adds up to about 1.4 ulp near t = -0.5, the last product 0.5. Bound asserted: 2.25
+        // ulp, the worst found with a tenth for points not found (1e-15 relative, the brief's target, is 4.5 ulp). The
+        // earlier form (a correction step on M^2 y^5 = 1) measured 1.19 ulp.
+        private const double UlpBound = 2.25;
 
         [Test]
-        public void WholeRange_IsWithinTwoUlpOfTheExactPower()
+        public void WholeRange_IsWithinTheBoundOfTheExactPower()
         {
             var random = new Random(11);
             double worst = 0, worstAt = 0;
@@ -41,8 +42,9 @@ namespace MagnusBall.Tests.Aerodynamics
                 }
             }
 
-            // The ends and the binade edges, where the range reduction switches (m = 1 and m just below 2).
-            foreach (double x in new[] { 22.053, 32.0, Math.BitDecrement(32.0), 1024.0, Math.BitDecrement(1024.0), 1048576.0, double.MaxValue })
+            // The ends and the binade edges, where the range reduction switches (m = 1 and m just below 2), and the two worst
+            // points a review found (2.05 and 2.01 ulp).
+            foreach (double x in new[] { 22.053, 32.0, Math.BitDecrement(32.0), 1024.0, Math.BitDecrement(1024.0), 1048576.0, double.MaxValue, 64.94873128683717, 64.63795547798061 })
             {
                 double error = Math.Abs(UlpError(x, StepanekDrag.PowMinusTwoFifths(x)));
                 if (error > worst)
@@ -61,7 +63,7 @@ namespace MagnusBall.Tests.Aerodynamics
         {
             // Spin parameters a ball meets in play, 0.001-10 (x from 22.08 up to 1.3e8). Math.Pow(x, -0.4) raises x to the
             // double nearest -0.4, 2.22e-17 below -2/5, so it sits 2.22e-17 ln(x) (relative) below x^(-2/5), plus its own
-            // rounding (0.5 ulp); this function is within 1.5 ulp of x^(-2/5) (the test above). Allowed per point: the
+            // rounding (0.5 ulp); this function is within UlpBound of x^(-2/5) (the test above). Allowed per point: the
             // sum of the three.
             var random = new Random(5);
             double worst = 0;
@@ -85,9 +87,9 @@ namespace MagnusBall.Tests.Aerodynamics
         {
             // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S. The two
             // u differ by a few roundings (up to about 3 ulp); the 2.5 power and the 2/5 root scale that to about 3 ulp of
-            // the root's value, which is below C_D's binade (half its ulp), and each evaluation's root is within 1.2 ulp of
-            // exact (the sweep above): at most about 3.5 ulp of C_D, asserted 4 (measured worst printed: 1 ulp when
-            // written). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
+            // the root's value, which is below C_D's binade (half its ulp), and each evaluation's root is within 2.25 ulp of
+            // exact (the sweep above: 1.1 ulp of C_D each) and each sum adds half an ulp: at most about 4.75 ulp of C_D,
+            // asserted 5 (4 with the earlier 1.2 ulp root; measured worst printed: 1 ulp when written). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
             // r |w| underflowing and overflowing (where 1/S is taken as 1/S: a review found s (1/(r |w|)) 1.7e7 ulp off
             // there), S past 1e300 and below 1e-300, a speed whose r / s overflows, infinite speed and spin.
             var random = new Random(11);
@@ -119,7 +121,7 @@ namespace MagnusBall.Tests.Aerodynamics
             }
 
             TestContext.WriteLine($"worst {worst} ulp of C_D");
-            Assert.That(worst, Is.LessThanOrEqualTo(4));
+            Assert.That(worst, Is.LessThanOrEqualTo(5));
 
             static double Check(in AeroConditions c)
             {

@@ -234,14 +234,15 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
-        public void ControllerPower_IsWithinTwoUlpOfTheTruePower()
+        public void ControllerPower_IsWithinItsBoundOfTheTruePower()
         {
             // The step controller's norm^(-1/5) (sqrt of the portable x^(-2/5), scaled by powers of two) against Math.Pow, which
             // is within 1 ulp itself: 200,000 norms spread log-uniformly over the controller's unclamped range [1.8e-4, 2000],
             // 20,000 over [1e-300, 1e300], and the powers of two and their neighbours, where the scaling switches.
             // Math.Pow(x, -0.2) raises x to the double nearest -0.2, which is -0.2 - 1.11e-17: far from 1 that is up to 8e-15 off
             // the fifth root (40 ulp at 1e-300), so the reference is corrected by x^(1.11e-17) = 1 + 1.11e-17 ln x. The bound,
-            // 2 ulp, is the function's 1 ulp (its doc) plus the reference's own rounding.
+            // 2.6 ulp, is the function's 1.6 ulp (its doc) plus the reference's own 1 ulp (it was 2 with the function's earlier
+            // 1 ulp; measured 2.00 now).
             const double exponentError = 1.1102230246251565e-17; // -0.2 minus the double nearest it
             var random = new Random(11);
             double worst = 0, worstAt = 0;
@@ -256,7 +257,7 @@ namespace MagnusBall.Tests.Integration
                     worstAt = x;
                 }
 
-                Assert.That(error, Is.LessThanOrEqualTo(2), $"x = {x:R}: {got:R} against {expected:R}");
+                Assert.That(error, Is.LessThanOrEqualTo(2.6), $"x = {x:R}: {got:R} against {expected:R}");
             }
 
             for (int i = 0; i < 200_000; i++)

@@ -185,7 +185,8 @@ namespace MagnusBall.Tests.Integration
             // The fold differs from the general formula in rounding only: C_L from the sum of squares rather than the rounded
             // speed squared, w x v_rel rather than w x v_hat, and the drag as (g + lift + 0.508 e) + G e. Each is a few
             // roundings of terms no larger than gravity + k s^2 (C_D + C_L) with C_D <= 0.7981 and C_L <= 0.4946 (the laws'
-            // limits), so within 1e-15 (about 4.5 ulp) of that sum, component by component. The spin's rates are untouched.
+            // limits), so within 1e-15 (about 4.5 ulp) of that sum, in the length of the difference. The spin's rates are
+            // untouched.
             double worst = 0;
             foreach (FlightModel model in StepanekLiftModels())
             {

@@ -89,8 +89,8 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>
         /// x^(-2/5) for x &gt;= 1 (+inf gives 0): the law's Math.Pow(x, -0.4), about three times as cheap in a flight and the
-        /// same on every runtime (only + - * and bit operations, no library call), within 2 ulp of the exact x^(-2/5) over
-        /// the whole range (StepanekPowTests sweeps it: 1.7 ulp measured).
+        /// same on every runtime (only + - * and bit operations, no library call), within 2.05 ulp of the exact x^(-2/5) over
+        /// the whole range (the worst point found; StepanekPowTests sweeps it and checks that point).
         /// </summary>
         /// <remarks>
         /// <para>Range reduction: x = m 2^e with m in [1, 2), e = 5q + r with r in 0..4, so x^(-2/5) = 2^(-2q) 2^(-2r/5)
@@ -102,7 +102,7 @@ namespace MagnusBall.Aerodynamics
         /// one is about 6 ns shorter per evaluation (docs/performance.md).</para>
         /// <para>Math.Pow(x, -0.4) itself computes x to the double nearest -0.4, which is 2.2e-17 below -2/5: it
         /// differs from the exact law by up to 142 ulp at x ~ 1e308 (a spin parameter of 1e-123), while this function
-        /// stays within 2 ulp of it.</para>
+        /// stays within 2.05 ulp of it.</para>
         /// <para>Written for x &gt;= 1 (the law's argument is at least 22.053); a NaN or an x below 1 is not handled.</para>
         /// </remarks>
         /// <param name="x">The argument, &gt;= 1 or +inf.</param>
