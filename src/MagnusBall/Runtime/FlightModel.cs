@@ -196,7 +196,9 @@ namespace MagnusBall
         /// folded forms, equal to the formula to rounding (within about 4 ulp of the largest term), which compute the same
         /// force with fewer operations after the speed's square root: a lift law that reads no spin parameter (a constant
         /// C_L, as in <see cref="Thesis"/>), and <see cref="StepanekLift"/> (with <see cref="StepanekDrag"/> beside it, in
-        /// still air or a uniform wind, for speeds and spins within 1e100 and 1e50 of 1: the tennis presets).
+        /// still air or a uniform wind, for speeds and spins within 1e100 and 1e50 of 1: the tennis presets). Where the
+        /// formula's own products underflow (a lift below about 1e-300 m/s^2, far from any game), the folded form keeps the
+        /// tiny value the formula rounds to zero.
         /// </remarks>
         public StateDerivative Derivative(in FlightState state)
         {
