@@ -239,6 +239,7 @@ namespace MagnusBall
 
                 acceleration = new Vector3d(ax + qx * liftScale, ay + qy * liftScale, az + qz * liftScale);
             }
+
             if (_decay.IsPresent)
             {
                 spinAcceleration = _decay.SpinAcceleration(spin, conditions);
