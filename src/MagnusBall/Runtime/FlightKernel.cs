@@ -37,6 +37,17 @@ namespace MagnusBall
         internal static readonly bool PreferStraightLine = System.Type.GetType("Mono.Runtime") != null;
 #endif
 
+        // The range Stepanek's folded lift is taken in (|w| and s within 1e50 and 1e100 of 1, with k and r within 1e50 of 1:
+        // FoldsLiftAtScale): no square or product of the fold's inputs overflows, none of the squares is subnormal, and the
+        // scale k s / |w| stays within 1e200 of 1. The results may still underflow where the lift itself is below 1e-300 or
+        // so (C_L of an extreme ratio of |w x v_rel| to s^2): the fold then keeps the tiny value the general formula's k C_L
+        // loses to zero. Outside the range the general formula, as before. The ball batch's lanes take the same range.
+        internal const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
+
+        /// <summary>True where a model's k and r are within the fold's range (so its balls may take the folded lift).</summary>
+        internal static bool FoldsLiftAtScale(double factor, double radius) =>
+            factor >= FoldMinimum && factor <= FoldMaximum && radius >= FoldMinimum && radius <= FoldMaximum;
+
         /// <summary>The right-hand side at <paramref name="state"/> (bit for bit the general formula, except the folded forms of a constant lift and of Stepanek's lift: to rounding).</summary>
         internal abstract StateDerivative Derivative(in FlightState state);
 
@@ -126,7 +137,7 @@ namespace MagnusBall
             _viscosity = model.Air.DynamicViscosity;
             _windVaries = model.Air.WindProfile != null && model.Up.LengthSquared > 0;
             _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
-            _foldsLift = _factor >= FoldMinimum && _factor <= FoldMaximum && _radius >= FoldMinimum && _radius <= FoldMaximum;
+            _foldsLift = FoldsLiftAtScale(_factor, _radius);
         }
 
         private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
@@ -368,13 +379,6 @@ namespace MagnusBall
         /// </remarks>
         private static readonly bool FoldsStepanekLift =
             typeof(TLift) == typeof(StepanekLiftLaw) && ((default(TDrag).Reads | default(TDecay).Reads) & AeroInputs.TransverseSpinRate) == 0;
-
-        // The range the folded lift is taken in (|w| and s within 1e50 and 1e100 of 1, with k and r within 1e50 of 1 in
-        // _foldsLift): no square or product of the fold's inputs overflows, none of the squares is subnormal, and the scale
-        // k s / |w| stays within 1e200 of 1. The results may still underflow where the lift itself is below 1e-300 or so
-        // (C_L of an extreme ratio of |w x v_rel| to s^2): the fold then keeps the tiny value the general formula's k C_L
-        // loses to zero. Outside the range the general formula, as before.
-        private const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
 
         /// <summary>
         /// Stepanek's lift in folded form: the factor that multiplies w x v_rel. With S_perp = r|w x v_hat|/s =

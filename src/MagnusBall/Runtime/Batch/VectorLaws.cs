@@ -46,9 +46,6 @@ namespace MagnusBall.Batch
         private readonly Vector3d _wind;
         private readonly bool _foldsLift; // the kernel folds Stepanek's lift for this model (k and r in range)
 
-        // FlightKernel's fold range (FlightKernel<,,>.FoldMinimum and the rest).
-        private const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
-
         private VectorLaws(
             bool supported, DragKind drag, LiftKind lift, DecayKind decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
         {
@@ -64,7 +61,7 @@ namespace MagnusBall.Batch
             _radius = model.Ball.Radius;
             _gravity = model.Gravity;
             _wind = model.Air.Wind;
-            _foldsLift = _factor >= FoldMinimum && _factor <= FoldMaximum && _radius >= FoldMinimum && _radius <= FoldMaximum;
+            _foldsLift = FlightKernel.FoldsLiftAtScale(_factor, _radius);
         }
 
         internal static VectorLaws For(FlightModel model)
@@ -176,7 +173,7 @@ namespace MagnusBall.Batch
             Vector<long> aero = Vector.GreaterThan(speed, new Vector<double>(FlightModel.MinimumAerodynamicSpeed));
             bool needsSpinRate = Lift != LiftKind.None || Drag == DragKind.Stepanek;
             Vector<double> spinRate = needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
-            bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || Lift == LiftKind.Stepanek;
+            bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || (Lift == LiftKind.Stepanek && !_foldsLift);
             Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
 
             if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
@@ -215,10 +212,10 @@ namespace MagnusBall.Batch
                 Vector<double> cl = rt / (new Vector<double>(2.022) * rt + new Vector<double>(0.981) * squared);
                 Vector<double> liftScale = new Vector<double>(_factor) / spinRate * speed * cl;
                 Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
-                var low = new Vector<double>(FoldMinimumSquare);
-                var high = new Vector<double>(FoldMaximumSquare);
-                Vector<long> inRange = Vector.GreaterThanOrEqual(spinRate, new Vector<double>(FoldMinimum)) &
-                    Vector.LessThanOrEqual(spinRate, new Vector<double>(FoldMaximum)) &
+                var low = new Vector<double>(FlightKernel.FoldMinimumSquare);
+                var high = new Vector<double>(FlightKernel.FoldMaximumSquare);
+                Vector<long> inRange = Vector.GreaterThanOrEqual(spinRate, new Vector<double>(FlightKernel.FoldMinimum)) &
+                    Vector.LessThanOrEqual(spinRate, new Vector<double>(FlightKernel.FoldMaximum)) &
                     Vector.GreaterThanOrEqual(squared, low) & Vector.LessThanOrEqual(squared, high) &
                     (Vector.Equals(transverseSquared, Vector<double>.Zero) |
                         (Vector.GreaterThanOrEqual(transverseSquared, low) & Vector.LessThanOrEqual(transverseSquared, high)));
@@ -350,12 +347,12 @@ namespace MagnusBall.Batch
             Vector<double> q5 = Pair(t, Aerodynamics.StepanekDrag.D20, Aerodynamics.StepanekDrag.D21) + t2 * new Vector<double>(Aerodynamics.StepanekDrag.D22);
             Vector<double> rest = ((q0 + t4 * q1) + t8 * (q2 + t4 * q3)) + t16 * (q4 + t4 * q5);
             Vector<double> p = new Vector<double>(Aerodynamics.StepanekDrag.C0) + t * rest;
-            // 2^(-2r/5) for r = 0..4 by selection (the scalar code reads StepanekDrag.TwoToMinusTwoFifths; a test holds the two equal).
+            // 2^(-2r/5) for r = 0..4 by selection (the scalar code reads the same constants from a table).
             Vector<double> table = Vector<double>.One;
-            Select(r, 1, 0.757858283255199, ref table);
-            Select(r, 2, 0.5743491774985175, ref table);
-            Select(r, 3, 0.43527528164806206, ref table);
-            Select(r, 4, 0.32987697769322355, ref table);
+            Select(r, 1, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths1, ref table);
+            Select(r, 2, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths2, ref table);
+            Select(r, 3, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths3, ref table);
+            Select(r, 4, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths4, ref table);
             // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
             // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
             // which Vector<T> lacks on some runtimes).
