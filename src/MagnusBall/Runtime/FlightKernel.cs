@@ -121,6 +121,7 @@ namespace MagnusBall
         private readonly bool _windVaries;
         private readonly bool _stillAir; // every wind component +0: v - wind is v itself
         private readonly bool _foldsLift; // k and r in the folded lift's range (FoldsStepanekLift)
+        private readonly double _kappaOverRadiusSquared; // StepanekTable.Kappa / r^2: z = Kappa s^2 / (r |w|)^2
 
         internal FlightKernel(FlightModel model, TDrag drag, TLift lift, TDecay decay)
         {
@@ -138,6 +139,7 @@ namespace MagnusBall
             _windVaries = model.Air.WindProfile != null && model.Up.LengthSquared > 0;
             _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
             _foldsLift = FoldsLiftAtScale(_factor, _radius);
+            _kappaOverRadiusSquared = StepanekTable.Kappa / (_radius * _radius);
         }
 
         private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
@@ -218,25 +220,32 @@ namespace MagnusBall
 
             // Vector3d.LengthOf's value (its squares are a normal double here), and above MinimumAerodynamicSpeed.
             double speed = System.Math.Sqrt(squared);
-            AeroInputs reads = _drag.Reads | _lift.Reads | _decay.Reads;
+            // What the laws that are not folded read: the lift is folded, and Stepanek's drag too (it forms its spin
+            // parameter itself where its table declines), so for the tennis model no division by the speed here.
+            AeroInputs reads = (typeof(TDrag) == typeof(StepanekDragLaw) ? AeroInputs.None : _drag.Reads) | _decay.Reads;
             double spinParameter = (reads & SpinParameterBit) != 0 ? spinRate * (_radius / speed) : 0;
             var conditions = new AeroConditions(
                 speed, spinRate, 0, _radius, _density, spinParameter, 0,
                 (reads & AeroInputs.ReynoldsNumber) != 0 ? _density * speed * 2 * _radius / _viscosity : 0);
             double ax = _gravity.X, ay = _gravity.Y, az = _gravity.Z;
-            double liftScale = StepanekLiftFold(squared, transverseSquared, _radius, _factor / spinRate * speed);
+            double inverseSpinRate = 1.0 / spinRate; // the one division by the spin: k / |w| here, 1 / |w|^2 in the drag's z
+            double liftScale = StepanekLiftFold(squared, transverseSquared, _radius, _factor * inverseSpinRate * speed);
             if (typeof(TDrag) == typeof(StepanekDragLaw))
             {
                 // Stepanek's drag folded too: -k C_D s v_rel with C_D = 0.508 + G, as (g + lift + 0.508 e) + G e with
-                // e = -k s v_rel, so the late G (the end of the drag's chain: two square roots and the power) meets one
-                // product and one sum, not five operations.
-                double spinPart = StepanekDrag.SpinPart(speed, spinRate, _radius, spinParameter);
+                // e = -k s v_rel, so the late G (the end of the drag's chain) meets one product and one sum, not five
+                // operations. G is read from z = Kappa s^2 / (r |w|)^2, one product after the squared speed ((Kappa / r^2)
+                // (1 / |w|)^2 is a normal double here, r and |w| in [1e-50, 1e50], formed off the speed's path): the speed's
+                // square root runs beside G's polynomial, not before it. The lift, whose chain (a square root and a division
+                // after |w x v_rel|^2) is now the longer, is added last.
+                double z = squared * (_kappaOverRadiusSquared * (inverseSpinRate * inverseSpinRate));
+                double spinPart = StepanekDrag.SpinPartOfSquare(z, speed, spinRate, _radius);
                 double scale = -_factor * speed;
                 double ex = rx * scale, ey = ry * scale, ez = rz * scale;
                 acceleration = new Vector3d(
-                    (ax + qx * liftScale + ex * 0.508) + spinPart * ex,
-                    (ay + qy * liftScale + ey * 0.508) + spinPart * ey,
-                    (az + qz * liftScale + ez * 0.508) + spinPart * ez);
+                    (ax + ex * 0.508 + spinPart * ex) + qx * liftScale,
+                    (ay + ey * 0.508 + spinPart * ey) + qy * liftScale,
+                    (az + ez * 0.508 + spinPart * ez) + qz * liftScale);
             }
             else
             {
@@ -395,7 +404,7 @@ namespace MagnusBall
         internal static double StepanekLiftFold(double speedSquared, double transverseSquared, double radius, double scale)
         {
             double rt = radius * System.Math.Sqrt(transverseSquared);
-            return scale * (rt / (2.022 * rt + 0.981 * speedSquared));
+            return scale * rt / (2.022 * rt + 0.981 * speedSquared); // scale rt is formed beside the denominator
         }
 
         // Rates for laws that read no spin parameter (see Rates), from the air-relative velocity r: gravity already in a.

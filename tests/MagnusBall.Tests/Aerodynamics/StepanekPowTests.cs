@@ -83,13 +83,15 @@ namespace MagnusBall.Tests.Aerodynamics
         }
 
         [Test]
-        public void DragCoefficient_FormsOneOverS_FromTheSpeed_WithinAnUlpOfEvaluate()
+        public void DragCoefficient_FormsOneOverS_FromTheSpeed_AsEvaluateDoesToRounding()
         {
-            // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S. The two
-            // u differ by a few roundings (up to about 3 ulp); the 2.5 power and the 2/5 root scale that to about 3 ulp of
-            // the root's value, which is below C_D's binade (half its ulp), and each evaluation's root is within 2.25 ulp of
-            // exact (the sweep above: 1.1 ulp of C_D each) and each sum adds half an ulp: at most about 4.75 ulp of C_D,
-            // asserted 5 (4 with the earlier 1.2 ulp root; measured worst printed: 1 ulp when written). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
+            // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S from the
+            // conditions' S = |w| (r / s). Each u carries three roundings, so the two differ by at most 3 x 2^-53 relative,
+            // their exact z = Kappa u^2 by 6 x 2^-53, and G (whose sensitivity to z is at most 1/2) by 3 x 2^-53 relative:
+            // at most 0.87 ulp of C_D (G < 0.29, C_D in [0.5, 1)). Each evaluation's G is within 3.5 ulp of the exact law at
+            // its own u (StepanekTableTests, z's rounding included; G's ulp is at most half C_D's: 1.75 ulp of C_D each),
+            // and each 0.508 + G rounds (half an ulp each): at most 5.4 ulp of C_D, asserted 5.5. Measured worst printed (2
+            // ulp with the table, 1 with the power alone). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
             // r |w| underflowing and overflowing (where 1/S is taken as 1/S: a review found s (1/(r |w|)) 1.7e7 ulp off
             // there), S past 1e300 and below 1e-300, a speed whose r / s overflows, infinite speed and spin.
             var random = new Random(11);
@@ -121,7 +123,7 @@ namespace MagnusBall.Tests.Aerodynamics
             }
 
             TestContext.WriteLine($"worst {worst} ulp of C_D");
-            Assert.That(worst, Is.LessThanOrEqualTo(5));
+            Assert.That(worst, Is.LessThanOrEqualTo(5.5));
 
             static double Check(in AeroConditions c)
             {

@@ -239,6 +239,52 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void BallsAtTheEdgesOfStepaneksTable_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // Stepanek's drag reads its term G from a table where z = Kappa s^2 / (r |w|)^2 lies in [2^-44, 2^44) and from the
+            // power elsewhere; the lanes call the same function per lane, the kernel's folded path (Stepanek's lift) forms z
+            // from s^2 and the general path (constant lift) from u = s / (r |w|). Balls at 30 m/s with spins that put z just
+            // inside and outside both edges, and in the middle, fly 40 steps of 1 s. In one step the drag alone would take
+            // about the whole speed (k C_D s h near 0.9, inside RK4's stability limit of 2.8), so a change of G in its last bit
+            // reaches the velocity's bits (with 0.05 s steps it did not: a z formed as (s^2 Kappa) / (r |w|)^2 passed); the
+            // speed falls about thirty-fold, so z moves and the edge balls cross the edges. A lane that formed z differently from
+            // the kernel, or read G through u as the general path does, fails at step 2 or sooner (both checked).
+            var ground = new Plane(new Vector3d(0, 0, -1e6), Vector3d.UnitZ);
+            double kappa = StepanekTable.Kappa;
+            foreach (FlightModel model in new[]
+            {
+                new FlightModel(Ball.Tennis, new Air(1.21), Vector3d.Zero, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20)),
+                new FlightModel(Ball.Tennis, new Air(1.21), Vector3d.Zero, StepanekDrag.Instance, ConstantLift.ThesisTennis, new ExponentialSpinDecay(20)),
+            })
+            {
+                double r = model.Ball.Radius;
+                const double speed = 30;
+                var starts = new List<FlightState>();
+                foreach (double z in new[] { 1.0 / 17592186044416.0, 17592186044416.0, 0.5, 1.0, 2.0, 5.0, 40.0 }) // 2^-44 and 2^44, the edges
+                {
+                    foreach (double factor in new[] { 0.999, 1.0, 1.001 })
+                    {
+                        // v along x, w about y: z = Kappa s^2 / (r |w|)^2 (|w| from 1.1e-4 to 1.9e9 rad/s).
+                        double spin = speed * Math.Sqrt(kappa / (z * factor)) / r;
+                        starts.Add(new FlightState(new Vector3d(0, 0, 1), new Vector3d(speed, 0, 1), new Vector3d(0.01 * spin, spin, 0)));
+                    }
+                }
+
+                (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts.ToArray());
+                for (int n = 0; n < 40; n++)
+                {
+                    const double step = 1.0;
+                    batch.Advance(step);
+                    for (int i = 0; i < starts.Count; i++)
+                    {
+                        Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}, step {n}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
+                    }
+                }
+            }
+        }
+
+        [Test]
         public void StepanekLiftModelsOutsideTheFoldsScale_FlyAsTheSingleBallPath_BitForBit()
         {
             // k below 1e-50 (air 3.135e-49 kg/m^3 as dense: k = 0.94e-50 1/m for a tennis ball): the kernel takes the general

@@ -28,8 +28,10 @@ namespace MagnusBall.Aerodynamics
         /// <remarks>
         /// <see cref="Evaluate"/>'s law, with 1/S formed as s (1/(r |w|)) from the conditions' speed, radius and spin rate
         /// rather than as 1/S (where r |w| is a normal double; otherwise as 1/S): the same value to rounding (measured
-        /// within 1 ulp of <see cref="Evaluate"/>'s C_D), and in a flight the reciprocal is taken of the spin alone, off the
-        /// speed's path, which makes the full tennis model's RK4 step about 12 % cheaper on .NET (docs/performance.md).
+        /// within 2 ulp of <see cref="Evaluate"/>'s C_D, 5.5 by analysis), and in a flight the reciprocal is taken of the spin
+        /// alone, off the speed's path, which made the full tennis model's RK4 step about 12 % cheaper on .NET
+        /// (docs/performance.md). C_D - 0.508 comes from a table of the law in z = Kappa u^2 where z lies in [2^-44, 2^44)
+        /// (<see cref="TryTable"/>), from <see cref="PowMinusTwoFifths"/> elsewhere; within 3.5 ulp of the exact law.
         /// S &lt;= 0 gives the no-spin value 0.508, as there.
         /// </remarks>
         public double DragCoefficient(in AeroConditions conditions) => FromConditions(conditions);
@@ -57,7 +59,65 @@ namespace MagnusBall.Aerodynamics
             // limit or inf x 0) 1/S itself, as Evaluate takes it.
             double rw = radius * spinRate;
             double u = rw >= 2.2250738585072014e-308 && rw <= double.MaxValue ? speed * (1.0 / rw) : 1.0 / spinParameter;
-            return PowMinusTwoFifths(Argument(u));
+            return OfRatio(u);
+        }
+
+        /// <summary>
+        /// <see cref="SpinPart"/> as the flight kernel's folded form takes it (FlightKernel's TryFoldedRates), from
+        /// <paramref name="z"/> = Kappa s^2 / (r |w|)^2 formed from the squared speed, so that the speed's square root is not on
+        /// the drag's path: the table's value where z lies in its range, elsewhere <see cref="SpinPart"/> with the spin
+        /// parameter r |w| / s formed here (as the kernel's general path forms it), so that no division by the speed is made
+        /// where the table answers. The ball batch calls it lane by lane, so both give the same bits.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static double SpinPartOfSquare(double z, double speed, double spinRate, double radius) =>
+            TryTable(z, out double g) ? g : SpinPart(speed, spinRate, radius, spinRate * (radius / speed));
+
+        /// <summary>
+        /// G = C_D - 0.508 at u = 1/S: the table at z = Kappa u^2 where that lies in its range (<see cref="TryTable"/>), else
+        /// the power of the argument (<see cref="PowMinusTwoFifths"/>). Within 3.5 ulp of the exact law at u (StepanekTableTests).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static double OfRatio(double u) =>
+            TryTable(StepanekTable.Kappa * (u * u), out double g) ? g : PowMinusTwoFifths(Argument(u));
+
+        /// <summary>
+        /// G = (22.053 + 4.196 u^2.5)^-0.4 from z = Kappa u^2 (Kappa = (4.196/22.053)^(4/5), so 4.196 u^2.5 = 22.053 z^(5/4)
+        /// up to Kappa's rounding, which the table includes): false, and <paramref name="g"/> 0, outside z in [2^-44, 2^44).
+        /// </summary>
+        /// <remarks>
+        /// <para>One polynomial per quarter binade of z (StepanekTable, written by tools/stepanek-table.py): z = 2^e (1 + j/4 +
+        /// 1/8 + t) with t in [-1/8, 1/8), G = c0 + c1 t + ... + c15 t^15, the degree-15 Chebyshev interpolant of the exact law
+        /// on that quarter (computed in 50-digit arithmetic; its own error is below 1e-19 relative), summed by Estrin's scheme.
+        /// The row and t come from z's bits; no square root, no division, no range reduction of a power. The exact G is a
+        /// function of u^2, so the flight kernel forms z from the squared speed and the speed's square root runs beside the
+        /// table's polynomial instead of before it (docs/performance.md).</para>
+        /// <para>Within 2.28 ulp of the exact G(z), the worst of 2e5 points the generator checked against 50-digit values
+        /// (StepanekTableTests checks 14 points of every row and that one in exact integer arithmetic, and asserts 2.5 ulp).
+        /// Below 2^-44, G differs from its limit 22.053^-0.4 by less than 2^-56 relative, and above 2^44 it is
+        /// 22.053^-0.4 z^-1/2 to rounding; there the power of the argument (<see cref="PowMinusTwoFifths"/>) takes over.</para>
+        /// </remarks>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static bool TryTable(double z, out double g)
+        {
+            long bits = BitConverter.DoubleToInt64Bits(z);
+            long row = (bits >> 50) - ((1023L + StepanekTable.LowestBinade) << 2); // 4 (biased exponent) + the top two bits
+            if ((ulong)row >= StepanekTable.Rows)
+            {
+                g = 0;
+                return false; // z outside [2^-44, 2^44), 0, subnormal, negative, inf or NaN
+            }
+
+            double t = BitConverter.Int64BitsToDouble((bits & 0x0003_FFFF_FFFF_FFFFL) | 0x3FF0_0000_0000_0000L) - 1.125; // exact
+            double[] c = StepanekTable.Coefficients;
+            int i = (int)row * StepanekTable.Stride;
+            double t2 = t * t, t4 = t2 * t2, t8 = t4 * t4;
+            double p0 = (c[i] + t * c[i + 1]) + t2 * (c[i + 2] + t * c[i + 3]);
+            double p1 = (c[i + 4] + t * c[i + 5]) + t2 * (c[i + 6] + t * c[i + 7]);
+            double p2 = (c[i + 8] + t * c[i + 9]) + t2 * (c[i + 10] + t * c[i + 11]);
+            double p3 = (c[i + 12] + t * c[i + 13]) + t2 * (c[i + 14] + t * c[i + 15]);
+            g = (p0 + t4 * p1) + t8 * (p2 + t4 * p3);
+            return true;
         }
 
         // 22.053 + 4.196 u^2.5 as (4.196 u^2) sqrt(u): the product 4.196 u^2 is formed while the square root runs.
@@ -73,17 +133,18 @@ namespace MagnusBall.Aerodynamics
                 return 0.508;
             }
 
-            // (1/S)^2.5 = u^2 sqrt(u) with u = 1/S: a square root instead of a second Math.Pow, and the ^-0.4 by
-            // PowMinusTwoFifths instead of Math.Pow (Pow dominated the model's cost, docs/performance.md). It overflows
+            // u = 1/S; G from the table at z = Kappa u^2, or where z lies outside it as (22.053 + 4.196 u^2 sqrt(u))^-0.4 by
+            // PowMinusTwoFifths instead of Math.Pow (Pow dominated the model's cost, docs/performance.md). u^2.5 overflows
             // to +inf for tiny S; inf^-0.4 is 0, the correct limit.
             double u = 1.0 / spinParameter;
-            return 0.508 + PowMinusTwoFifths(Argument(u));
+            return 0.508 + OfRatio(u);
         }
 
         /// <summary>
-        /// x^(-2/5) for x &gt;= 1 (+inf gives 0): the law's Math.Pow(x, -0.4), cheaper (docs/performance.md) and the
-        /// same on every runtime (only + - * and bit operations, no library call), within 2.05 ulp of the exact x^(-2/5) over
-        /// the whole range (the worst point found; StepanekPowTests sweeps it and checks that point).
+        /// x^(-2/5) for x &gt;= 1 (+inf gives 0): the law's Math.Pow(x, -0.4) where its table (<see cref="TryTable"/>) does not
+        /// reach (u = 1/S outside about [4e-7, 8e6]), and the DP54 controller's power; cheaper than Math.Pow (docs/performance.md)
+        /// and the same on every runtime (only + - * and bit operations, no library call), within 2.05 ulp of the exact x^(-2/5)
+        /// over the whole range (the worst point found; StepanekPowTests sweeps it and checks that point).
         /// </summary>
         /// <remarks>
         /// <para>Range reduction: x = m 2^e with m in [1, 2), e = 5q + r with r in 0..4, so x^(-2/5) = 2^(-2q) 2^(-2r/5)

@@ -45,6 +45,8 @@ namespace MagnusBall.Batch
         private readonly Vector3d _gravity;
         private readonly Vector3d _wind;
         private readonly bool _foldsLift; // the kernel folds Stepanek's lift for this model (k and r in range)
+        private readonly double _kappaOverRadiusSquared; // the kernel's: StepanekTable.Kappa / r^2
+        private readonly double[] _lanes; // Stepanek's G lane by lane (one batch's scratch; a batch steps on one thread)
 
         private VectorLaws(
             bool supported, DragKind drag, LiftKind lift, DecayKind decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
@@ -62,6 +64,8 @@ namespace MagnusBall.Batch
             _gravity = model.Gravity;
             _wind = model.Air.Wind;
             _foldsLift = FlightKernel.FoldsLiftAtScale(_factor, _radius);
+            _kappaOverRadiusSquared = Aerodynamics.StepanekTable.Kappa / (_radius * _radius);
+            _lanes = new double[Vector<double>.Count];
         }
 
         internal static VectorLaws For(FlightModel model)
@@ -173,7 +177,10 @@ namespace MagnusBall.Batch
             Vector<long> aero = Vector.GreaterThan(speed, new Vector<double>(FlightModel.MinimumAerodynamicSpeed));
             bool needsSpinRate = Lift != LiftKind.None || Drag == DragKind.Stepanek;
             Vector<double> spinRate = needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
-            bool needsRadiusOverSpeed = Drag == DragKind.Stepanek || Lift == LiftKind.LinearSpin || (Lift == LiftKind.Stepanek && !_foldsLift);
+            // r / s: for Stepanek's drag outside the fold (the folded drag forms it per lane where its table declines), the
+            // linear lift and Stepanek's lift outside the fold.
+            bool needsRadiusOverSpeed = (Drag == DragKind.Stepanek && !(Lift == LiftKind.Stepanek && _foldsLift)) ||
+                Lift == LiftKind.LinearSpin || (Lift == LiftKind.Stepanek && !_foldsLift);
             Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
 
             if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
@@ -209,8 +216,9 @@ namespace MagnusBall.Batch
                 Vector<double> squared = rx * rx + ry * ry + rz * rz;
                 Vector<double> transverseSquared = qx * qx + qy * qy + qz * qz;
                 Vector<double> rt = new Vector<double>(_radius) * Vector.SquareRoot(transverseSquared);
-                Vector<double> cl = rt / (new Vector<double>(2.022) * rt + new Vector<double>(0.981) * squared);
-                Vector<double> liftScale = new Vector<double>(_factor) / spinRate * speed * cl;
+                Vector<double> inverseSpinRate = Vector<double>.One / spinRate;
+                Vector<double> liftScale = new Vector<double>(_factor) * inverseSpinRate * speed * rt /
+                    (new Vector<double>(2.022) * rt + new Vector<double>(0.981) * squared);
                 Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
                 var low = new Vector<double>(FlightKernel.FoldMinimumSquare);
                 var high = new Vector<double>(FlightKernel.FoldMaximumSquare);
@@ -220,16 +228,18 @@ namespace MagnusBall.Batch
                     (Vector.Equals(transverseSquared, Vector<double>.Zero) |
                         (Vector.GreaterThanOrEqual(transverseSquared, low) & Vector.LessThanOrEqual(transverseSquared, high)));
                 unfolded = lifts & ~inRange;
-                Vector<double> fx = gx + qx * liftScale, fy = gy + qy * liftScale, fz = gz + qz * liftScale;
+                Vector<double> fx, fy, fz;
                 if (Drag == DragKind.Stepanek)
                 {
-                    Vector<double> spinPart = StepanekSpinPart(spinRate * inverse, speed, spinRate);
+                    // z = Kappa s^2 / (r |w|)^2 as the kernel forms it, then G lane by lane through the kernel's own function.
+                    Vector<double> z = squared * (new Vector<double>(_kappaOverRadiusSquared) * (inverseSpinRate * inverseSpinRate));
+                    Vector<double> spinPart = StepanekSpinPartOfSquare(z, speed, spinRate);
                     Vector<double> scale = new Vector<double>(_negativeFactor) * speed;
                     Vector<double> ex = rx * scale, ey = ry * scale, ez = rz * scale;
                     var constant = new Vector<double>(0.508);
-                    fx = (fx + ex * constant) + spinPart * ex;
-                    fy = (fy + ey * constant) + spinPart * ey;
-                    fz = (fz + ez * constant) + spinPart * ez;
+                    fx = (gx + ex * constant + spinPart * ex) + qx * liftScale;
+                    fy = (gy + ey * constant + spinPart * ey) + qy * liftScale;
+                    fz = (gz + ez * constant + spinPart * ez) + qz * liftScale;
                     // Lanes that fly without lift (|w| at or below FlightModel.MinimumLiftSpinRate): the general drag.
                     Vector<double> dragScale = new Vector<double>(_negativeFactor) * (constant + spinPart) * speed;
                     ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
@@ -245,6 +255,12 @@ namespace MagnusBall.Batch
                     fx = ax + qx * liftScale;
                     fy = ay + qy * liftScale;
                     fz = az + qz * liftScale;
+                }
+                else
+                {
+                    fx = gx + qx * liftScale;
+                    fy = gy + qy * liftScale;
+                    fz = gz + qz * liftScale;
                 }
 
                 ax = Vector.ConditionalSelect(lifts, fx, ax);
@@ -299,17 +315,30 @@ namespace MagnusBall.Batch
 
         // Aerodynamics.StepanekDrag.FromConditions, lane by lane: spin parameter s, speed and spin rate.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private Vector<double> StepanekDrag(Vector<double> s, Vector<double> speed, Vector<double> spinRate) =>
-            new Vector<double>(0.508) + StepanekSpinPart(s, speed, spinRate);
-
-        // Aerodynamics.StepanekDrag.SpinPart, lane by lane (0 where S <= 0).
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private Vector<double> StepanekSpinPart(Vector<double> s, Vector<double> speed, Vector<double> spinRate)
+        private Vector<double> StepanekDrag(Vector<double> s, Vector<double> speed, Vector<double> spinRate)
         {
-            Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
-            Vector<double> u = speed * (Vector<double>.One / (new Vector<double>(_radius) * spinRate));
-            Vector<double> x = new Vector<double>(22.053) + new Vector<double>(4.196) * (u * u) * Vector.SquareRoot(u);
-            return Vector.ConditionalSelect(positive, PowMinusTwoFifths(x), Vector<double>.Zero);
+            // Aerodynamics.StepanekDrag.SpinPart itself, lane by lane: its table has no vector form (Vector<T> has no
+            // gather in netstandard2.1), and calling the scalar code keeps the lanes the kernel's bits.
+            double[] lanes = _lanes;
+            for (int i = 0; i < lanes.Length; i++)
+            {
+                lanes[i] = Aerodynamics.StepanekDrag.SpinPart(speed[i], spinRate[i], _radius, s[i]);
+            }
+
+            return new Vector<double>(0.508) + new Vector<double>(lanes);
+        }
+
+        // Aerodynamics.StepanekDrag.SpinPartOfSquare (the kernel's folded drag), lane by lane.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private Vector<double> StepanekSpinPartOfSquare(Vector<double> z, Vector<double> speed, Vector<double> spinRate)
+        {
+            double[] lanes = _lanes;
+            for (int i = 0; i < lanes.Length; i++)
+            {
+                lanes[i] = Aerodynamics.StepanekDrag.SpinPartOfSquare(z[i], speed[i], spinRate[i], _radius);
+            }
+
+            return new Vector<double>(lanes);
         }
 
         // Aerodynamics.StepanekLift.Evaluate, lane by lane.
@@ -319,59 +348,5 @@ namespace MagnusBall.Batch
             Vector<long> positive = Vector.GreaterThan(s, Vector<double>.Zero);
             return Vector.ConditionalSelect(positive, s / (new Vector<double>(2.022) * s + new Vector<double>(0.981)), Vector<double>.Zero);
         }
-
-        /// <summary>
-        /// <see cref="Aerodynamics.StepanekDrag.PowMinusTwoFifths"/> lane by lane, the same operations (lanes below 1 or
-        /// NaN give garbage the caller discards).
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static Vector<double> PowMinusTwoFifths(Vector<double> x)
-        {
-            Vector<long> bits = Vector.AsVectorInt64(x);
-            // The exponent field as a double: (E 2^52) converts exactly (at most 11 significant bits), then times 2^-52.
-            Vector<double> biased = Vector.ConvertToDouble(bits & new Vector<long>(0x7FF0_0000_0000_0000L)) * new Vector<double>(1.0 / 4503599627370496.0);
-            Vector<double> e = biased - new Vector<double>(1023);
-            Vector<double> m = Vector.AsVectorDouble((bits & new Vector<long>(0x000F_FFFF_FFFF_FFFFL)) | new Vector<long>(0x3FF0_0000_0000_0000L));
-            // q = floor(e / 5) (e >= 0): (e + 0.5) / 5 - 0.5 lies within 0.4 of q, and adding and subtracting 2^52 rounds it
-            // to the nearest integer (exact: every value here is a small integer or within 2^52).
-            Vector<double> q = (((e + new Vector<double>(0.5)) * new Vector<double>(0.2) - new Vector<double>(0.5)) + new Vector<double>(Magic)) -
-                new Vector<double>(Magic);
-            Vector<double> r = e - new Vector<double>(5) * q;
-            Vector<double> t = m - new Vector<double>(1.5);
-            Vector<double> t2 = t * t, t4 = t2 * t2, t8 = t4 * t4, t16 = t8 * t8;
-            Vector<double> q0 = Pair(t, Aerodynamics.StepanekDrag.D0, Aerodynamics.StepanekDrag.D1) + t2 * Pair(t, Aerodynamics.StepanekDrag.D2, Aerodynamics.StepanekDrag.D3);
-            Vector<double> q1 = Pair(t, Aerodynamics.StepanekDrag.D4, Aerodynamics.StepanekDrag.D5) + t2 * Pair(t, Aerodynamics.StepanekDrag.D6, Aerodynamics.StepanekDrag.D7);
-            Vector<double> q2 = Pair(t, Aerodynamics.StepanekDrag.D8, Aerodynamics.StepanekDrag.D9) + t2 * Pair(t, Aerodynamics.StepanekDrag.D10, Aerodynamics.StepanekDrag.D11);
-            Vector<double> q3 = Pair(t, Aerodynamics.StepanekDrag.D12, Aerodynamics.StepanekDrag.D13) + t2 * Pair(t, Aerodynamics.StepanekDrag.D14, Aerodynamics.StepanekDrag.D15);
-            Vector<double> q4 = Pair(t, Aerodynamics.StepanekDrag.D16, Aerodynamics.StepanekDrag.D17) + t2 * Pair(t, Aerodynamics.StepanekDrag.D18, Aerodynamics.StepanekDrag.D19);
-            Vector<double> q5 = Pair(t, Aerodynamics.StepanekDrag.D20, Aerodynamics.StepanekDrag.D21) + t2 * new Vector<double>(Aerodynamics.StepanekDrag.D22);
-            Vector<double> rest = ((q0 + t4 * q1) + t8 * (q2 + t4 * q3)) + t16 * (q4 + t4 * q5);
-            Vector<double> p = new Vector<double>(Aerodynamics.StepanekDrag.C0) + t * rest;
-            // 2^(-2r/5) for r = 0..4 by selection (the scalar code reads the same constants from a table).
-            Vector<double> table = Vector<double>.One;
-            Select(r, 1, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths1, ref table);
-            Select(r, 2, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths2, ref table);
-            Select(r, 3, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths3, ref table);
-            Select(r, 4, Aerodynamics.StepanekDrag.TwoToMinusTwoFifths4, ref table);
-            // 2^(-2q): its bit pattern (1023 - 2q) 2^52. 1023 - 2q + 2^52 holds the integer in its low bits; subtracting
-            // 2^52's bits gives it as a long, and times 2^52 moves it into the exponent field (no conversion instruction,
-            // which Vector<T> lacks on some runtimes).
-            Vector<long> biasedScale = Vector.AsVectorInt64(new Vector<double>(1023) - new Vector<double>(2) * q + new Vector<double>(Magic)) -
-                new Vector<long>(MagicBits);
-            Vector<double> scale = Vector.AsVectorDouble(biasedScale * new Vector<long>(1L << 52));
-            Vector<long> finite = Vector.LessThanOrEqual(x, new Vector<double>(double.MaxValue));
-            return Vector.ConditionalSelect(finite, p * (table * scale), Vector<double>.Zero); // the scalar code's grouping
-        }
-
-        private const double Magic = 4503599627370496.0; // 2^52
-        private const long MagicBits = 0x4330_0000_0000_0000L; // its bit pattern
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Select(Vector<double> r, double value, double tableValue, ref Vector<double> table) =>
-            table = Vector.ConditionalSelect(Vector.Equals(r, new Vector<double>(value)), new Vector<double>(tableValue), table);
-
-        // c0 + t c1, the Estrin scheme's first level (Aerodynamics.StepanekDrag.Rest).
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Vector<double> Pair(Vector<double> t, double c0, double c1) => new Vector<double>(c0) + t * new Vector<double>(c1);
     }
 }
