@@ -86,12 +86,15 @@ namespace MagnusBall.Tests.Aerodynamics
         public void DragCoefficient_FormsOneOverS_FromTheSpeed_AsEvaluateDoesToRounding()
         {
             // DragCoefficient takes 1/S as s (1/(r |w|)) (the kernel's form, off the speed's path), Evaluate as 1/S from the
-            // conditions' S = |w| (r / s). Each u carries three roundings, so the two differ by at most 3 x 2^-53 relative,
-            // their exact z = Kappa u^2 by 6 x 2^-53, and G (whose sensitivity to z is at most 1/2) by 3 x 2^-53 relative:
-            // at most 0.87 ulp of C_D (G < 0.29, C_D in [0.5, 1)). Each evaluation's G is within 3.5 ulp of the exact law at
-            // its own u (StepanekTableTests, z's rounding included; G's ulp is at most half C_D's: 1.75 ulp of C_D each),
-            // and each 0.508 + G rounds (half an ulp each): at most 5.4 ulp of C_D, asserted 5.5. Measured worst printed (2
-            // ulp with the table, 1 with the power alone). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
+            // conditions' S = |w| (r / s). Each u carries three roundings, so the two differ by at most 6 x 2^-53 relative and
+            // their exact z = Kappa u^2 by 12 x 2^-53. G moves with z by at most max G |d ln G / d ln z| = 0.0625 (at
+            // z^(5/4) = 2.5; G = 22.053^-0.4 (1 + z^(5/4))^-0.4 and |d ln G / d ln z| = (1/2) z^(5/4) / (1 + z^(5/4))) times
+            // the relative change: 0.75 x 2^-53, 0.75 ulp of C_D (C_D in [0.5, 1)). Each evaluation's G is within 3.5 ulp of
+            // the exact law at its own u inside the table (StepanekTableTests; G < 0.3, so its ulp is at most half C_D's: 1.75
+            // ulp of C_D each) and 4.25 ulp outside it, where G is below 1e-7 (z >= 2^44: far below C_D's ulp) or the
+            // sensitivity above is nil (z < 2^-44: 2.1 ulp of C_D each, 0 from z); each 0.508 + G rounds (half an ulp each).
+            // At most 0.75 + 3.5 + 1 = 5.25 ulp of C_D, asserted 5.5. Measured worst printed (2 ulp with the table, 1 with the
+            // power alone). Log-uniform speeds 1e-3 to 1e3 m/s, spins 1e-3 to 1e4 rad/s, radii 2-12 cm, and the edges:
             // r |w| underflowing and overflowing (where 1/S is taken as 1/S: a review found s (1/(r |w|)) 1.7e7 ulp off
             // there), S past 1e300 and below 1e-300, a speed whose r / s overflows, infinite speed and spin.
             var random = new Random(11);

@@ -87,8 +87,10 @@ namespace MagnusBall.Tests.Aerodynamics
             // the exact (22.053 + 4.196 u^2.5)^-0.4, u a double taken as exact. Inside the table, z = Kappa (u u) carries two
             // roundings (at most 2^-52 relative) and G's sensitivity to z is at most 1/2 (d ln G / d ln z = -(1/2) z^(5/4) /
             // (1 + z^(5/4))), so at most 2^-53 relative: 1 ulp of G; with the table's TableBound, 3.5 ulp. Outside it, the
-            // power (StepanekPowTests: 2.25 ulp) of x = 22.053 + 4.196 (u u) sqrt(u), whose five roundings are at most 3 x
-            // 2^-53 relative in x, 2/5 of that in G: 1.2 ulp, 3.45 in all. Asserted: 3.5. 6,000 u log-uniform over 1e-30 to 1e30
+            // power (StepanekPowTests: 2.25 ulp) of x = 22.053 + 4.196 (u u) sqrt(u), whose four products and square root
+            // and one sum are at most 5 x 2^-53 relative in x, 2/5 of that in G: 2 ulp, 4.25 in all. Asserted: 4.25. The worst
+            // found is 2.63 ulp, at u = 3289227431530.764 (outside the table; a review's search near the power's worst
+            // point), included below. 6,000 u log-uniform over 1e-30 to 1e30
             // (z from 1e-61 to 1e59, both sides of the table), and the table's edges and the ends with their neighbours.
             var random = new Random(17);
             double worst = 0, worstAt = 0;
@@ -96,6 +98,7 @@ namespace MagnusBall.Tests.Aerodynamics
             var edges = new[]
             {
                 Math.Sqrt(Math.ScaleB(1, -44) / kappa), Math.Sqrt(Math.ScaleB(1, 44) / kappa), 1e-150, 1e-300, 1, 3.3, 100, 1e6, 1e30,
+                3289227431530.764,
             };
             for (int i = 0; i < 6_000 + edges.Length; i++)
             {
@@ -114,7 +117,7 @@ namespace MagnusBall.Tests.Aerodynamics
             }
 
             TestContext.WriteLine($"worst {worst:F3} ulp of G at u = {worstAt:R}");
-            Assert.That(worst, Is.LessThanOrEqualTo(3.5), $"at u = {worstAt:R}");
+            Assert.That(worst, Is.LessThanOrEqualTo(4.25), $"at u = {worstAt:R}");
         }
 
         // G(z) as the table defines it: u^2 = z / Kappa with Kappa the double StepanekTable.Kappa.

@@ -183,7 +183,8 @@ namespace MagnusBall.Tests.Integration
         public void FoldedStepanekLift_EqualsTheGeneralFormula_ToRounding()
         {
             // The fold differs from the general formula in rounding only: C_L from the sum of squares rather than the rounded
-            // speed squared, w x v_rel rather than w x v_hat, and the drag as (g + lift + 0.508 e) + G e. Each is a few
+            // speed squared, w x v_rel rather than w x v_hat, the drag as (g + 0.508 e + G e) + lift with G read from z = Kappa s^2 /
+            // (r |w|)^2 rather than through u = s / (r |w|), and one reciprocal of |w|. Each is a few
             // roundings of terms no larger than gravity + k s^2 (C_D + C_L) with C_D <= 0.7981 and C_L <= 0.4946 (the laws'
             // limits), so within 1e-15 (about 4.5 ulp) of that sum, in the length of the difference. The spin's rates are
             // untouched.

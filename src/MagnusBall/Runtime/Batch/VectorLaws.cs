@@ -83,10 +83,8 @@ namespace MagnusBall.Batch
                     dragValue = c.Value;
                     break;
                 case StepanekDrag _:
-                    // StepanekDrag.FromConditions takes 1/S as 1/S itself where r |w| is not a normal double. The lanes never
-                    // need that (their |w| is at most about 1.3e154 rad/s and their speed above 1e-150 m/s, so an underflowing
-                    // r |w| gives u^2.5 = +inf either way) unless the radius passes about 1e154 m: such a ball goes ball by ball.
-                    supported &= model.Ball.Radius <= 1e150;
+                    // The lanes call the kernel's scalar G (StepanekDrag.SpinPart, SpinPartOfSquare) with the kernel's inputs,
+                    // so every radius and spin is the kernel's case too.
                     drag = DragKind.Stepanek;
                     break;
                 default:
@@ -240,8 +238,16 @@ namespace MagnusBall.Batch
                     fx = (gx + ex * constant + spinPart * ex) + qx * liftScale;
                     fy = (gy + ey * constant + spinPart * ey) + qy * liftScale;
                     fz = (gz + ez * constant + spinPart * ez) + qz * liftScale;
-                    // Lanes that fly without lift (|w| at or below FlightModel.MinimumLiftSpinRate): the general drag.
-                    Vector<double> dragScale = new Vector<double>(_negativeFactor) * (constant + spinPart) * speed;
+                    // Lanes that fly without lift (|w| at or below FlightModel.MinimumLiftSpinRate, below the fold's range): the
+                    // kernel's general drag, whose G is read through u = s (1 / (r |w|)), not z from s^2 (a different rounding).
+                    // Formed only when such a lane flies.
+                    Vector<double> cd = constant + spinPart;
+                    if (!Vector.EqualsAll(aero & ~lifts, Vector<long>.Zero))
+                    {
+                        cd = StepanekDrag(spinRate * (new Vector<double>(_radius) / speed), speed, spinRate);
+                    }
+
+                    Vector<double> dragScale = new Vector<double>(_negativeFactor) * cd * speed;
                     ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
                     ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
                     az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
