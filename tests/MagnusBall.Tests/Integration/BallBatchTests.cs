@@ -302,7 +302,9 @@ namespace MagnusBall.Tests.Integration
                 }
             }
 
-            Assert.That(compared, Is.GreaterThan(3000), "lanes compared");
+            // 1,000 lanes a lane width (2 ball sizes x 5 models x 100 rounds); some are marked for the per-ball step.
+            TestContext.WriteLine($"{compared} lanes compared");
+            Assert.That(compared, Is.GreaterThan(750 * Vector<double>.Count), "lanes compared");
 
             static FlightState LaneState(Random random, double radius)
             {
