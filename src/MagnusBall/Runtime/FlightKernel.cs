@@ -44,6 +44,22 @@ namespace MagnusBall
         // loses to zero. Outside the range the general formula, as before. The ball batch's lanes take the same range.
         internal const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
 
+        /// <summary>
+        /// Where dw/dt = c w (<paramref name="factor"/> c, a constant), the magnitudes of RK4's stage spins over the step's
+        /// spin w: the stage spins are w + h/2 c w = g2 w, w + h/2 c (g2 w) = g3 w and w + h c (g3 w) = g4 w, so f = |g| with
+        /// g2 = 1 + h/2 c, g3 = 1 + h/2 (c g2), g4 = 1 + h (c g3). The ball batch forms the same.
+        /// </summary>
+        internal static void StageSpinFactors(double factor, double step, out double f2, out double f3, out double f4)
+        {
+            double half = 0.5 * step;
+            double g2 = 1 + half * factor;
+            double g3 = 1 + half * (factor * g2);
+            double g4 = 1 + step * (factor * g3);
+            f2 = System.Math.Abs(g2);
+            f3 = System.Math.Abs(g3);
+            f4 = System.Math.Abs(g4);
+        }
+
         /// <summary>True where a model's k and r are within the fold's range (so its balls may take the folded lift).</summary>
         internal static bool FoldsLiftAtScale(double factor, double radius) =>
             factor >= FoldMinimum && factor <= FoldMaximum && radius >= FoldMinimum && radius <= FoldMaximum;
@@ -170,8 +186,14 @@ namespace MagnusBall
                 }
 
                 // Through copies: a caller's variable passed by reference to a call that is not inlined would live in memory
-                // on every path, the folded one too (a store and a load on RK4's dependent chain).
+                // on every path, the folded one too (a store and a load on RK4's dependent chain). The spin's own rates: an
+                // RK4 stage may pass its rate scaled from the step's (Rk4Loop), which the general formula must not see.
                 Vector3d at = position, around = spin;
+                if (_decay.SpinOnly)
+                {
+                    SpinRates(spin.X, spin.Y, spin.Z, out spinRate, out inverseSpinRate);
+                }
+
                 OutOfLineRates(at, vx, vy, vz, around, spinRate, inverseSpinRate, out Vector3d generalAcceleration, out Vector3d generalSpinAcceleration);
                 acceleration = generalAcceleration;
                 spinAcceleration = generalSpinAcceleration;
@@ -926,6 +948,27 @@ namespace MagnusBall
             double vsx, vsy, vsz;
             double time = state.Time + step;
             SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
+
+            // Where the spin decays exponentially (dw/dt = c w, c constant) and Stepanek's lift is folded, the stages' spins
+            // are the step's spin times constants of the step (StageSpinFactors): their rates are the step's rate times those,
+            // to rounding, instead of three more square roots on the divider the fold's square roots and divisions share
+            // (docs/performance.md). The end state's rate is its own (the end rates are the derivative there, bit for bit),
+            // formed here with the loop's expressions (the same bits), ahead of the velocity's stages: formed at the end, its
+            // square root and the fold's division lay on the chain into the end rates, which the next step starts from.
+            bool scaled = FoldsStepanekLift && _decay.SpinOnly;
+            double startRate = spinRate, f2 = 0, f3 = 0, f4 = 0, endRate = 0, endInverse = 0;
+            Vector3d endSpin = default;
+            if (scaled)
+            {
+                StageSpinFactors(_decay.SpinFactor, step, out f2, out f3, out f4);
+                Vector3d s1 = k1.AngularAcceleration;
+                Vector3d s2 = _decay.SpinAcceleration(Add(w, s1, half), NoConditions);
+                Vector3d s3 = _decay.SpinAcceleration(Add(w, s2, half), NoConditions);
+                Vector3d s4 = _decay.SpinAcceleration(Add(w, s3, step), NoConditions);
+                endSpin = w + (s1 + 2.0 * (s2 + s3) + s4) * sixth; // the loop's end spin: s23 = s2 + s3, sk = s4
+                SpinRates(endSpin.X, endSpin.Y, endSpin.Z, out endRate, out endInverse);
+            }
+
             for (int stage = 0; ; stage++)
             {
                 if (stage < 3)
@@ -959,7 +1002,20 @@ namespace MagnusBall
                     ws = spins ? w + (k1.AngularAcceleration + 2.0 * s23 + sk) * sixth : w + k1.AngularAcceleration * sixth;
                 }
 
-                if (spins)
+                if (scaled)
+                {
+                    if (stage < 3)
+                    {
+                        spinRate = startRate * (stage == 0 ? f2 : stage == 1 ? f3 : f4);
+                    }
+                    else
+                    {
+                        ws = endSpin; // the same expression as the loop's ws above, the same bits, formed before the stages
+                        spinRate = endRate;
+                        inverseSpinRate = endInverse;
+                    }
+                }
+                else if (spins)
                 {
                     SpinRates(ws.X, ws.Y, ws.Z, out spinRate, out inverseSpinRate);
                 }

@@ -72,6 +72,15 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>dw/dt; must equal the public law's <see cref="ISpinDecayModel.SpinAcceleration"/> bit for bit.</summary>
         Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions);
+
+        /// <summary>
+        /// True when dw/dt = c w with a constant c (<see cref="SpinFactor"/>; the exponential decay): RK4's stage spins are
+        /// then the step's spin times constants of the step, and so are their rates, and each is known before its velocity.
+        /// </summary>
+        bool SpinOnly { get; }
+
+        /// <summary>The constant c of dw/dt = c w where <see cref="SpinOnly"/> (the expression SpinAcceleration multiplies by); 0 otherwise.</summary>
+        double SpinFactor { get; }
     }
 
     internal readonly struct NoDrag : IDragLaw
@@ -97,6 +106,10 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => false;
 
         public AeroInputs Reads => AeroInputs.None;
+
+        public bool SpinOnly => false;
+
+        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) => default;
     }
@@ -139,6 +152,10 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => true;
 
         public AeroInputs Reads => AeroInputs.All;
+
+        public bool SpinOnly => false;
+
+        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             _law.SpinAcceleration(angularVelocity, conditions);
@@ -269,6 +286,10 @@ namespace MagnusBall.Aerodynamics
 
         public AeroInputs Reads => AeroInputs.None;
 
+        public bool SpinOnly => true;
+
+        public double SpinFactor => -1.0 / _timeConstant;
+
         // The same expression as ExponentialSpinDecay (-1.0 / tau evaluated here too, so the bits agree).
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * (-1.0 / _timeConstant);
@@ -283,6 +304,10 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => true;
 
         public AeroInputs Reads => AeroInputs.None;
+
+        public bool SpinOnly => false;
+
+        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * (-_rate * conditions.Speed);

@@ -353,6 +353,16 @@ namespace MagnusBall.Batch
 
             bool spins = laws.Decay != VectorLaws.DecayKind.None;
 
+            // The kernel's inner-stage spin rates where it scales them from the step's (FlightKernel.StageSpinFactors).
+            bool scaled = laws.ScalesStageSpinRates;
+            Vector<double> startRate = default;
+            double f2 = 0, f3 = 0, f4 = 0;
+            if (scaled)
+            {
+                startRate = Vector.SquareRoot(wx * wx + wy * wy + wz * wz);
+                FlightKernel.StageSpinFactors(laws.DecayFactor, step, out f2, out f3, out f4);
+            }
+
             // k2, k3, k4 and the end rates from one evaluation site (the laws inlined once), RungeKutta4's grouping.
             Vector<double> v2x = default, v2y = default, v2z = default, v3x = default, v3y = default, v3z = default;
             Vector<double> a2x = default, a2y = default, a2z = default, a3x = default, a3y = default, a3z = default;
@@ -407,7 +417,9 @@ namespace MagnusBall.Batch
                     perBall |= Vector.GreaterThan(nwx * nwx + nwy * nwy + nwz * nwz, new Vector<double>(double.MaxValue));
                 }
 
-                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz, out Vector<long> unfolded);
+                bool stageRate = scaled && stage < 3;
+                Vector<double> rate = stageRate ? startRate * new Vector<double>(stage == 0 ? f2 : stage == 1 ? f3 : f4) : default;
+                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, rate, stageRate, out nax, out nay, out naz, out nsx, out nsy, out nsz, out Vector<long> unfolded);
                 perBall |= unfolded;
                 if (stage == 3)
                 {
