@@ -339,6 +339,65 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
+        public void ScaledStageSpinRatesOutsideTheFold_FlyAsTheSingleBallPath_BitForBit()
+        {
+            // With Stepanek's lift and an exponential decay the kernel scales RK4's inner stage spin rates from the step's
+            // (steps up to one time constant); a stage whose scaled rate lies outside the fold's range takes the general
+            // formula with the stage spin's own rate, so the batch must send that ball to the per-ball step even where its
+            // end rate lies inside. Here h = tau/5: the inner factors are 0.9, 0.91 and 0.818 and the end's about 0.819, so a
+            // spin of 1.15e50 rad/s puts the first two stages above 1e50 and the last and the end below it; its neighbours
+            // fly ordinary spins. The same for a spin just above the fold's lower edge (its inner stages cross 1e-50).
+            var ground = new Plane(new Vector3d(0, 0, -1e300), Vector3d.UnitZ);
+            foreach (Vector3d gravity in new[] { Vector3d.Zero, Gravity.ZUp })
+            {
+                var model = new FlightModel(Ball.Tennis, new Air(1.21), gravity, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(0.1));
+                var starts = new[]
+                {
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 1.15e50, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(25, -2, 8), new Vector3d(10, 150, 20)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(0, 1.15e-50, 0)),
+                    new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 3, 9), new Vector3d(-40, 200, 5)),
+                };
+                (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
+                for (int n = 0; n < 6; n++)
+                {
+                    const double step = 0.02;
+                    batch.Advance(step);
+                    for (int i = 0; i < starts.Length; i++)
+                    {
+                        Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"ball {i}, step {n}");
+                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{gravity}, ball {i}, step {n}");
+                    }
+                }
+            }
+        }
+
+        [Test]
+        public void GivenAStageSpinRate_LanesOutsideTheFold_AreMarkedForTheKernel()
+        {
+            // A given (scaled) stage rate below the fold's range marks the lane whether or not it flies with lift: the kernel
+            // computes such a stage with the stage spin's own rate, which the lane does not have. A lane in range is not marked.
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            VectorLaws laws = VectorLaws.For(model);
+            Assert.That(laws.ScalesStageSpinRates, Is.True);
+            int width = Vector<double>.Count;
+            var rates = new double[width];
+            for (int lane = 0; lane < width; lane++)
+            {
+                rates[lane] = lane % 2 == 0 ? 1e-160 : 100; // no lift (at or below 1e-150) / an ordinary spin
+            }
+
+            var v = new Vector<double>(30.0);
+            var wy = new Vector<double>(rates);
+            laws.Rates(v, Vector<double>.Zero, Vector<double>.Zero, Vector<double>.Zero, wy, Vector<double>.Zero, wy, true,
+                out _, out _, out _, out _, out _, out _, out Vector<long> unfolded);
+            for (int lane = 0; lane < width; lane++)
+            {
+                Assert.That(unfolded[lane] != 0, Is.EqualTo(lane % 2 == 0), $"lane {lane}");
+            }
+        }
+
+        [Test]
         public void BallsAtTheEdgesOfStepaneksTable_FlyAsTheSingleBallPath_BitForBit()
         {
             // Stepanek's drag reads its term G from a table where z = Kappa s^2 / (r |w|)^2 lies in [2^-44, 2^44) and from the

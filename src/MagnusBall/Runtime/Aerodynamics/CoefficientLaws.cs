@@ -278,9 +278,9 @@ namespace MagnusBall.Aerodynamics
 
     internal readonly struct ExponentialSpinDecayLaw : ISpinDecayLaw
     {
-        private readonly double _timeConstant;
+        private readonly double _factor; // -1.0 / tau, the double ExponentialSpinDecay forms per call (the same bits)
 
-        public ExponentialSpinDecayLaw(double timeConstant) => _timeConstant = timeConstant;
+        public ExponentialSpinDecayLaw(double timeConstant) => _factor = -1.0 / timeConstant;
 
         public bool IsPresent => true;
 
@@ -288,11 +288,11 @@ namespace MagnusBall.Aerodynamics
 
         public bool SpinOnly => true;
 
-        public double SpinFactor => -1.0 / _timeConstant;
+        public double SpinFactor => _factor;
 
-        // The same expression as ExponentialSpinDecay (-1.0 / tau evaluated here too, so the bits agree).
+        // The same expression as ExponentialSpinDecay, its -1.0 / tau formed once (no division per evaluation or step).
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
-            angularVelocity * (-1.0 / _timeConstant);
+            angularVelocity * _factor;
     }
 
     internal readonly struct SpeedProportionalSpinDecayLaw : ISpinDecayLaw
