@@ -359,6 +359,10 @@ namespace MagnusBall.Batch
             double f2 = 0, f3 = 0, f4 = 0;
             if (scaled)
             {
+                // The kernel's step rate is Vector3d.LengthOf, which scales where |w|^2 is not a normal double (|w| below
+                // about 1.5e-154 rad/s; above 1.3e154 the step went ball by ball above). Such a lane's plain square root may
+                // differ, but its scaled rates (|g| between 1/4 and 1) then lie below the fold's 1e-50, so the lane is marked
+                // for the per-ball step (VectorLaws.Rates), where the kernel's own numbers are used.
                 startRate = Vector.SquareRoot(wx * wx + wy * wy + wz * wz);
                 FlightKernel.StageSpinFactors(laws.DecayFactor, step, out f2, out f3, out f4);
             }
