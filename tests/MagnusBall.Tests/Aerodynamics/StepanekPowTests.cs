@@ -174,7 +174,8 @@ namespace MagnusBall.Tests.Aerodynamics
             return rho / 5 * y / Ulp(y);
         }
 
-        private static (BigInteger Mantissa, int Exponent) Decompose(double value)
+        /// <summary>A finite double as mantissa 2^exponent, exactly (StepanekTableTests' exact rationals start here too).</summary>
+        internal static (BigInteger Mantissa, int Exponent) Decompose(double value)
         {
             long bits = BitConverter.DoubleToInt64Bits(value);
             int exponent = (int)((bits >> 52) & 0x7FF);

@@ -185,21 +185,9 @@ namespace MagnusBall.Tests.Aerodynamics
 
             internal static BigRational Of(double value)
             {
-                long bits = BitConverter.DoubleToInt64Bits(value);
-                int exponent = (int)((bits >> 52) & 0x7FF);
-                long mantissa = bits & 0xF_FFFF_FFFF_FFFFL;
-                if (exponent == 0)
-                {
-                    exponent = 1;
-                }
-                else
-                {
-                    mantissa |= 1L << 52;
-                }
-
-                exponent -= 1075;
+                (BigInteger mantissa, int exponent) = StepanekPowTests.Decompose(value);
                 return exponent >= 0
-                    ? new BigRational(new BigInteger(mantissa) << exponent, BigInteger.One)
+                    ? new BigRational(mantissa << exponent, BigInteger.One)
                     : new BigRational(mantissa, BigInteger.One << -exponent);
             }
 

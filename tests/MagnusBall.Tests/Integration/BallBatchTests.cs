@@ -225,16 +225,7 @@ namespace MagnusBall.Tests.Integration
                 (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
 
                 // A step short enough that the fastest balls change their velocity little (drag about 1e198 m/s^2 at 2e100 m/s).
-                const double step = 1e-110;
-                for (int n = 0; n < 8; n++)
-                {
-                    batch.Advance(step);
-                    for (int i = 0; i < starts.Length; i++)
-                    {
-                        Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}, step {n}");
-                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
-                    }
-                }
+                AssertFlyAlike(batch, steppers, 1e-110, 8, model.ToString());
             }
         }
 
@@ -359,16 +350,7 @@ namespace MagnusBall.Tests.Integration
                     new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 3, 9), new Vector3d(-40, 200, 5)),
                 };
                 (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
-                for (int n = 0; n < 6; n++)
-                {
-                    const double step = 0.02;
-                    batch.Advance(step);
-                    for (int i = 0; i < starts.Length; i++)
-                    {
-                        Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"ball {i}, step {n}");
-                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{gravity}, ball {i}, step {n}");
-                    }
-                }
+                AssertFlyAlike(batch, steppers, 0.02, 6, gravity.ToString());
             }
         }
 
@@ -430,16 +412,7 @@ namespace MagnusBall.Tests.Integration
                 }
 
                 (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts.ToArray());
-                for (int n = 0; n < 40; n++)
-                {
-                    const double step = 1.0;
-                    batch.Advance(step);
-                    for (int i = 0; i < starts.Count; i++)
-                    {
-                        Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{model}, ball {i}, step {n}");
-                        Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{model}, ball {i}, step {n}");
-                    }
-                }
+                AssertFlyAlike(batch, steppers, 1.0, 40, model.ToString());
             }
         }
 
@@ -464,15 +437,7 @@ namespace MagnusBall.Tests.Integration
                 new FlightState(new Vector3d(0, 0, 1), new Vector3d(-5.541478662100267E+49, -3.2264014080372545E+49, 2.0439078925985122E+49), new Vector3d(-2.3294398791553726E+48, -4.527804766541992E+48, -1.6239609330333083E+48)),
             };
             (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
-            for (int n = 0; n < 8; n++)
-            {
-                batch.Advance(0.1);
-                for (int i = 0; i < starts.Length; i++)
-                {
-                    Assert.That(steppers[i].TryStep(0.1, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"ball {i}, step {n}");
-                    Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"ball {i}, step {n}");
-                }
-            }
+            AssertFlyAlike(batch, steppers, 0.1, 8, model.ToString());
         }
 
         [Test]
@@ -593,6 +558,21 @@ namespace MagnusBall.Tests.Integration
             }
 
             return (batch, steppers);
+        }
+
+        // The batch and its single-ball steppers advanced together, count steps of step: every stepper's step is taken, and
+        // every ball's state is the stepper's, bit for bit, after each step.
+        private static void AssertFlyAlike(BallBatch batch, FlightStepper[] steppers, double step, int count, string what)
+        {
+            for (int n = 0; n < count; n++)
+            {
+                batch.Advance(step);
+                for (int i = 0; i < steppers.Length; i++)
+                {
+                    Assert.That(steppers[i].TryStep(step, FlightEventKinds.Landing), Is.EqualTo(StepOutcome.Taken), $"{what}, ball {i}, step {n}");
+                    Assert.That(Difference(batch.GetState(i), steppers[i].State), Is.EqualTo(0), $"{what}, ball {i}, step {n}");
+                }
+            }
         }
 
         // The largest difference of position, velocity, spin and time, each relative to its own size (at least 1): a
