@@ -257,10 +257,11 @@ namespace MagnusBall
             if (typeof(TDrag) == typeof(StepanekDragLaw))
             {
                 // Stepanek's drag folded too: -k C_D s v_rel with C_D = 0.508 + G, summed as (g + 0.508 e + G e) + lift with
-                // e = -k s v_rel, so the late G (the end of the drag's chain) meets one product and one sum. G is read from z = Kappa s^2 / (r |w|)^2, one product after the squared speed ((Kappa / r^2)
-                // (1 / |w|)^2 is a normal double here, r and |w| in [1e-50, 1e50], formed off the speed's path): the speed's
-                // square root runs beside G's polynomial, not before it. The lift, whose chain (a square root and a division
-                // after |w x v_rel|^2) is now the longer, is added last.
+                // e = -k s v_rel, so the late G (the end of the drag's chain) meets one product and one sum. G is read from
+                // z = Kappa s^2 / (r |w|)^2, one product after the squared speed ((Kappa / r^2) (1 / |w|)^2 is a normal double
+                // here, r and |w| in [1e-50, 1e50], formed off the speed's path): the speed's square root runs beside G's
+                // polynomial, not before it. The lift, whose chain (a square root and a division after |w x v_rel|^2) is now
+                // the longer, is added last.
                 double z = squared * (_kappaOverRadiusSquared * (inverseSpinRate * inverseSpinRate));
                 double spinPart = StepanekDrag.SpinPartOfSquare(z, speed, spinRate, _radius);
                 double scale = -_factor * speed;
