@@ -19,10 +19,11 @@ namespace MagnusBall
         private protected static readonly AeroConditions NoConditions = default;
 
         /// <summary>
-        /// True under Mono and Unity's IL2CPP: take RK4's straight-line form of the thesis model's common case (see
-        /// Rk4Straight). RyuJIT keeps the chain in registers across the branches anyway, and measured the straight-line form
-        /// 3-5 % slower; it folds this constant away. Both forms give the same bits. The flight core's event quick test and
-        /// the dense output pick their forms by it too (HermiteSegment.CannotFall, DormandPrince54Step). Compiled by Unity
+        /// True under Mono and Unity's IL2CPP: take RK4's straight-line forms, for the thesis model's common case (see
+        /// Rk4Straight) and for Stepanek's tennis laws folded in still air (Rk4StraightStepanek). RyuJIT keeps the chain in
+        /// registers across the branches anyway, and measured the straight-line form 3-5 % slower; it folds this constant
+        /// away. Both forms give the same bits. The flight core's event quick test, the dense output and the copy of RK4's
+        /// end (FlightKernel's Deliver) pick their forms by it too (HermiteSegment.CannotFall, DormandPrince54Step). Compiled by Unity
         /// from the package's sources, it is Unity's own scripting-backend symbols (ENABLE_MONO, ENABLE_IL2CPP), fixed at
         /// compile time; the DLL built here asks the runtime for Mono's marker type instead, a reflection lookup that
         /// Unity's managed code stripping can break (Mono.Runtime is internal to the class library), which is why the
@@ -94,9 +95,10 @@ namespace MagnusBall
         internal abstract int RungeKutta4Advance(ref FlightState state, ref StateDerivative derivative, double step, int count);
 
         /// <summary>
-        /// Test hook: RK4's straight-line form of the thesis model's common case (see PreferStraightLine), whatever the
-        /// runtime. False where the model's laws or air are not that case or a stage leaves it (then end and endRates are
-        /// not meaningful); true with the RK4 step and its end rates otherwise.
+        /// Test hook: RK4's straight-line form (see PreferStraightLine) whatever the runtime: the thesis model's common case
+        /// (Rk4Straight), or Stepanek's drag and lift folded in still air (Rk4StraightStepanek). False where the model's laws
+        /// or air are neither case or a stage leaves it (then end and endRates are not meaningful); true with the RK4 step
+        /// and its end rates otherwise.
         /// </summary>
         internal abstract bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates);
 
@@ -246,11 +248,7 @@ namespace MagnusBall
             double speed = System.Math.Sqrt(squared);
             // What the laws that are not folded read: the lift is folded, and Stepanek's drag too (it forms its spin
             // parameter itself where its table declines), so for the tennis model no division by the speed here.
-            AeroInputs reads = (typeof(TDrag) == typeof(StepanekDragLaw) ? AeroInputs.None : _drag.Reads) | _decay.Reads;
-            double spinParameter = (reads & SpinParameterBit) != 0 ? spinRate * (_radius / speed) : 0;
-            var conditions = new AeroConditions(
-                speed, spinRate, 0, _radius, _density, spinParameter, 0,
-                (reads & AeroInputs.ReynoldsNumber) != 0 ? _density * speed * 2 * _radius / _viscosity : 0);
+            AeroConditions conditions = FoldedConditions(speed, spinRate);
             double ax = _gravity.X, ay = _gravity.Y, az = _gravity.Z;
             double inverseSpinRate = 1.0 / spinRate; // the one division by the spin: k / |w| here, 1 / |w|^2 in the drag's z
             double liftScale = StepanekLiftFold(squared, transverseSquared, _radius, _factor * inverseSpinRate * speed);
@@ -604,6 +602,15 @@ namespace MagnusBall
 
         internal override bool TryRk4StraightLine(in FlightState state, in StateDerivative k1, double step, out FlightState end, out StateDerivative endRates)
         {
+            if (StepanekStraightCase)
+            {
+                bool answers = ScalesStageSpins(step)
+                    ? Rk4StraightStepanek<ScaledStageSpinRates>(state, k1, step, out end, out Vector3d a, out Vector3d s)
+                    : Rk4StraightStepanek<OwnStageSpinRates>(state, k1, step, out end, out a, out s);
+                endRates = new StateDerivative(end.Velocity, a, s);
+                return answers;
+            }
+
             bool applies = (_drag.Reads | _lift.Reads) == AeroInputs.None && StraightLineCase;
             end = default;
             Vector3d acceleration = default;
@@ -814,7 +821,20 @@ namespace MagnusBall
             {
                 // The stage spin rates scaled where they may be (see Rk4Loop), as a type argument: each instantiation's
                 // branches fold away (a run-time flag left them in the loop: about 4 % of the full tennis model's step).
-                if (FoldsStepanekLift && _decay.SpinOnly && _scalesStageSpinRates && step * System.Math.Abs(_decay.SpinFactor) <= 1)
+                bool scales = ScalesStageSpins(step);
+                if (PreferStraightLine && StepanekStraightCase && Counter is null)
+                {
+                    Vector3d straightAcceleration, straightSpinAcceleration;
+                    if (scales
+                        ? Rk4StraightStepanek<ScaledStageSpinRates>(state, k1, step, out next, out straightAcceleration, out straightSpinAcceleration)
+                        : Rk4StraightStepanek<OwnStageSpinRates>(state, k1, step, out next, out straightAcceleration, out straightSpinAcceleration))
+                    {
+                        end = new StateDerivative(next.Velocity, straightAcceleration, straightSpinAcceleration);
+                        return;
+                    }
+                }
+
+                if (scales)
                 {
                     Rk4Loop<ScaledStageSpinRates>(state, k1, step, out next, out end);
                 }
@@ -979,6 +999,162 @@ namespace MagnusBall
             return common;
         }
 
+        // Under an exponential decay, what Rk4Loop<ScaledStageSpinRates> (and its straight-line form) forms ahead of the
+        // velocity's stages: the stage spin factors, the end spin (the loop's expression: s23 = s2 + s3, sk = s4, the same
+        // bits) and its own rates.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private void ScaledStageSpins(
+            in Vector3d w, in Vector3d s1, double step, out double f2, out double f3, out double f4, out Vector3d endSpin,
+            out double endRate, out double endInverse)
+        {
+            double half = 0.5 * step;
+            double sixth = step / 6.0;
+            StageSpinFactors(_decay.SpinFactor, step, out f2, out f3, out f4);
+            Vector3d s2 = _decay.SpinAcceleration(Add(w, s1, half), NoConditions);
+            Vector3d s3 = _decay.SpinAcceleration(Add(w, s2, half), NoConditions);
+            Vector3d s4 = _decay.SpinAcceleration(Add(w, s3, step), NoConditions);
+            endSpin = w + (s1 + 2.0 * (s2 + s3) + s4) * sixth;
+            SpinRates(endSpin.X, endSpin.Y, endSpin.Z, out endRate, out endInverse);
+        }
+
+        // Whether an RK4 step of this size takes its inner stages' spin rates scaled from the step's (see Rk4Loop).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private bool ScalesStageSpins(double step) =>
+            FoldsStepanekLift && _decay.SpinOnly && _scalesStageSpinRates && step * System.Math.Abs(_decay.SpinFactor) <= 1;
+
+        // The laws and air Rk4StraightStepanek is written for: Stepanek's drag and lift, both folded (TryFoldedRates), any
+        // spin decay, still air.
+        private bool StepanekStraightCase
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            get => typeof(TDrag) == typeof(StepanekDragLaw) && FoldsStepanekLift && _foldsLift && _stillAir;
+        }
+
+        // Rk4Loop's arithmetic, operation for operation, for Stepanek's drag and lift folded in still air with no evaluation
+        // counter (the tennis model and its presets), as one basic block under Mono, as Rk4Straight is for the thesis model:
+        // the branches of every evaluation (the fold's ranges, the table's row, a stage spin's LengthOf) become flags tested
+        // once at the end. False, with next and end written but not meaningful, where a stage leaves that case (a spin rate,
+        // squared speed or squared |w x v| outside the fold's range, z outside the table, a stage spin whose square is
+        // subnormal or overflows); the caller then takes Rk4Loop, which gives the general formula there. A start spin
+        // outside the fold's range is declined before the chain starts.
+        // Like Rk4Straight it hands back the end rates as two vectors, and the caller forms the end derivative only where it
+        // answers: the caller's end derivative may be its k1 (IIntegrator.Step's callers pass one variable for both), which
+        // a declined step must leave as it was for the general step.
+        private bool Rk4StraightStepanek<TStages>(
+            in FlightState state, in StateDerivative k1, double step, out FlightState next, out Vector3d endAcceleration,
+            out Vector3d endSpinAcceleration)
+            where TStages : struct, IStageSpinRates
+        {
+            bool scaled = default(TStages).Scaled;
+            bool spins = _decay.IsPresent;
+            Vector3d p = state.Position, w = state.AngularVelocity;
+            double startRate = Vector3d.LengthOf(w.X, w.Y, w.Z); // SpinRates' |w| (the lift is present)
+            if (!(startRate >= FoldMinimum && startRate <= FoldMaximum))
+            {
+                next = default;
+                endAcceleration = default;
+                endSpinAcceleration = default;
+                return false;
+            }
+
+            double half = 0.5 * step;
+            double sixth = step / 6.0;
+            double f2 = 0, f3 = 0, f4 = 0, endRate = 0;
+            Vector3d endSpin = default;
+            if (scaled)
+            {
+                ScaledStageSpins(w, k1.AngularAcceleration, step, out f2, out f3, out f4, out endSpin, out endRate, out _);
+            }
+
+            double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
+            Vector3d k1a = k1.Acceleration, k1s = k1.AngularAcceleration;
+            bool common = true;
+
+            // k2 at y + h/2 k1
+            double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
+            Vector3d w2 = spins ? Add(w, k1s, half) : w;
+            double rate2 = scaled ? startRate * f2 : spins ? StraightLength(w2, ref common) : startRate;
+            StraightStepanekRates(v2x, v2y, v2z, w2, rate2, ref common, out double a2x, out double a2y, out double a2z, out Vector3d s2);
+
+            // k3 at y + h/2 k2
+            double v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
+            Vector3d w3 = spins ? Add(w, s2, half) : w;
+            double rate3 = scaled ? startRate * f3 : spins ? StraightLength(w3, ref common) : startRate;
+            StraightStepanekRates(v3x, v3y, v3z, w3, rate3, ref common, out double a3x, out double a3y, out double a3z, out Vector3d s3);
+
+            // k4 at y + h k3
+            double v4x = vx + step * a3x, v4y = vy + step * a3y, v4z = vz + step * a3z;
+            Vector3d w4 = spins ? Add(w, s3, step) : w;
+            double rate4 = scaled ? startRate * f4 : spins ? StraightLength(w4, ref common) : startRate;
+            StraightStepanekRates(v4x, v4y, v4z, w4, rate4, ref common, out double a4x, out double a4y, out double a4z, out Vector3d s4);
+
+            // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as Rk4Loop groups it, and the end rates
+            Vector3d k1v = k1.Velocity;
+            var pe = new Vector3d(
+                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
+                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
+                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
+            double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
+            double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
+            Vector3d we = scaled ? endSpin : spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
+            double rateEnd = scaled ? endRate : spins ? StraightLength(we, ref common) : startRate;
+            StraightStepanekRates(vex, vey, vez, we, rateEnd, ref common, out double aex, out double aey, out double aez, out endSpinAcceleration);
+            next = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
+            endAcceleration = new Vector3d(aex, aey, aez);
+            return common;
+        }
+
+        // Vector3d.LengthOf's common path (no branch), with common cleared where it would take its scaled one.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static double StraightLength(in Vector3d w, ref bool common)
+        {
+            double squared = w.X * w.X + w.Y * w.Y + w.Z * w.Z;
+            common &= squared >= 2.2250738585072014e-308 & squared <= double.MaxValue;
+            return System.Math.Sqrt(squared);
+        }
+
+        // TryFoldedRates for Stepanek's drag and lift in still air, operation for operation, without a branch: common cleared
+        // where TryFoldedRates would decline or the table would (the results are then of no meaning).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private void StraightStepanekRates(
+            double rx, double ry, double rz, in Vector3d spin, double spinRate, ref bool common,
+            out double ax, out double ay, out double az, out Vector3d spinAcceleration)
+        {
+            double wx = spin.X, wy = spin.Y, wz = spin.Z;
+            double qx = wy * rz - wz * ry, qy = wz * rx - wx * rz, qz = wx * ry - wy * rx; // w x v_rel
+            double squared = rx * rx + ry * ry + rz * rz;
+            double transverseSquared = qx * qx + qy * qy + qz * qz;
+            common &= spinRate >= FoldMinimum & spinRate <= FoldMaximum & squared >= FoldMinimumSquare & squared <= FoldMaximumSquare &
+                (transverseSquared == 0 | (transverseSquared >= FoldMinimumSquare & transverseSquared <= FoldMaximumSquare));
+            double speed = System.Math.Sqrt(squared);
+            double inverseSpinRate = 1.0 / spinRate;
+            double liftScale = StepanekLiftFold(squared, transverseSquared, _radius, _factor * inverseSpinRate * speed);
+            double z = squared * (_kappaOverRadiusSquared * (inverseSpinRate * inverseSpinRate));
+            double spinPart = StepanekDrag.TableWithoutBranch(z, out bool inTable);
+            common &= inTable;
+            double scale = -_factor * speed;
+            double ex = rx * scale, ey = ry * scale, ez = rz * scale;
+            ax = (_gravity.X + ex * 0.508 + spinPart * ex) + qx * liftScale;
+            ay = (_gravity.Y + ey * 0.508 + spinPart * ey) + qy * liftScale;
+            az = (_gravity.Z + ez * 0.508 + spinPart * ez) + qz * liftScale;
+            // (A law of the spin alone, the exponential decay, is given no conditions, as Rk4Loop's scaled stage spins are.)
+            spinAcceleration = !_decay.IsPresent ? default
+                : _decay.SpinOnly ? _decay.SpinAcceleration(spin, NoConditions)
+                : _decay.SpinAcceleration(spin, FoldedConditions(speed, spinRate));
+        }
+
+        // The conditions TryFoldedRates gives the laws it does not fold (the spin decay, where Stepanek's drag is folded).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private AeroConditions FoldedConditions(double speed, double spinRate)
+        {
+            AeroInputs reads = (typeof(TDrag) == typeof(StepanekDragLaw) ? AeroInputs.None : _drag.Reads) | _decay.Reads;
+            double spinParameter = (reads & SpinParameterBit) != 0 ? spinRate * (_radius / speed) : 0;
+            return new AeroConditions(
+                speed, spinRate, 0, _radius, _density, spinParameter, 0,
+                (reads & AeroInputs.ReynoldsNumber) != 0 ? _density * speed * 2 * _radius / _viscosity : 0);
+        }
+
         // k2 + k3 is summed as soon as k3 is known (the same sum RungeKutta4 forms, fewer numbers live across the loop).
         private void Rk4Loop<TStages>(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
             where TStages : struct, IStageSpinRates
@@ -1015,13 +1191,7 @@ namespace MagnusBall
             Vector3d endSpin = default;
             if (scaled)
             {
-                StageSpinFactors(_decay.SpinFactor, step, out f2, out f3, out f4);
-                Vector3d s1 = k1.AngularAcceleration;
-                Vector3d s2 = _decay.SpinAcceleration(Add(w, s1, half), NoConditions);
-                Vector3d s3 = _decay.SpinAcceleration(Add(w, s2, half), NoConditions);
-                Vector3d s4 = _decay.SpinAcceleration(Add(w, s3, step), NoConditions);
-                endSpin = w + (s1 + 2.0 * (s2 + s3) + s4) * sixth; // the loop's end spin: s23 = s2 + s3, sk = s4
-                SpinRates(endSpin.X, endSpin.Y, endSpin.Z, out endRate, out endInverse);
+                ScaledStageSpins(w, k1.AngularAcceleration, step, out f2, out f3, out f4, out endSpin, out endRate, out endInverse);
             }
 
             for (int stage = 0; ; stage++)

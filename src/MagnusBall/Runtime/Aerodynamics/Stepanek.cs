@@ -102,13 +102,40 @@ namespace MagnusBall.Aerodynamics
         internal static bool TryTable(double z, out double g)
         {
             long bits = BitConverter.DoubleToInt64Bits(z);
-            long row = (bits >> 50) - ((1023L + StepanekTable.LowestBinade) << 2); // 4 (biased exponent) + the top two bits
+            long row = TableRow(bits);
             if ((ulong)row >= StepanekTable.Rows)
             {
                 g = 0;
                 return false; // z outside [2^-44, 2^44), 0, subnormal, negative, inf or NaN
             }
 
+            g = TablePolynomial(bits, row);
+            return true;
+        }
+
+        /// <summary>
+        /// <see cref="TryTable"/> without a branch, for RK4's straight-line form under Mono (FlightKernel): the same G where
+        /// z lies in the table, with <paramref name="inTable"/> true; elsewhere the first row's polynomial at z's mantissa (a
+        /// finite number of no meaning) with <paramref name="inTable"/> false.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        internal static double TableWithoutBranch(double z, out bool inTable)
+        {
+            long bits = BitConverter.DoubleToInt64Bits(z);
+            long row = TableRow(bits);
+            long inRange = ((row - StepanekTable.Rows) & ~row) >> 63; // all ones where 0 <= row < Rows, else 0
+            inTable = inRange != 0;
+            return TablePolynomial(bits, row & inRange);
+        }
+
+        // The row of z's quarter binade: 4 (biased exponent) + the top two bits of the mantissa, from the table's lowest.
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static long TableRow(long bits) => (bits >> 50) - ((1023L + StepanekTable.LowestBinade) << 2);
+
+        // The row's polynomial at t, z's position in its quarter binade (exact), by Estrin's scheme.
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double TablePolynomial(long bits, long row)
+        {
             double t = BitConverter.Int64BitsToDouble((bits & 0x0003_FFFF_FFFF_FFFFL) | 0x3FF0_0000_0000_0000L) - 1.125; // exact
             double[] c = StepanekTable.Coefficients;
             int i = (int)row * StepanekTable.Stride;
@@ -117,8 +144,7 @@ namespace MagnusBall.Aerodynamics
             double p1 = (c[i + 4] + t * c[i + 5]) + t2 * (c[i + 6] + t * c[i + 7]);
             double p2 = (c[i + 8] + t * c[i + 9]) + t2 * (c[i + 10] + t * c[i + 11]);
             double p3 = (c[i + 12] + t * c[i + 13]) + t2 * (c[i + 14] + t * c[i + 15]);
-            g = (p0 + t4 * p1) + t8 * (p2 + t4 * p3);
-            return true;
+            return (p0 + t4 * p1) + t8 * (p2 + t4 * p3);
         }
 
         // 22.053 + 4.196 u^2.5 as (4.196 u^2) sqrt(u): the product 4.196 u^2 is formed while the square root runs.

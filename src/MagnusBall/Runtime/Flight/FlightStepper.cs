@@ -191,6 +191,9 @@ namespace MagnusBall.Flight
         /// </summary>
         public ReadOnlySpan<FlightEvent> Events => _eventCount == 0 ? default : new ReadOnlySpan<FlightEvent>(_events, 0, _eventCount);
 
+        /// <summary>How many events the last step found (<see cref="Events"/>' length, without building the span).</summary>
+        internal int EventCount => _eventCount;
+
         /// <summary>The stop event of the flight (default until <see cref="IsStopped"/>; a rest is a stop too).</summary>
         public FlightEvent StopEvent => _stopEvent;
 
