@@ -1138,10 +1138,9 @@ namespace MagnusBall
             ax = (_gravity.X + ex * 0.508 + spinPart * ex) + qx * liftScale;
             ay = (_gravity.Y + ey * 0.508 + spinPart * ey) + qy * liftScale;
             az = (_gravity.Z + ez * 0.508 + spinPart * ez) + qz * liftScale;
-            // (A law of the spin alone, the exponential decay, is given no conditions, as Rk4Loop's scaled stage spins are.)
-            spinAcceleration = !_decay.IsPresent ? default
-                : _decay.SpinOnly ? _decay.SpinAcceleration(spin, NoConditions)
-                : _decay.SpinAcceleration(spin, FoldedConditions(speed, spinRate));
+            // (A law of the spin and the speed alone, as both built-in decays are, is given the speed instead of the conditions.)
+            spinAcceleration = _decay.SpeedOnly ? _decay.SpinAccelerationAtSpeed(spin, speed)
+                : _decay.IsPresent ? _decay.SpinAcceleration(spin, FoldedConditions(speed, spinRate)) : default;
         }
 
         // The conditions TryFoldedRates gives the laws it does not fold (the spin decay, where Stepanek's drag is folded).

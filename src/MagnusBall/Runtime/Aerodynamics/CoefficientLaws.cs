@@ -81,6 +81,16 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>The constant c of dw/dt = c w where <see cref="SpinOnly"/> (the expression SpinAcceleration multiplies by); 0 otherwise.</summary>
         double SpinFactor { get; }
+
+        /// <summary>
+        /// True when dw/dt depends on the spin and the air speed alone (the exponential and the speed-proportional decay):
+        /// <see cref="SpinAccelerationAtSpeed"/> then gives <see cref="SpinAcceleration"/>'s bits without the conditions (Mono
+        /// builds a 64-byte struct in memory for them; RK4's straight-line form for the tennis laws does without).
+        /// </summary>
+        bool SpeedOnly { get; }
+
+        /// <summary>dw/dt at the air speed <paramref name="speed"/> where <see cref="SpeedOnly"/> (the conditions' Speed); zero otherwise.</summary>
+        Vector3d SpinAccelerationAtSpeed(in Vector3d angularVelocity, double speed);
     }
 
     internal readonly struct NoDrag : IDragLaw
@@ -112,6 +122,10 @@ namespace MagnusBall.Aerodynamics
         public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) => default;
+
+        public bool SpeedOnly => false;
+
+        public Vector3d SpinAccelerationAtSpeed(in Vector3d angularVelocity, double speed) => default;
     }
 
     /// <summary>Any <see cref="IDragModel"/> (a user's own law), called through the interface with every input computed.</summary>
@@ -159,6 +173,10 @@ namespace MagnusBall.Aerodynamics
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             _law.SpinAcceleration(angularVelocity, conditions);
+
+        public bool SpeedOnly => false;
+
+        public Vector3d SpinAccelerationAtSpeed(in Vector3d angularVelocity, double speed) => default;
     }
 
     internal readonly struct ConstantDragLaw : IDragLaw
@@ -293,6 +311,10 @@ namespace MagnusBall.Aerodynamics
         // The same expression as ExponentialSpinDecay, its -1.0 / tau formed once (no division per evaluation or step).
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * _factor;
+
+        public bool SpeedOnly => true;
+
+        public Vector3d SpinAccelerationAtSpeed(in Vector3d angularVelocity, double speed) => angularVelocity * _factor;
     }
 
     internal readonly struct SpeedProportionalSpinDecayLaw : ISpinDecayLaw
@@ -311,5 +333,10 @@ namespace MagnusBall.Aerodynamics
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * (-_rate * conditions.Speed);
+
+        public bool SpeedOnly => true;
+
+        // SpinAcceleration's expression, the speed given as it is in the conditions.
+        public Vector3d SpinAccelerationAtSpeed(in Vector3d angularVelocity, double speed) => angularVelocity * (-_rate * speed);
     }
 }
