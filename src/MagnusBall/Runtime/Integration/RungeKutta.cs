@@ -86,9 +86,10 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Takes <paramref name="count"/> steps of <paramref name="step"/> seconds in one call, in place: the same bits as
         /// <paramref name="count"/> calls of <see cref="Step"/>, each passing its end derivative on, with the arguments
-        /// checked once and no call per step (docs/performance.md: 480 steps on the thesis model in 0.545x the time of the
-        /// thesis-style code, against 0.681x for a loop of <see cref="Step"/> calls; for one step a frame, call
-        /// <see cref="Step"/>). No events: for landings, bounces and samples use the flight core
+        /// checked once and no call per step (docs/performance.md: 480 steps on the thesis model in 0.54x the time of the
+        /// thesis-style code, against 0.65x for a loop of <see cref="Step"/> calls on .NET). For one step a frame, a count of
+        /// 1 is the cheaper call on .NET (0.57x: the state and derivative are updated in place, so the caller copies no end
+        /// derivative) and <see cref="Step"/> under Mono (0.58x against 0.77x). No events: for landings, bounces and samples use the flight core
         /// (<see cref="Flight.FlightStepper"/>, <see cref="Stepping.FixedStepDriver"/>, <see cref="Queries.TrajectoryPredictor"/>).
         /// </summary>
         /// <remarks>
