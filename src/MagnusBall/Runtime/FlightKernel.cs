@@ -578,9 +578,9 @@ namespace MagnusBall
         }
 
         // The caller's pair from a step's end, just written number by number by the step. Under RyuJIT copied number by number
-        // (FlightState.CopyOf: a plain copy's wide load waits for the step's stores to reach memory, 15 ns a call on the
-        // thesis model); under Mono the plain copy, which its JIT makes faster than the copy by numbers (10 ns a call
-        // slower there). The same bits either way.
+        // (FlightState.CopyOf: a plain copy's wide load waits for the step's stores to reach memory; with AdvanceOne, one
+        // step a call went from 66 to 55 ns on the thesis model, docs/performance.md); under Mono the plain copy, which its
+        // JIT makes faster (the copy by numbers measured about 10 ns a call slower there). The same bits either way.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void Deliver(in FlightState end, in StateDerivative endDerivative, ref FlightState state, ref StateDerivative derivative)
         {
@@ -813,7 +813,9 @@ namespace MagnusBall
         //   the inlined laws appear once in the code (four inlined copies of Stepanek's laws made a 6 kB method with a
         //   1.6 kB stack frame, and were measured slower).
         // - Under Mono, the thesis model's common case first takes the straight-line form (Rk4Straight), here rather than
-        //   inside Rk4Unrolled, whose large frame Mono zeroes on every call.
+        //   inside Rk4Unrolled, whose large frame Mono zeroes on every call; and Stepanek's tennis laws folded in still air
+        //   take theirs (Rk4StraightStepanek) before Rk4Loop. A straight-line form that declines leaves end untouched (its
+        //   caller may pass k1 as end), and Rk4Loop or Rk4Unrolled takes the step.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private void Rk4(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
         {
@@ -1032,11 +1034,11 @@ namespace MagnusBall
 
         // Rk4Loop's arithmetic, operation for operation, for Stepanek's drag and lift folded in still air with no evaluation
         // counter (the tennis model and its presets), as one basic block under Mono, as Rk4Straight is for the thesis model:
-        // the branches of every evaluation (the fold's ranges, the table's row, a stage spin's LengthOf) become flags tested
-        // once at the end. False, with next and end written but not meaningful, where a stage leaves that case (a spin rate,
-        // squared speed or squared |w x v| outside the fold's range, z outside the table, a stage spin whose square is
-        // subnormal or overflows); the caller then takes Rk4Loop, which gives the general formula there. A start spin
-        // outside the fold's range is declined before the chain starts.
+        // the branches of every evaluation (the fold's ranges, the table's row) become flags tested once at the end, and a
+        // stage spin's LengthOf loses its branch (see StraightLength). False, with next written but not meaningful, where a
+        // stage leaves that case (a spin rate, squared speed or squared |w x v| outside the fold's range, z outside the
+        // table); the caller then takes Rk4Loop, which gives the general formula there. A start spin outside the fold's
+        // range is declined before the chain starts.
         // Like Rk4Straight it hands back the end rates as two vectors, and the caller forms the end derivative only where it
         // answers: the caller's end derivative may be its k1 (IIntegrator.Step's callers pass one variable for both), which
         // a declined step must leave as it was for the general step.
@@ -1073,19 +1075,19 @@ namespace MagnusBall
             // k2 at y + h/2 k1
             double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
             Vector3d w2 = spins ? Add(w, k1s, half) : w;
-            double rate2 = scaled ? startRate * f2 : spins ? StraightLength(w2, ref common) : startRate;
+            double rate2 = scaled ? startRate * f2 : spins ? StraightLength(w2) : startRate;
             StraightStepanekRates(v2x, v2y, v2z, w2, rate2, ref common, out double a2x, out double a2y, out double a2z, out Vector3d s2);
 
             // k3 at y + h/2 k2
             double v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
             Vector3d w3 = spins ? Add(w, s2, half) : w;
-            double rate3 = scaled ? startRate * f3 : spins ? StraightLength(w3, ref common) : startRate;
+            double rate3 = scaled ? startRate * f3 : spins ? StraightLength(w3) : startRate;
             StraightStepanekRates(v3x, v3y, v3z, w3, rate3, ref common, out double a3x, out double a3y, out double a3z, out Vector3d s3);
 
             // k4 at y + h k3
             double v4x = vx + step * a3x, v4y = vy + step * a3y, v4z = vz + step * a3z;
             Vector3d w4 = spins ? Add(w, s3, step) : w;
-            double rate4 = scaled ? startRate * f4 : spins ? StraightLength(w4, ref common) : startRate;
+            double rate4 = scaled ? startRate * f4 : spins ? StraightLength(w4) : startRate;
             StraightStepanekRates(v4x, v4y, v4z, w4, rate4, ref common, out double a4x, out double a4y, out double a4z, out Vector3d s4);
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as Rk4Loop groups it, and the end rates
@@ -1098,21 +1100,18 @@ namespace MagnusBall
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
             Vector3d we = scaled ? endSpin : spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
-            double rateEnd = scaled ? endRate : spins ? StraightLength(we, ref common) : startRate;
+            double rateEnd = scaled ? endRate : spins ? StraightLength(we) : startRate;
             StraightStepanekRates(vex, vey, vez, we, rateEnd, ref common, out double aex, out double aey, out double aez, out endSpinAcceleration);
             next = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
             endAcceleration = new Vector3d(aex, aey, aez);
             return common;
         }
 
-        // Vector3d.LengthOf's common path (no branch), with common cleared where it would take its scaled one.
+        // Vector3d.LengthOf's common path, without its branch. Where LengthOf would take its scaled path instead (a square
+        // that is 0, subnormal, past double.MaxValue or NaN), this rate is below 1.5e-154, infinite or NaN, and the fold's
+        // spin-rate range, which StraightStepanekRates tests on every stage's rate, declines the step: no flag of its own.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static double StraightLength(in Vector3d w, ref bool common)
-        {
-            double squared = w.X * w.X + w.Y * w.Y + w.Z * w.Z;
-            common &= squared >= 2.2250738585072014e-308 & squared <= double.MaxValue;
-            return System.Math.Sqrt(squared);
-        }
+        private static double StraightLength(in Vector3d w) => System.Math.Sqrt(w.X * w.X + w.Y * w.Y + w.Z * w.Z);
 
         // TryFoldedRates for Stepanek's drag and lift in still air, operation for operation, without a branch: common cleared
         // where TryFoldedRates would decline or the table would (the results are then of no meaning).

@@ -736,7 +736,8 @@ namespace MagnusBall.Tests.Integration
             // counter is attached). Both of Rk4Loop's shapes: an exponential decay with steps up to one time constant (the
             // stage spin rates scaled) and beyond it, the presets' speed-proportional decay and no decay (each stage's own
             // rate). States: realistic flights (speeds 0.5-70 m/s, spins to 600 rad/s in any direction, some with signed-zero
-            // components) and adversarial ones (components from subnormal to 1e308), steps from 1e-9 to 30 s.
+            // components, steps from 1e-9 to 0.07 s), adversarial ones (components from subnormal to 1e308, steps to 30 s),
+            // and the two ends of the fold's |w x v|^2 range.
             double[] magnitudes = { 0, 5e-324, 1e-310, 1e-160, 1e-60, 1e-30, 1e-5, 0.3, 5, 30, 150, 1e30, 1e60, 1e154, 1e200, 1.7e308 };
             var random = new Random(23);
             double Component() =>
@@ -750,7 +751,7 @@ namespace MagnusBall.Tests.Integration
                 new FlightModel(Ball.Tennis, new Air(1.18), Gravity.YUp, StepanekDrag.Instance, StepanekLift.Instance, SpeedProportionalSpinDecay.TennisCrossLindsey),
                 new FlightModel(Ball.Tennis, new Air(1.21), Gravity.Along(new Vector3d(1, -2, 3)), StepanekDrag.Instance, StepanekLift.Instance),
             };
-            double[] steps = { 1e-9, 1.0 / 240, 0.03, 1, 30 };
+            double[] steps = { 1e-9, 1.0 / 240, 0.03, 0.07, 1, 30 }; // 0.07 s: 1.4 time constants of the second model (its own stage rates)
             int taken = 0, compared = 0, realisticTaken = 0, realistic = 0;
             foreach (FlightModel model in models)
             {
@@ -767,8 +768,21 @@ namespace MagnusBall.Tests.Integration
                             i % 10 == 0 ? -new Vector3d(0, random.Next(-600, 600), 0) : Direction() * (1200 * random.NextDouble()),
                             random.NextDouble())
                         : new FlightState(Vector(), Vector(), Vector(), random.NextDouble());
+                    double step = isRealistic ? steps[random.Next(4)] : steps[i % steps.Length];
+                    if (i % 8 == 1)
+                    {
+                        // The fold's |w x v|^2 range at its two ends: a velocity almost along the spin (|w x v|^2 near 1e-206,
+                        // below the range but not 0), and |w| = 1e50 against 1e51 m/s (|w x v|^2 = 1e202, above it) over a
+                        // step too short to move the velocity, where nothing else leaves the fold.
+                        Vector3d axis = Direction().NormalizedOrZero();
+                        Vector3d across = Vector3d.Cross(axis, Vector3d.UnitX).NormalizedOrZero();
+                        state = i % 16 == 1
+                            ? new FlightState(Vector(), axis * (5 + 55 * random.NextDouble()) + across * 1e-105, axis * (10 + 590 * random.NextDouble()))
+                            : new FlightState(Vector(), new Vector3d(1e51, 0, 0), new Vector3d(0, 1e50, 0));
+                        step = i % 16 == 1 ? steps[random.Next(3)] : 1e-300;
+                    }
+
                     StateDerivative k1 = general.Derivative(state);
-                    double step = isRealistic ? steps[random.Next(3)] : steps[i % steps.Length];
                     compared++;
                     realistic += isRealistic ? 1 : 0;
                     FlightState expected = RungeKutta4.Instance.Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
