@@ -888,10 +888,7 @@ namespace MagnusBall
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as RungeKutta4 groups it, and the end rates
             Vector3d k1v = k1.Velocity;
-            var pe = new Vector3d(
-                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
-                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
-                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            Vector3d pe = EndPosition(p, k1v, v2x, v2y, v2z, v3x, v3y, v3z, v4x, v4y, v4z, sixth);
             double vex = vx + (k1a.X + (a2.X + a3.X) * 2.0 + a4.X) * sixth;
             double vey = vy + (k1a.Y + (a2.Y + a3.Y) * 2.0 + a4.Y) * sixth;
             double vez = vz + (k1a.Z + (a2.Z + a3.Z) * 2.0 + a4.Z) * sixth;
@@ -978,10 +975,7 @@ namespace MagnusBall
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, and the end rates
             Vector3d k1v = k1.Velocity;
-            var pe = new Vector3d(
-                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
-                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
-                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            Vector3d pe = EndPosition(p, k1v, v2x, v2y, v2z, v3x, v3y, v3z, v4x, v4y, v4z, sixth);
             double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
@@ -1018,6 +1012,17 @@ namespace MagnusBall
             endSpin = w + (s1 + 2.0 * (s2 + s3) + s4) * sixth;
             SpinRates(endSpin.X, endSpin.Y, endSpin.Z, out endRate, out endInverse);
         }
+
+        // The end position y + (k1 + 2 (k2 + k3) + k4) h/6 from the stage velocities, grouped as RungeKutta4 groups it (the
+        // written-out steps' common tail: Rk4Unrolled, Rk4Straight, Rk4StraightStepanek).
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector3d EndPosition(
+            in Vector3d p, in Vector3d k1v, double v2x, double v2y, double v2z, double v3x, double v3y, double v3z,
+            double v4x, double v4y, double v4z, double sixth) =>
+            new Vector3d(
+                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
+                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
+                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
 
         // Whether an RK4 step of this size takes its inner stages' spin rates scaled from the step's (see Rk4Loop).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -1092,10 +1097,7 @@ namespace MagnusBall
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as Rk4Loop groups it, and the end rates
             Vector3d k1v = k1.Velocity;
-            var pe = new Vector3d(
-                p.X + (k1v.X + (v2x + v3x) * 2.0 + v4x) * sixth,
-                p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
-                p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
+            Vector3d pe = EndPosition(p, k1v, v2x, v2y, v2z, v3x, v3y, v3z, v4x, v4y, v4z, sixth);
             double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;

@@ -713,13 +713,7 @@ namespace MagnusBall.Tests.Integration
                     }
 
                     taken++;
-                    AssertBits(straight.Position, expected.Position, state, step);
-                    AssertBits(straight.Velocity, expected.Velocity, state, step);
-                    AssertBits(straight.AngularVelocity, expected.AngularVelocity, state, step);
-                    AssertBits(straightEnd.Velocity, expectedEnd.Velocity, state, step);
-                    AssertBits(straightEnd.Acceleration, expectedEnd.Acceleration, state, step);
-                    AssertBits(straightEnd.AngularAcceleration, expectedEnd.AngularAcceleration, state, step);
-                    Assert.That(BitConverter.DoubleToInt64Bits(straight.Time), Is.EqualTo(BitConverter.DoubleToInt64Bits(expected.Time)));
+                    AssertSameStep(straight, straightEnd, expected, expectedEnd, state, step);
                 }
             }
 
@@ -793,13 +787,7 @@ namespace MagnusBall.Tests.Integration
 
                     taken++;
                     realisticTaken += isRealistic ? 1 : 0;
-                    AssertBits(straight.Position, expected.Position, state, step);
-                    AssertBits(straight.Velocity, expected.Velocity, state, step);
-                    AssertBits(straight.AngularVelocity, expected.AngularVelocity, state, step);
-                    AssertBits(straightEnd.Velocity, expectedEnd.Velocity, state, step);
-                    AssertBits(straightEnd.Acceleration, expectedEnd.Acceleration, state, step);
-                    AssertBits(straightEnd.AngularAcceleration, expectedEnd.AngularAcceleration, state, step);
-                    Assert.That(BitConverter.DoubleToInt64Bits(straight.Time), Is.EqualTo(BitConverter.DoubleToInt64Bits(expected.Time)));
+                    AssertSameStep(straight, straightEnd, expected, expectedEnd, state, step);
                 }
             }
 
@@ -836,6 +824,19 @@ namespace MagnusBall.Tests.Integration
                 AssertBits(together.Velocity, apart.Velocity, state, 1.0 / 240);
                 AssertBits(shared.Acceleration, end.Acceleration, state, 1.0 / 240);
             }
+        }
+
+        // A straight-line step against the general one, every number bit for bit (signed zeros too).
+        private static void AssertSameStep(
+            in FlightState straight, in StateDerivative straightEnd, in FlightState expected, in StateDerivative expectedEnd, in FlightState from, double step)
+        {
+            AssertBits(straight.Position, expected.Position, from, step);
+            AssertBits(straight.Velocity, expected.Velocity, from, step);
+            AssertBits(straight.AngularVelocity, expected.AngularVelocity, from, step);
+            AssertBits(straightEnd.Velocity, expectedEnd.Velocity, from, step);
+            AssertBits(straightEnd.Acceleration, expectedEnd.Acceleration, from, step);
+            AssertBits(straightEnd.AngularAcceleration, expectedEnd.AngularAcceleration, from, step);
+            Assert.That(BitConverter.DoubleToInt64Bits(straight.Time), Is.EqualTo(BitConverter.DoubleToInt64Bits(expected.Time)));
         }
 
         private static void AssertBits(in Vector3d actual, in Vector3d expected, in FlightState from, double step)
