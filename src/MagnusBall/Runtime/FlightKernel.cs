@@ -563,7 +563,8 @@ namespace MagnusBall
         }
 
         // Advance of one step (a game's one step a frame), apart: one pair of locals, where the loop's frame holds two (Mono
-        // zero-fills every struct local on entry: 480 calls of one step cost 212 against 143 ns a step in one call, thesis model).
+        // zero-fills every struct local on entry). Thesis model under Mono: 480 calls of one step cost 212 ns a step through
+        // the loop's frame, 199 ns through this one, against 143 ns in one call.
         [MethodImpl(MethodImplOptions.NoInlining)]
         private int AdvanceOne(ref FlightState state, ref StateDerivative derivative, double step)
         {
