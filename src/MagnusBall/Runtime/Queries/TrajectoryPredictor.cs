@@ -207,8 +207,8 @@ namespace MagnusBall.Queries
 
                 if (stepper.EventCount != 0)
                 {
-                    // (Tested first: most steps hold no event, and under Mono building the two spans costs a few percent of a
-                    // predicted shot.)
+                    // (Tested first: most steps hold no event, and building the two spans is work for nothing there; under Mono
+                    // about 1 us of a 213 us predicted full-model shot.)
                     Span<FlightEvent> found = SpanView.Of(stepper.Events); // not the read-only indexer: Mono 6.8 lacks it
                     for (int i = 0; i < found.Length; i++)
                     {
