@@ -225,35 +225,33 @@ namespace MagnusBall.Aerodynamics
         // (error below 4e-19), computed in powers of s = 2t = 2m - 3 and written here for t, each coefficient times the
         // power of two that makes the two the same numbers (D_k = c_(k+1) 2^(k+1)): exact, so the sum is the same, bit for bit,
         // one operation shorter (t = m - 1.5 is exact).
-        internal const double C0 = 0.8502830004171938;
-        internal const double D0 = -0.22674213344458505;
-        internal const double D1 = 0.10581299560747306;
-        internal const double D2 = -0.05643359765731898;
-        internal const double D3 = 0.03197903867247056;
-        internal const double D4 = -0.01876103602118207;
-        internal const double D5 = 0.011256621613470345;
-        internal const double D6 = -0.006861178888242232;
-        internal const double D7 = 0.004231060285063281;
-        internal const double D8 = -0.0026326597320797005;
-        internal const double D9 = 0.001649800766625627;
-        internal const double D10 = -0.0010398744364568877;
-        internal const double D11 = 0.0006585775108352798;
-        internal const double D12 = -0.00041878760521706277;
-        internal const double D13 = 0.0002673178211823087;
-        internal const double D14 = -0.00017108440349645348;
-        internal const double D15 = 0.00010920006130503545;
-        internal const double D16 = -7.022615884999406e-05;
-        internal const double D17 = 4.767903425507203e-05;
-        internal const double D18 = -3.0794816575262266e-05;
-        internal const double D19 = 1.348930395338362e-05;
-        internal const double D20 = -8.715802210227895e-06;
-        internal const double D21 = 1.5441405801522207e-05;
-        internal const double D22 = -1.0039743760367213e-05;
+        private const double C0 = 0.8502830004171938;
+        private const double D0 = -0.22674213344458505;
+        private const double D1 = 0.10581299560747306;
+        private const double D2 = -0.05643359765731898;
+        private const double D3 = 0.03197903867247056;
+        private const double D4 = -0.01876103602118207;
+        private const double D5 = 0.011256621613470345;
+        private const double D6 = -0.006861178888242232;
+        private const double D7 = 0.004231060285063281;
+        private const double D8 = -0.0026326597320797005;
+        private const double D9 = 0.001649800766625627;
+        private const double D10 = -0.0010398744364568877;
+        private const double D11 = 0.0006585775108352798;
+        private const double D12 = -0.00041878760521706277;
+        private const double D13 = 0.0002673178211823087;
+        private const double D14 = -0.00017108440349645348;
+        private const double D15 = 0.00010920006130503545;
+        private const double D16 = -7.022615884999406e-05;
+        private const double D17 = 4.767903425507203e-05;
+        private const double D18 = -3.0794816575262266e-05;
+        private const double D19 = 1.348930395338362e-05;
+        private const double D20 = -8.715802210227895e-06;
+        private const double D21 = 1.5441405801522207e-05;
+        private const double D22 = -1.0039743760367213e-05;
 
-        // 2^(-2r/5), r = 1..4 (the doubles nearest), and the table of r = 0..4 (the ball batch selects the same constants).
-        internal const double TwoToMinusTwoFifths1 = 0.757858283255199, TwoToMinusTwoFifths2 = 0.5743491774985175;
-        internal const double TwoToMinusTwoFifths3 = 0.43527528164806206, TwoToMinusTwoFifths4 = 0.32987697769322355;
-        private static readonly double[] TwoToMinusTwoFifths = { 1.0, TwoToMinusTwoFifths1, TwoToMinusTwoFifths2, TwoToMinusTwoFifths3, TwoToMinusTwoFifths4 };
+        // 2^(-2r/5) for r = 0..4 (the doubles nearest).
+        private static readonly double[] TwoToMinusTwoFifths = { 1.0, 0.757858283255199, 0.5743491774985175, 0.43527528164806206, 0.32987697769322355 };
 
         /// <inheritdoc />
         public override string ToString() => "StepanekDrag";
