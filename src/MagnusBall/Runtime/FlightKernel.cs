@@ -61,6 +61,14 @@ namespace MagnusBall
             f4 = System.Math.Abs(g4);
         }
 
+        /// <summary>
+        /// Whether a step is at most one time constant of dw/dt = c w (h |c| &lt;= 1), where every factor of
+        /// <see cref="StageSpinFactors"/> is at least 1/4: the step-size half of the kernel's choice to scale RK4's stage spin
+        /// rates (Rk4Loop), which the ball batch makes too.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static bool WithinOneTimeConstant(double factor, double step) => step * System.Math.Abs(factor) <= 1;
+
         /// <summary>True where a model's k and r are within the fold's range (so its balls may take the folded lift).</summary>
         internal static bool FoldsLiftAtScale(double factor, double radius) =>
             factor >= FoldMinimum && factor <= FoldMaximum && radius >= FoldMinimum && radius <= FoldMaximum;
@@ -1028,7 +1036,7 @@ namespace MagnusBall
         // Whether an RK4 step of this size takes its inner stages' spin rates scaled from the step's (see Rk4Loop).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private bool ScalesStageSpins(double step) =>
-            FoldsStepanekLift && _decay.SpinOnly && _scalesStageSpinRates && step * System.Math.Abs(_decay.SpinFactor) <= 1;
+            FoldsStepanekLift && _decay.SpinOnly && _scalesStageSpinRates && WithinOneTimeConstant(_decay.SpinFactor, step);
 
         // The laws and air Rk4StraightStepanek is written for: Stepanek's drag and lift, both folded (TryFoldedRates), any
         // spin decay, still air.

@@ -354,7 +354,7 @@ namespace MagnusBall.Batch
             bool spins = laws.Decay != VectorLaws.DecayKind.None;
 
             // The kernel's inner-stage spin rates where it scales them from the step's (FlightKernel.StageSpinFactors).
-            bool scaled = laws.ScalesStageSpinRates && step * Math.Abs(laws.DecayFactor) <= 1; // the kernel's condition
+            bool scaled = laws.ScalesStageSpinRates && FlightKernel.WithinOneTimeConstant(laws.DecayFactor, step); // the kernel's condition
             Vector<double> startRate = default;
             double f2 = 0, f3 = 0, f4 = 0;
             if (scaled)
