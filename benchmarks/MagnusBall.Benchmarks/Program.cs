@@ -45,6 +45,9 @@ namespace MagnusBall.Benchmarks
                         var peers = new Peers();
                         peers.Setup();
                         Console.WriteLine($"x after 480 steps: MagnusBall {peers.MagnusBallRk4():R}, MathNet {peers.MathNet():R}, thesis-style {peers.ThesisStyle():R}");
+                        var work = new Workloads();
+                        work.Setup();
+                        Console.WriteLine($"full tennis model, x after 480 steps: MagnusBall {work.Rk4FullShot():R}, thesis-style {work.ThesisStyleTennisShot():R}");
                         return 0;
                     }
 

@@ -67,7 +67,10 @@ namespace MagnusBall.Benchmarks
 
         /// <summary>The full tennis model: Stepanek drag and lift, exponential spin decay (tau 20 s), rho 1.21.</summary>
         public static FlightModel FullTennis() =>
-            new FlightModel(Ball.Tennis, new Air(1.21), G, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
+            new FlightModel(Ball.Tennis, new Air(1.21), G, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(FullTennisSpinDecayTime));
+
+        /// <summary>The full tennis model's spin decay time constant, s.</summary>
+        public const double FullTennisSpinDecayTime = 20;
 
         /// <summary>Drag only (Stepanek drag, no lift, constant spin).</summary>
         public static FlightModel DragOnlyTennis() => new FlightModel(Ball.Tennis, new Air(1.21), G, StepanekDrag.Instance);

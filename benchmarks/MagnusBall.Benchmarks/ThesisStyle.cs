@@ -85,4 +85,105 @@ namespace MagnusBall.Benchmarks
         /// <summary>The frame loop: one RK4 step per Update with the frame's delta time.</summary>
         public void Update(double deltaTime) => SolveRungaKutta(deltaTime);
     }
+
+    /// <summary>
+    /// The full tennis model (<see cref="Scenarios.FullTennis"/>: Stepanek's drag and lift, exponential spin decay) written
+    /// in the thesis's style, as a developer who follows the thesis and then adds the tennis laws would write it: the spin
+    /// joins the state (a7..a9 = w), Stepanek's laws straight from their formulas with <c>Math.Pow</c>, fresh arrays for
+    /// every stage. The same forces as the library's model (the lift in its transverse-spin form, (k C_L s^2 / |w|)
+    /// (w x v_hat)); "peers-check" compares the two flights. The naive code a game on the full model replaces: the unit
+    /// the full-model workloads are also measured against (docs/performance.md).
+    /// </summary>
+    internal sealed class ThesisStyleTennisBall
+    {
+        private readonly double _k; // rho A / 2m
+        private readonly double _r;
+        private readonly double _tau;
+        private readonly double _g;
+        private double[] _a;
+
+        public ThesisStyleTennisBall(Ball ball, double density, double spinDecayTime, double g, double[] start)
+        {
+            _k = density * Math.PI * ball.Radius * ball.Radius / (2 * ball.Mass);
+            _r = ball.Radius;
+            _tau = spinDecayTime;
+            _g = g;
+            _a = (double[])start.Clone();
+        }
+
+        public double[] State => _a;
+
+        public void Reset(double[] start) => _a = (double[])start.Clone();
+
+        /// <summary>The derivative of a1..a9 = x, x', y, y', z, z', wx, wy, wz.</summary>
+        public double[] DifferentialEquations(double[] a)
+        {
+            double vx = a[1], vy = a[3], vz = a[5], wx = a[6], wy = a[7], wz = a[8];
+            double speed = Math.Sqrt(vx * vx + vy * vy + vz * vz);
+            double omega = Math.Sqrt(wx * wx + wy * wy + wz * wz);
+            double cx = wy * vz - wz * vy, cy = wz * vx - wx * vz, cz = wx * vy - wy * vx;
+            double cross = Math.Sqrt(cx * cx + cy * cy + cz * cz);
+
+            // Stepanek's drag: C_D = 0.508 + (22.053 + 4.196 (1/S)^2.5)^-0.4, S = r |w| / s
+            double cd = 0.508;
+            if (omega > 0)
+            {
+                cd += Math.Pow(22.053 + 4.196 * Math.Pow(speed / (_r * omega), 2.5), -0.4);
+            }
+
+            // Stepanek's lift: C_L = S_perp / (2.022 S_perp + 0.981), S_perp = r |w x v| / s^2; F / m = k C_L s^2 (w x v_hat) / |w|
+            double magnus = 0;
+            if (cross > 0)
+            {
+                double sPerp = _r * cross / (speed * speed);
+                double cl = sPerp / (2.022 * sPerp + 0.981);
+                magnus = _k * cl * speed / omega;
+            }
+
+            return new[]
+            {
+                vx, -_k * cd * speed * vx + magnus * cx,
+                vy, -_k * cd * speed * vy + magnus * cy,
+                vz, -_k * cd * speed * vz + magnus * cz - _g,
+                -wx / _tau, -wy / _tau, -wz / _tau,
+            };
+        }
+
+        /// <summary>One RK4 step, fresh arrays per stage, as <see cref="ThesisStyleBall.SolveRungaKutta"/>.</summary>
+        public void SolveRungaKutta(double h)
+        {
+            double[] k1 = DifferentialEquations(_a);
+            double[] y2 = new double[9];
+            for (int i = 0; i < 9; i++)
+            {
+                y2[i] = _a[i] + h / 2 * k1[i];
+            }
+
+            double[] k2 = DifferentialEquations(y2);
+            double[] y3 = new double[9];
+            for (int i = 0; i < 9; i++)
+            {
+                y3[i] = _a[i] + h / 2 * k2[i];
+            }
+
+            double[] k3 = DifferentialEquations(y3);
+            double[] y4 = new double[9];
+            for (int i = 0; i < 9; i++)
+            {
+                y4[i] = _a[i] + h * k3[i];
+            }
+
+            double[] k4 = DifferentialEquations(y4);
+            double[] next = new double[9];
+            for (int i = 0; i < 9; i++)
+            {
+                next[i] = _a[i] + h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+            }
+
+            _a = next;
+        }
+
+        /// <summary>The frame loop: one RK4 step per Update with the frame's delta time.</summary>
+        public void Update(double deltaTime) => SolveRungaKutta(deltaTime);
+    }
 }

@@ -18,6 +18,8 @@ namespace MagnusBall.Benchmarks
 
         private ThesisStyleBall _thesis = null!;
         private double[] _thesisStart = null!;
+        private ThesisStyleTennisBall _thesisTennis = null!;
+        private double[] _thesisTennisStart = null!;
         private FlightModel _thesisModel = null!;
         private FlightModel _fullModel = null!;
         private FlightState _start;
@@ -43,6 +45,8 @@ namespace MagnusBall.Benchmarks
             Vector3d w = _start.AngularVelocity, v = _start.Velocity, p = _start.Position;
             _thesisStart = new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z };
             _thesis = new ThesisStyleBall(Ball.Tennis.Mass, Ball.Tennis.Radius, 1.21, 0.55, 0.175, Gravity.Standard, _thesisStart, w.X, w.Y, w.Z);
+            _thesisTennisStart = new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z, w.X, w.Y, w.Z };
+            _thesisTennis = new ThesisStyleTennisBall(Ball.Tennis, 1.21, Scenarios.FullTennisSpinDecayTime, Gravity.Standard, _thesisTennisStart);
             _predictThesis = new TrajectoryPredictor(_thesisModel, RungeKutta4.Instance, Step);
             _predictFull = new TrajectoryPredictor(_fullModel, RungeKutta4.Instance, Step);
             _samples = new FlightState[600];
@@ -101,6 +105,21 @@ namespace MagnusBall.Benchmarks
             }
 
             return _thesis.State[0];
+        }
+
+        /// <summary>
+        /// The full tennis model in the thesis's style (<see cref="ThesisStyleTennisBall"/>): one 2 s shot, 480 RK4 steps of
+        /// 1/240 s, no events. The naive code a game on the full model replaces; the unit U_full of the full-model rows.
+        /// </summary>
+        public double ThesisStyleTennisShot()
+        {
+            _thesisTennis.Reset(_thesisTennisStart);
+            for (int i = 0; i < ShotSteps; i++)
+            {
+                _thesisTennis.Update(Step);
+            }
+
+            return _thesisTennis.State[0];
         }
 
         /// <summary>MagnusBall's RK4 through IIntegrator.Step, 480 steps on the thesis's ODE, as a loop calls it.</summary>
