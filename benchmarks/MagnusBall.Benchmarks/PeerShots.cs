@@ -6,7 +6,8 @@ namespace MagnusBall.Benchmarks
     /// Issue 11's targets as BenchmarkDotNet ratios against one thesis-style 2 s shot (480 RK4 steps, the baseline, one
     /// call = one shot): MagnusBall's RK4 over the same 480 steps, 2 s predicted shots with events, the aim solves, 1,000 and
     /// 10,000 balls in a <c>BallBatch</c> through one 60 FPS frame, and 1,000 FixedStepDrivers one at a time through one frame
-    /// (default stable RK4 and plain RK4 on the full model, plain RK4 on the thesis model).
+    /// (default stable RK4 and plain RK4 on the full model, plain RK4 on the thesis model). Also the full tennis model in the
+    /// thesis's style (<see cref="ThesisStyleTennisBall"/>), the naive code of the full-model rows' model.
     /// </summary>
     [Config(typeof(ShortConfig))]
     public class PeerShots
@@ -18,6 +19,9 @@ namespace MagnusBall.Benchmarks
 
         [Benchmark(Baseline = true, Description = "thesis-style 480-step shot")]
         public double ThesisShot() => _work.ThesisShot();
+
+        [Benchmark(Description = "thesis-style 480-step shot, full tennis model")]
+        public double ThesisStyleTennisShot() => _work.ThesisStyleTennisShot();
 
         [Benchmark(Description = "MagnusBall RK4 480 steps, thesis ODE")]
         public double Rk4Thesis() => _work.Rk4ThesisShot();
