@@ -545,6 +545,84 @@ namespace MagnusBall.Tests.Integration
             Assert.That(batch.TryGetLanding(0, out _), Is.False);
         }
 
+        /// <summary>A user's own drag law (a constant C_D), which no vector lane runs: its batch goes ball by ball.</summary>
+        private sealed class UserConstantDrag : IDragModel
+        {
+            public double DragCoefficient(in AeroConditions conditions) => 0.5;
+        }
+
+        [TestCaseSource(nameof(Models))]
+        public void ManyStepsInOneCall_AreOneStepACall_BitForBit(FlightModel model, bool vectorLaws)
+        {
+            // Advance(step, 4) runs each ball through its four steps before the next ball where the batch goes ball by ball,
+            // and lane group by lane group, step by step, where it is vectorised: either way, the same numbers as four calls
+            // of one step, landings mid-frame included (every ball lands within the 300 frames, see above).
+            FlightState[] starts = Starts(37);
+            var together = new BallBatch(model, starts.Length);
+            var apart = new BallBatch(model, starts.Length);
+            foreach (FlightState start in starts)
+            {
+                together.Add(start);
+                apart.Add(start);
+            }
+
+            for (int frame = 0; frame < 300; frame++)
+            {
+                together.Advance(1.0 / 240, 4);
+                for (int s = 0; s < 4; s++)
+                {
+                    apart.Advance(1.0 / 240);
+                }
+
+                for (int i = 0; i < starts.Length; i++)
+                {
+                    AssertSameBall(together, apart, i, $"{model}, frame {frame}");
+                }
+            }
+
+            Assert.That(together.IsVectorized, Is.EqualTo(vectorLaws && Vector.IsHardwareAccelerated));
+        }
+
+        [Test]
+        public void DivergingBall_InOneCallOfManySteps_StopsWhereOneStepACallStops([Values] bool userLaw)
+        {
+            // DivergingBall_StopsAtItsLastFiniteState's ball, 20 steps of 1 s in one call (the overflow comes within a few):
+            // the steps after the refused one are not taken, and the ball keeps its last finite state. With a user's drag
+            // law the batch goes ball by ball on every runtime.
+            var ball = new Ball(0.002, 0.2, 0.67);
+            IDragModel drag = userLaw ? new UserConstantDrag() : new ConstantDrag(0.5);
+            var model = new FlightModel(ball, new Air(1.21), Vector3d.Zero, drag);
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            var start = new FlightState(new Vector3d(0, 0, 100), new Vector3d(100, 0, 0), default);
+            var together = new BallBatch(model, 1, ground);
+            var apart = new BallBatch(model, 1, ground);
+            together.Add(start);
+            apart.Add(start);
+
+            together.Advance(1.0, 20);
+            for (int i = 0; i < 20; i++)
+            {
+                apart.Advance(1.0);
+            }
+
+            Assert.That(together.IsVectorized, Is.EqualTo(!userLaw && Vector.IsHardwareAccelerated));
+            Assert.That(together.HasDiverged(0), Is.True);
+            Assert.That(together.GetState(0).IsFinite, Is.True);
+            Assert.That(together.GetState(0).Time, Is.GreaterThan(0), "some steps were taken before the overflow");
+            AssertSameBall(together, apart, 0, drag.ToString()!);
+        }
+
+        // Ball i in two batches: the same state bit for bit, and the same flying, landing and divergence.
+        private static void AssertSameBall(BallBatch a, BallBatch b, int i, string what)
+        {
+            Assert.That(Difference(a.GetState(i), b.GetState(i)), Is.EqualTo(0), $"{what}, ball {i}");
+            Assert.That(a.GetState(i).Velocity, Is.EqualTo(b.GetState(i).Velocity), $"{what}, ball {i}");
+            Assert.That(a.IsFlying(i), Is.EqualTo(b.IsFlying(i)), $"{what}, ball {i}");
+            Assert.That(a.HasDiverged(i), Is.EqualTo(b.HasDiverged(i)), $"{what}, ball {i}");
+            Assert.That(a.TryGetLanding(i, out FlightState landingA), Is.EqualTo(b.TryGetLanding(i, out FlightState landingB)), $"{what}, ball {i}");
+            Assert.That(Difference(landingA, landingB), Is.EqualTo(0), $"{what}, ball {i}");
+        }
+
         // A batch of these starts over this ground and, for each, a stepper flying the same ball by RK4 (the single-ball path).
         private static (BallBatch Batch, FlightStepper[] Steppers) BatchAndSteppers(FlightModel model, Plane ground, FlightState[] starts)
         {

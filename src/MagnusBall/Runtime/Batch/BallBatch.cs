@@ -202,24 +202,25 @@ namespace MagnusBall.Batch
                 throw new ArgumentOutOfRangeException(nameof(count), count, $"count must be in [0, 1000000]; got {count}.");
             }
 
-            for (int i = 0; i < count; i++)
+            if (!IsVectorized)
             {
-                if (IsVectorized)
+                // Ball by ball, each through all its steps: the balls are independent, so the order does not change a number.
+                for (int index = 0; index < _count && count > 0; index++)
                 {
-                    for (int start = 0; start < _count; start += _width)
+                    if (_active[index] != 0)
                     {
-                        StepVector(start, step);
+                        RunScalar(index, step, count);
                     }
                 }
-                else
+
+                return;
+            }
+
+            for (int i = 0; i < count; i++)
+            {
+                for (int start = 0; start < _count; start += _width)
                 {
-                    for (int index = 0; index < _count; index++)
-                    {
-                        if (_active[index] != 0)
-                        {
-                            StepScalar(index, step);
-                        }
-                    }
+                    StepVector(start, step);
                 }
             }
         }
@@ -250,11 +251,37 @@ namespace MagnusBall.Batch
         // One ball, one step: the model's kernel (RungeKutta4's arithmetic), then the landing.
         private void StepScalar(int i, double step)
         {
-            var start = new FlightState(
-                new Vector3d(_px[i], _py[i], _pz[i]), new Vector3d(_vx[i], _vy[i], _vz[i]), new Vector3d(_wx[i], _wy[i], _wz[i]), _t[i]);
-            var k1 = new StateDerivative(start.Velocity, new Vector3d(_ax[i], _ay[i], _az[i]), new Vector3d(_sx[i], _sy[i], _sz[i]));
+            Load(i, out FlightState start, out StateDerivative k1);
             FlightState end = Model.Kernel.RungeKutta4(start, k1, step, out StateDerivative k);
             Finish(i, start, k1, end, k);
+        }
+
+        // Ball i (flying), count >= 1 steps: StepScalar's step and Finish's rules, with the state kept in locals between steps,
+        // so the ball's sixteen arrays are read once and written once a call instead of once a step (under Mono, where the
+        // batch goes ball by ball, 10,000 balls through a frame went from 15.8 to 12.9-13.3 ms).
+        private void RunScalar(int i, double step, int count)
+        {
+            Load(i, out FlightState state, out StateDerivative k1);
+            for (int n = 0; n < count; n++)
+            {
+                FlightState end = Model.Kernel.RungeKutta4(state, k1, step, out StateDerivative k);
+                if (!FlightStepper.Takes(state, end, k) || !_landingEvents.SurelyClear(state, k1, end, k))
+                {
+                    // A refused step, or one that may hold the landing: the whole of Finish, which stores the ball, and which,
+                    // unless the ball stopped, stores (end, k), the pair the next step starts from.
+                    Finish(i, state, k1, end, k);
+                    if (_active[i] == 0)
+                    {
+                        return;
+                    }
+                }
+
+                _startsFlight[i] = false;
+                state = end;
+                k1 = k;
+            }
+
+            Store(i, state, k1);
         }
 
         // After ball i's step from (start, k1) to (end, k), by the flight core's rules: a step the core refuses
@@ -297,6 +324,14 @@ namespace MagnusBall.Batch
             }
 
             _startsFlight[i] = false;
+        }
+
+        // Ball i's state and its derivative, as Store wrote them.
+        private void Load(int i, out FlightState state, out StateDerivative derivative)
+        {
+            state = new FlightState(
+                new Vector3d(_px[i], _py[i], _pz[i]), new Vector3d(_vx[i], _vy[i], _vz[i]), new Vector3d(_wx[i], _wy[i], _wz[i]), _t[i]);
+            derivative = new StateDerivative(state.Velocity, new Vector3d(_ax[i], _ay[i], _az[i]), new Vector3d(_sx[i], _sy[i], _sz[i]));
         }
 
         private void Store(int i, in FlightState s, in StateDerivative d)
