@@ -612,6 +612,63 @@ namespace MagnusBall.Tests.Integration
             AssertSameBall(together, apart, 0, drag.ToString()!);
         }
 
+        /// <summary>A user's constant drag law that throws from its call number ThrowAt on (0: never).</summary>
+        private sealed class FailingDrag : IDragModel
+        {
+            public int Calls;
+            public int ThrowAt;
+
+            public double DragCoefficient(in AeroConditions conditions)
+            {
+                Calls++;
+                if (ThrowAt > 0 && Calls >= ThrowAt)
+                {
+                    throw new InvalidOperationException("the user's drag law failed");
+                }
+
+                return 0.5;
+            }
+        }
+
+        [Test]
+        public void UserLawThatThrows_LeavesTheBallsBeforeItAdvancedAndTheRestWhereTheyWere()
+        {
+            // Advance's documented state after a user's law throws: three balls high above the ground, four steps a call; the
+            // law fails on its first call for ball 1 (ball 0's four steps take 16 calls, 4 an RK4 step).
+            var drag = new FailingDrag();
+            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag);
+            var twin = new BallBatch(model, 3);
+            var batch = new BallBatch(model, 3);
+            FlightState[] starts = Starts(4);
+            for (int i = 1; i < 4; i++)
+            {
+                FlightState high = new FlightState(starts[i].Position + new Vector3d(0, 0, 100), starts[i].Velocity, starts[i].AngularVelocity, starts[i].Time);
+                twin.Add(high);
+                batch.Add(high);
+            }
+
+            twin.Advance(1.0 / 240, 4);
+            drag.Calls = 0;
+            drag.ThrowAt = 17;
+            Assert.Throws<InvalidOperationException>(() => batch.Advance(1.0 / 240, 4));
+            Assert.That(drag.Calls, Is.EqualTo(17), "the law was called for ball 0's four steps, then once for ball 1");
+
+            AssertSameBall(batch, twin, 0, "ball 0 took the call's steps");
+            for (int i = 1; i < 3; i++)
+            {
+                Assert.That(batch.GetState(i), Is.EqualTo(new FlightState(starts[i + 1].Position + new Vector3d(0, 0, 100),
+                    starts[i + 1].Velocity, starts[i + 1].AngularVelocity, starts[i + 1].Time)), $"ball {i} did not move");
+                Assert.That(batch.IsFlying(i), Is.True);
+            }
+
+            // Once the law behaves, the next call takes balls 1 and 2 through the steps the twin took.
+            drag.ThrowAt = 0;
+            batch.Advance(1.0 / 240, 4);
+            AssertSameBall(batch, twin, 1, "ball 1 after the next call");
+            AssertSameBall(batch, twin, 2, "ball 2 after the next call");
+            Assert.That(batch.IsVectorized, Is.False);
+        }
+
         // Ball i in two batches: the same state bit for bit, and the same flying, landing and divergence.
         private static void AssertSameBall(BallBatch a, BallBatch b, int i, string what)
         {

@@ -191,9 +191,15 @@ namespace MagnusBall.Batch
         /// Advances every flying ball by <paramref name="count"/> RK4 steps of <paramref name="step"/> seconds (a 60 FPS
         /// frame at 1/240 s: count 4), locating each landing inside its step. 4 evaluations per ball and step. Allocates nothing.
         /// </summary>
+        /// <remarks>
+        /// Only a law of your own can throw here (the built-in laws do not), and the batch then goes ball by ball: the
+        /// exception comes out of this call with the balls before that ball through all <paramref name="count"/> steps,
+        /// that ball at its state before the call (or, where a step of this call may have held its landing, after that step),
+        /// and the balls after it not moved. Every ball stays at a state of its own flight.
+        /// </remarks>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="count">The steps, 0 to 1,000,000.</param>
-        /// <exception cref="ArgumentOutOfRangeException">An argument is out of range.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">An argument is out of range (nothing changes).</exception>
         public void Advance(double step, int count = 1)
         {
             Require.Step(step, nameof(step));
