@@ -84,6 +84,12 @@ namespace MagnusBall
         internal abstract FlightState RungeKutta4(in FlightState state, in StateDerivative k1, double step, out StateDerivative end);
 
         /// <summary>
+        /// True where a law is the user's own (run through <see cref="InterfaceDrag"/>, <see cref="InterfaceLift"/> or
+        /// <see cref="InterfaceSpinDecay"/>): the only code an evaluation runs that can throw.
+        /// </summary>
+        internal abstract bool RunsUserCode { get; }
+
+        /// <summary>
         /// <see cref="RungeKutta4"/>, the same arithmetic, with the step's end written straight into
         /// <paramref name="next"/> and <paramref name="end"/> (the flight core passes its own fields: no struct is returned
         /// through a temporary and copied, so the fields are read back from the stores that wrote them).
@@ -520,6 +526,9 @@ namespace MagnusBall
 
             return FlightState.CopyOf(next);
         }
+
+        internal override bool RunsUserCode =>
+            typeof(TDrag) == typeof(InterfaceDrag) || typeof(TLift) == typeof(InterfaceLift) || typeof(TDecay) == typeof(InterfaceSpinDecay);
 
         internal override void RungeKutta4Into(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end) =>
             Rk4(state, k1, step, out next, out end);

@@ -631,41 +631,61 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
-        public void UserLawThatThrows_LeavesTheBallsBeforeItAdvancedAndTheRestWhereTheyWere()
+        public void UserLawThatThrows_LeavesEveryBallAsItWas([Values(1, 17, 40)] int throwAt)
         {
-            // Advance's documented state after a user's law throws: three balls high above the ground, four steps a call; the
-            // law fails on its first call for ball 1 (ball 0's four steps take 16 calls, 4 an RK4 step).
+            // Advance's documented state after a user's law throws (robustness.md: a call that throws leaves its object as it
+            // was): four balls, four steps a call, the last one landed already; the law fails on its first call (ball 0's
+            // first step), on its 17th (ball 1's first: ball 0's four steps take 16 calls, 4 an RK4 step), or on its 40th
+            // (inside ball 2's third step, after balls 0 and 1 ran through theirs).
             var drag = new FailingDrag();
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag);
-            var twin = new BallBatch(model, 3);
-            var batch = new BallBatch(model, 3);
+            var batch = new BallBatch(model, 5); // room for a fifth, which the last check tries to add
+            var twin = new BallBatch(model, 4);
             FlightState[] starts = Starts(4);
-            for (int i = 1; i < 4; i++)
+            for (int i = 0; i < 4; i++)
             {
-                FlightState high = new FlightState(starts[i].Position + new Vector3d(0, 0, 100), starts[i].Velocity, starts[i].AngularVelocity, starts[i].Time);
-                twin.Add(high);
-                batch.Add(high);
+                // Three balls high above the ground; the last one on it and heading down, so it lands at once.
+                FlightState start = i < 3
+                    ? new FlightState(starts[i + 1].Position + new Vector3d(0, 0, 100), starts[i + 1].Velocity, starts[i + 1].AngularVelocity, starts[i + 1].Time)
+                    : starts[0];
+                batch.Add(start);
+                twin.Add(start);
             }
 
+            batch.Advance(1.0 / 240, 4);
             twin.Advance(1.0 / 240, 4);
-            drag.Calls = 0;
-            drag.ThrowAt = 17;
-            Assert.Throws<InvalidOperationException>(() => batch.Advance(1.0 / 240, 4));
-            Assert.That(drag.Calls, Is.EqualTo(17), "the law was called for ball 0's four steps, then once for ball 1");
-
-            AssertSameBall(batch, twin, 0, "ball 0 took the call's steps");
-            for (int i = 1; i < 3; i++)
+            Assert.That(batch.IsFlying(3), Is.False, "ball 3 landed in the first call");
+            var before = new FlightState[4];
+            for (int i = 0; i < 4; i++)
             {
-                Assert.That(batch.GetState(i), Is.EqualTo(new FlightState(starts[i + 1].Position + new Vector3d(0, 0, 100),
-                    starts[i + 1].Velocity, starts[i + 1].AngularVelocity, starts[i + 1].Time)), $"ball {i} did not move");
-                Assert.That(batch.IsFlying(i), Is.True);
+                before[i] = batch.GetState(i);
             }
 
-            // Once the law behaves, the next call takes balls 1 and 2 through the steps the twin took.
+            drag.Calls = 0;
+            drag.ThrowAt = throwAt;
+            var failed = Assert.Throws<InvalidOperationException>(() => batch.Advance(1.0 / 240, 4));
+            Assert.That(failed!.Message, Does.Contain("drag law failed"));
+            Assert.That(drag.Calls, Is.EqualTo(throwAt), "the law was called up to its failing call");
+            for (int i = 0; i < 4; i++)
+            {
+                Assert.That(batch.GetState(i), Is.EqualTo(before[i]), $"ball {i} as it was");
+                AssertSameBall(batch, twin, i, $"ball {i} as its twin, which did not take the failed call");
+            }
+
+            // Once the law behaves, the next call is the call the twin makes.
             drag.ThrowAt = 0;
             batch.Advance(1.0 / 240, 4);
-            AssertSameBall(batch, twin, 1, "ball 1 after the next call");
-            AssertSameBall(batch, twin, 2, "ball 2 after the next call");
+            twin.Advance(1.0 / 240, 4);
+            for (int i = 0; i < 4; i++)
+            {
+                AssertSameBall(batch, twin, i, $"ball {i} after the next call");
+            }
+
+            // And a ball added while the law throws is not added.
+            drag.ThrowAt = drag.Calls + 1;
+            var thrown = Assert.Throws<InvalidOperationException>(() => batch.Add(starts[1]));
+            Assert.That(thrown!.Message, Does.Contain("drag law failed"));
+            Assert.That(batch.Count, Is.EqualTo(4));
             Assert.That(batch.IsVectorized, Is.False);
         }
 

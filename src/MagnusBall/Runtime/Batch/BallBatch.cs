@@ -41,6 +41,8 @@ namespace MagnusBall.Batch
         private readonly VectorLaws _laws;
         private readonly FlightEventSet _landingEvents;
         private readonly FlightEvent[] _found;
+        private readonly SavedBall[]? _saved; // where a law is the user's own: each ball as it was before this Advance call
+        private long _calls; // Advance calls that saved balls (SavedBall.Call)
         private int _count;
 
         /// <summary>Creates an empty batch.</summary>
@@ -86,6 +88,10 @@ namespace MagnusBall.Batch
             _startsFlight = new bool[length];
             _diverged = new bool[length];
             _landing = new FlightState[length];
+            if (model.Kernel.RunsUserCode)
+            {
+                _saved = new SavedBall[length];
+            }
         }
 
         /// <summary>The flight model.</summary>
@@ -112,6 +118,7 @@ namespace MagnusBall.Batch
         /// <returns>The ball's index.</returns>
         /// <exception cref="ArgumentException">The state is not finite.</exception>
         /// <exception cref="InvalidOperationException">The batch is full.</exception>
+        /// <remarks>A law of your own that throws while the derivative is evaluated: its exception, and no ball added.</remarks>
         public int Add(in FlightState state)
         {
             CheckState(state);
@@ -120,8 +127,9 @@ namespace MagnusBall.Batch
                 throw new InvalidOperationException($"The batch is full ({Capacity} balls).");
             }
 
-            int index = _count++;
-            Place(index, state);
+            int index = _count;
+            Place(index, state); // may run a user's law, which may throw: the ball is counted only once it is in place
+            _count++;
             return index;
         }
 
@@ -192,10 +200,8 @@ namespace MagnusBall.Batch
         /// frame at 1/240 s: count 4), locating each landing inside its step. 4 evaluations per ball and step. Allocates nothing.
         /// </summary>
         /// <remarks>
-        /// Only a law of your own can throw here (the built-in laws do not), and the batch then goes ball by ball: the
-        /// exception comes out of this call with the balls before that ball through all <paramref name="count"/> steps,
-        /// that ball at its state before the call (or, where a step of this call may have held its landing, after that step),
-        /// and the balls after it not moved. Every ball stays at a state of its own flight.
+        /// Only a law of your own can throw here (the built-in laws do not). Its exception comes out of this call, and every
+        /// ball is then as it was before the call (a batch with such a law saves each ball before it moves it).
         /// </remarks>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="count">The steps, 0 to 1,000,000.</param>
@@ -210,6 +216,12 @@ namespace MagnusBall.Batch
 
             if (!IsVectorized)
             {
+                if (_saved != null)
+                {
+                    RunScalarUndoable(step, count);
+                    return;
+                }
+
                 // Ball by ball, each through all its steps: the balls are independent, so the order does not change a number.
                 for (int index = 0; index < _count && count > 0; index++)
                 {
@@ -260,6 +272,46 @@ namespace MagnusBall.Batch
             Load(i, out FlightState start, out StateDerivative k1);
             FlightState end = Model.Kernel.RungeKutta4(start, k1, step, out StateDerivative k);
             Finish(i, start, k1, end, k);
+        }
+
+        // The ball-by-ball loop where a law is the user's own: each flying ball is saved before it moves (marked with this
+        // call's number), and if the user's code throws, every ball saved this call (those it moved, and the one whose law
+        // threw) is put back as it was, flying, before the exception goes on.
+        private void RunScalarUndoable(double step, int count)
+        {
+            SavedBall[] saved = _saved!;
+            long call = ++_calls;
+            try
+            {
+                for (int index = 0; index < _count && count > 0; index++)
+                {
+                    if (_active[index] != 0)
+                    {
+                        ref SavedBall ball = ref saved[index];
+                        Load(index, out ball.State, out ball.Derivative);
+                        ball.StartsFlight = _startsFlight[index];
+                        ball.Call = call;
+                        RunScalar(index, step, count);
+                    }
+                }
+            }
+            catch
+            {
+                for (int i = 0; i < _count; i++)
+                {
+                    if (saved[i].Call == call)
+                    {
+                        // It flew when saved: not landed, not diverged.
+                        Store(i, saved[i].State, saved[i].Derivative);
+                        _startsFlight[i] = saved[i].StartsFlight;
+                        _active[i] = -1;
+                        _diverged[i] = false;
+                        _landing[i] = default;
+                    }
+                }
+
+                throw;
+            }
         }
 
         // Ball i (flying), count >= 1 steps: StepScalar's step and Finish's rules, with the state kept in locals between steps,
@@ -596,5 +648,14 @@ namespace MagnusBall.Batch
         }
 
         private static void CheckState(in FlightState state) => Require.FiniteState(state, nameof(state));
+
+        // A ball as it was before an Advance call (RunScalarUndoable).
+        private struct SavedBall
+        {
+            public FlightState State;
+            public StateDerivative Derivative;
+            public bool StartsFlight;
+            public long Call; // the call that saved it
+        }
     }
 }
