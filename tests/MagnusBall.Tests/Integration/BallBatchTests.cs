@@ -552,18 +552,24 @@ namespace MagnusBall.Tests.Integration
         }
 
         [TestCaseSource(nameof(Models))]
-        public void ManyStepsInOneCall_AreOneStepACall_BitForBit(FlightModel model, bool vectorLaws)
+        public void ManyStepsInOneCall_AreOneStepACallAndTheSingleBallPath_BitForBit(FlightModel model, bool vectorLaws)
         {
             // Advance(step, 4) runs each ball through its four steps before the next ball where the batch goes ball by ball,
-            // and lane group by lane group, step by step, where it is vectorised: either way, the same numbers as four calls
-            // of one step, landings mid-frame included (every ball lands within the 300 frames, see above).
+            // and lane group by lane group, step by step, where it is vectorised. Either way: the same numbers as four calls of
+            // one step, and as the single-ball path (a FlightStepper with RK4 and the ground, stopping at the landing), bit
+            // for bit, landings mid-frame included (every ball lands within the 300 frames).
             FlightState[] starts = Starts(37);
             var together = new BallBatch(model, starts.Length);
             var apart = new BallBatch(model, starts.Length);
-            foreach (FlightState start in starts)
+            var events = new FlightEventSet(model.Up, Plane.Ground(model));
+            var steppers = new FlightStepper[starts.Length];
+            var landings = new FlightState?[starts.Length];
+            for (int i = 0; i < starts.Length; i++)
             {
-                together.Add(start);
-                apart.Add(start);
+                together.Add(starts[i]);
+                apart.Add(starts[i]);
+                steppers[i] = new FlightStepper(model, RungeKutta4.Instance, events);
+                steppers[i].Reset(starts[i]);
             }
 
             for (int frame = 0; frame < 300; frame++)
@@ -577,9 +583,22 @@ namespace MagnusBall.Tests.Integration
                 for (int i = 0; i < starts.Length; i++)
                 {
                     AssertSameBall(together, apart, i, $"{model}, frame {frame}");
+                    for (int s = 0; s < 4 && landings[i] == null; s++)
+                    {
+                        steppers[i].TryStep(1.0 / 240, FlightEventKinds.Landing);
+                        if (steppers[i].TryGetEvent(FlightEventKinds.Landing, out FlightEvent landing))
+                        {
+                            landings[i] = landing.State;
+                        }
+                    }
+
+                    FlightState single = landings[i] ?? steppers[i].State;
+                    Assert.That(Difference(together.GetState(i), single), Is.EqualTo(0), $"{model}, frame {frame}, ball {i}: the single-ball path");
+                    Assert.That(together.IsFlying(i), Is.EqualTo(landings[i] == null), $"{model}, frame {frame}, ball {i}");
                 }
             }
 
+            Assert.That(Array.TrueForAll(landings, x => x != null), Is.True, "every ball lands");
             Assert.That(together.IsVectorized, Is.EqualTo(vectorLaws && Vector.IsHardwareAccelerated));
         }
 
@@ -631,30 +650,44 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
-        public void UserLawThatThrows_LeavesEveryBallAsItWas([Values(1, 17, 40)] int throwAt)
+        public void UserLawThatThrows_LeavesEveryBallAsItWas([Values(1, 9, 30)] int throwAt)
         {
             // Advance's documented state after a user's law throws (robustness.md: a call that throws leaves its object as it
-            // was): four balls, four steps a call, the last one landed already; the law fails on its first call (ball 0's
-            // first step), on its 17th (ball 1's first: ball 0's four steps take 16 calls, 4 an RK4 step), or on its 40th
-            // (inside ball 2's third step, after balls 0 and 1 ran through theirs).
+            // was). Four balls, four steps of 1/240 s a call: ball 0 just above the ground and heading down, so that it lands
+            // in the second step of the second call; balls 1 and 2 high above it; ball 3 on it and heading down, landed in
+            // the first call. In the second call the law fails on its first call (ball 0's first step), on its 9th (ball 1's
+            // first step, after ball 0 landed in two steps of 4 calls each) or on its 30th (inside ball 2's second step,
+            // after ball 1's four steps).
             var drag = new FailingDrag();
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag);
+            FlightState[] starts = Starts(4);
+            var launches = new[]
+            {
+                new FlightState(new Vector3d(0, 0, 0.044), new Vector3d(10, 0, -2), default),
+                Raised(starts[1]),
+                Raised(starts[2]),
+                starts[0],
+            };
             var batch = new BallBatch(model, 5); // room for a fifth, which the last check tries to add
             var twin = new BallBatch(model, 4);
-            FlightState[] starts = Starts(4);
-            for (int i = 0; i < 4; i++)
+            var ahead = new BallBatch(model, 4);
+            foreach (FlightState launch in launches)
             {
-                // Three balls high above the ground; the last one on it and heading down, so it lands at once.
-                FlightState start = i < 3
-                    ? new FlightState(starts[i + 1].Position + new Vector3d(0, 0, 100), starts[i + 1].Velocity, starts[i + 1].AngularVelocity, starts[i + 1].Time)
-                    : starts[0];
-                batch.Add(start);
-                twin.Add(start);
+                batch.Add(launch);
+                twin.Add(launch);
+                ahead.Add(launch);
             }
 
             batch.Advance(1.0 / 240, 4);
             twin.Advance(1.0 / 240, 4);
-            Assert.That(batch.IsFlying(3), Is.False, "ball 3 landed in the first call");
+            ahead.Advance(1.0 / 240, 4);
+            Assert.That(batch.IsFlying(0) && !batch.IsFlying(3), Is.True, "after the first call ball 0 flies and ball 3 landed");
+            drag.Calls = 0;
+            ahead.Advance(1.0 / 240, 4);
+            Assert.That(ahead.TryGetLanding(0, out FlightState aheadLanding), Is.True, "ball 0 lands in the second call");
+            Assert.That(aheadLanding.Time, Is.GreaterThan(5.0 / 240).And.LessThanOrEqualTo(6.0 / 240), "in its second step");
+            Assert.That(drag.Calls, Is.EqualTo(8 + 16 + 16), "two steps for ball 0, four for balls 1 and 2");
+
             var before = new FlightState[4];
             for (int i = 0; i < 4; i++)
             {
@@ -672,13 +705,16 @@ namespace MagnusBall.Tests.Integration
                 AssertSameBall(batch, twin, i, $"ball {i} as its twin, which did not take the failed call");
             }
 
-            // Once the law behaves, the next call is the call the twin makes.
+            Assert.That(batch.IsFlying(0) && !batch.TryGetLanding(0, out _) && !batch.HasDiverged(0), Is.True, "ball 0 flies again, as before the call");
+
+            // Once the law behaves, the next call is the call the twin makes, and the one the batch ahead made.
             drag.ThrowAt = 0;
             batch.Advance(1.0 / 240, 4);
             twin.Advance(1.0 / 240, 4);
             for (int i = 0; i < 4; i++)
             {
                 AssertSameBall(batch, twin, i, $"ball {i} after the next call");
+                AssertSameBall(batch, ahead, i, $"ball {i} after the next call, as the batch ahead");
             }
 
             // And a ball added while the law throws is not added.
@@ -687,6 +723,9 @@ namespace MagnusBall.Tests.Integration
             Assert.That(thrown!.Message, Does.Contain("drag law failed"));
             Assert.That(batch.Count, Is.EqualTo(4));
             Assert.That(batch.IsVectorized, Is.False);
+
+            static FlightState Raised(in FlightState start) =>
+                new FlightState(start.Position + new Vector3d(0, 0, 100), start.Velocity, start.AngularVelocity, start.Time);
         }
 
         // Ball i in two batches: the same state bit for bit, and the same flying, landing and divergence.
