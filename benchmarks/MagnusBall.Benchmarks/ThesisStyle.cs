@@ -149,9 +149,36 @@ namespace MagnusBall.Benchmarks
             };
         }
 
+        /// <summary>
+        /// 480 steps of 1/240 s from <paramref name="start"/> by this code and by the library's RK4 on
+        /// <see cref="Scenarios.FullTennis"/>: the largest difference of position, velocity and spin, each relative to its own
+        /// size (at least 1), and the library's end state ("peers-check").
+        /// </summary>
+        public static double DifferenceFromLibrary(in FlightState start, out FlightState end)
+        {
+            FlightModel model = Scenarios.FullTennis();
+            end = start;
+            StateDerivative derivative = model.Derivative(end);
+            MagnusBall.Integration.RungeKutta4.Instance.Advance(model, ref end, ref derivative, Workloads.Step, Workloads.ShotSteps);
+            Vector3d p = start.Position, v = start.Velocity, w = start.AngularVelocity;
+            var naive = new ThesisStyleTennisBall(Ball.Tennis, 1.21, Scenarios.FullTennisSpinDecayTime, Gravity.Standard, new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z, w.X, w.Y, w.Z });
+            for (int i = 0; i < Workloads.ShotSteps; i++)
+            {
+                naive.Update(Workloads.Step);
+            }
+
+            double[] a = naive.State;
+            return Math.Max(
+                Math.Max(Relative(end.Position, new Vector3d(a[0], a[2], a[4])), Relative(end.Velocity, new Vector3d(a[1], a[3], a[5]))),
+                Relative(end.AngularVelocity, new Vector3d(a[6], a[7], a[8])));
+
+            static double Relative(in Vector3d x, in Vector3d y) => (x - y).Length / Math.Max(1, y.Length);
+        }
+
         /// <summary>One RK4 step, fresh arrays per stage, as <see cref="ThesisStyleBall.SolveRungaKutta"/>.</summary>
         public void SolveRungaKutta(double h)
         {
+            // ThesisStyleBall's RK4 written again for nine states, not shared: sharing it would change the code U times.
             double[] k1 = DifferentialEquations(_a);
             double[] y2 = new double[9];
             for (int i = 0; i < 9; i++)
