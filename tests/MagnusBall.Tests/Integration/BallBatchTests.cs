@@ -728,6 +728,44 @@ namespace MagnusBall.Tests.Integration
                 new FlightState(start.Position + new Vector3d(0, 0, 100), start.Velocity, start.AngularVelocity, start.Time);
         }
 
+        [Test]
+        public void UserLawThatThrows_AfterABallDivergedInTheCall_LeavesItFlyingAsItWas()
+        {
+            // DivergingBall_StopsAtItsLastFiniteState's light ball with a user's drag law and no gravity, steps of 1 s. Ball 0
+            // at 100 m/s overflows within a few steps; ball 1 at 1 cm/s stays stable (h k |v| = 0.2). The law fails on ball 1's
+            // first call, after ball 0 diverged in the same call: ball 0 must fly again, at its state before the call.
+            var drag = new FailingDrag();
+            var model = new FlightModel(new Ball(0.002, 0.2, 0.67), new Air(1.21), Vector3d.Zero, drag);
+            var ground = new Plane(Vector3d.Zero, Vector3d.UnitZ);
+            var fast = new FlightState(new Vector3d(0, 0, 100), new Vector3d(100, 0, 0), default);
+            var slow = new FlightState(new Vector3d(0, 0, 100), new Vector3d(0.01, 0, 0), default);
+
+            // How many calls ball 0's steps take until it diverges, from a batch of ball 0 alone.
+            var alone = new BallBatch(model, 1, ground);
+            alone.Add(fast);
+            drag.Calls = 0;
+            alone.Advance(1.0, 20);
+            Assert.That(alone.HasDiverged(0), Is.True, "ball 0 diverges within 20 steps");
+            int ballZeroCalls = drag.Calls;
+
+            var batch = new BallBatch(model, 2, ground);
+            batch.Add(fast);
+            batch.Add(slow);
+            drag.Calls = 0;
+            drag.ThrowAt = ballZeroCalls + 1;
+            Assert.Throws<InvalidOperationException>(() => batch.Advance(1.0, 20));
+            for (int i = 0; i < 2; i++)
+            {
+                Assert.That(batch.GetState(i), Is.EqualTo(i == 0 ? fast : slow), $"ball {i} as it was");
+                Assert.That(batch.IsFlying(i) && !batch.HasDiverged(i) && !batch.TryGetLanding(i, out _), Is.True, $"ball {i} flies");
+            }
+
+            drag.ThrowAt = 0;
+            batch.Advance(1.0, 20);
+            Assert.That(batch.HasDiverged(0), Is.True, "and diverges again once the law behaves");
+            Assert.That(Difference(batch.GetState(0), alone.GetState(0)), Is.EqualTo(0), "at the same last finite state");
+        }
+
         // Ball i in two batches: the same state bit for bit, and the same flying, landing and divergence.
         private static void AssertSameBall(BallBatch a, BallBatch b, int i, string what)
         {
