@@ -42,7 +42,7 @@ namespace MagnusBall.Batch
         private readonly FlightEventSet _landingEvents;
         private readonly FlightEvent[] _found;
         private readonly SavedBall[]? _saved; // where a law is the user's own: each ball as it was before this Advance call
-        private long _calls; // Advance calls that saved balls (SavedBall.Call)
+        private long _calls; // Advance calls that saved balls (SavedBall.Call; 0 is no call)
         private int _count;
 
         /// <summary>Creates an empty batch.</summary>
@@ -219,16 +219,10 @@ namespace MagnusBall.Batch
                 if (_saved != null)
                 {
                     RunScalarUndoable(step, count);
-                    return;
                 }
-
-                // Ball by ball, each through all its steps: the balls are independent, so the order does not change a number.
-                for (int index = 0; index < _count && count > 0; index++)
+                else
                 {
-                    if (_active[index] != 0)
-                    {
-                        RunScalar(index, step, count);
-                    }
+                    RunScalarAll(step, count, 0);
                 }
 
                 return;
@@ -274,26 +268,36 @@ namespace MagnusBall.Batch
             Finish(i, start, k1, end, k);
         }
 
-        // The ball-by-ball loop where a law is the user's own: each flying ball is saved before it moves (marked with this
-        // call's number), and if the user's code throws, every ball saved this call (those it moved, and the one whose law
-        // threw) is put back as it was, flying, before the exception goes on.
+        // Ball by ball, each through all its steps: the balls are independent, so the order does not change a number. With a
+        // call number (not 0), each flying ball is first saved in _saved, marked with it (RunScalarUndoable).
+        private void RunScalarAll(double step, int count, long call)
+        {
+            for (int index = 0; index < _count && count > 0; index++)
+            {
+                if (_active[index] != 0)
+                {
+                    if (call != 0)
+                    {
+                        ref SavedBall ball = ref _saved![index];
+                        Load(index, out ball.State, out ball.Derivative);
+                        ball.StartsFlight = _startsFlight[index];
+                        ball.Call = call;
+                    }
+
+                    RunScalar(index, step, count);
+                }
+            }
+        }
+
+        // The ball-by-ball loop where a law is the user's own: if the user's code throws, every ball saved this call (those
+        // it moved, and the one whose law threw) is put back as it was, flying, before the exception goes on.
         private void RunScalarUndoable(double step, int count)
         {
             SavedBall[] saved = _saved!;
             long call = ++_calls;
             try
             {
-                for (int index = 0; index < _count && count > 0; index++)
-                {
-                    if (_active[index] != 0)
-                    {
-                        ref SavedBall ball = ref saved[index];
-                        Load(index, out ball.State, out ball.Derivative);
-                        ball.StartsFlight = _startsFlight[index];
-                        ball.Call = call;
-                        RunScalar(index, step, count);
-                    }
-                }
+                RunScalarAll(step, count, call);
             }
             catch
             {
