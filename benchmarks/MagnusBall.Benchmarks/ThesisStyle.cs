@@ -113,6 +113,17 @@ namespace MagnusBall.Benchmarks
 
         public double[] State => _a;
 
+        /// <summary>The code with <see cref="Scenarios.FullTennis"/>'s ball, air, spin decay and gravity, from <paramref name="start"/>.</summary>
+        public static ThesisStyleTennisBall FullTennis(double[] start) =>
+            new ThesisStyleTennisBall(Ball.Tennis, 1.21, Scenarios.FullTennisSpinDecayTime, Gravity.Standard, start);
+
+        /// <summary>A flight state as this code's a1..a9 (the time is not part of it).</summary>
+        public static double[] StateOf(in FlightState state)
+        {
+            Vector3d p = state.Position, v = state.Velocity, w = state.AngularVelocity;
+            return new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z, w.X, w.Y, w.Z };
+        }
+
         public void Reset(double[] start) => _a = (double[])start.Clone();
 
         /// <summary>The derivative of a1..a9 = x, x', y, y', z, z', wx, wy, wz.</summary>
@@ -160,8 +171,7 @@ namespace MagnusBall.Benchmarks
             end = start;
             StateDerivative derivative = model.Derivative(end);
             MagnusBall.Integration.RungeKutta4.Instance.Advance(model, ref end, ref derivative, Workloads.Step, Workloads.ShotSteps);
-            Vector3d p = start.Position, v = start.Velocity, w = start.AngularVelocity;
-            var naive = new ThesisStyleTennisBall(Ball.Tennis, 1.21, Scenarios.FullTennisSpinDecayTime, Gravity.Standard, new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z, w.X, w.Y, w.Z });
+            ThesisStyleTennisBall naive = FullTennis(StateOf(start));
             for (int i = 0; i < Workloads.ShotSteps; i++)
             {
                 naive.Update(Workloads.Step);

@@ -45,8 +45,8 @@ namespace MagnusBall.Benchmarks
             Vector3d w = _start.AngularVelocity, v = _start.Velocity, p = _start.Position;
             _thesisStart = new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z };
             _thesis = new ThesisStyleBall(Ball.Tennis.Mass, Ball.Tennis.Radius, 1.21, 0.55, 0.175, Gravity.Standard, _thesisStart, w.X, w.Y, w.Z);
-            _thesisTennisStart = new[] { p.X, v.X, p.Y, v.Y, p.Z, v.Z, w.X, w.Y, w.Z };
-            _thesisTennis = new ThesisStyleTennisBall(Ball.Tennis, 1.21, Scenarios.FullTennisSpinDecayTime, Gravity.Standard, _thesisTennisStart);
+            _thesisTennisStart = ThesisStyleTennisBall.StateOf(_start);
+            _thesisTennis = ThesisStyleTennisBall.FullTennis(_thesisTennisStart);
             _predictThesis = new TrajectoryPredictor(_thesisModel, RungeKutta4.Instance, Step);
             _predictFull = new TrajectoryPredictor(_fullModel, RungeKutta4.Instance, Step);
             _samples = new FlightState[600];
