@@ -6,7 +6,8 @@ namespace MagnusBall.Benchmarks
     /// Issue 11's targets as BenchmarkDotNet ratios against one thesis-style 2 s shot (480 RK4 steps, the baseline, one
     /// call = one shot): MagnusBall's RK4 over the same 480 steps, 2 s predicted shots with events, the aim solves, 1,000 and
     /// 10,000 balls in a <c>BallBatch</c> through one 60 FPS frame, and 1,000 FixedStepDrivers one at a time through one frame
-    /// (default stable RK4 and plain RK4 on the full model, plain RK4 on the thesis model). Also the full tennis model in the
+    /// (default stable RK4 and plain RK4 on the full model, plain RK4 on the thesis model), and the same balls through
+    /// <c>RungeKutta4.Advance</c> one at a time, the kernel alone (the floor of any per-ball loop on the full model). Also the full tennis model in the
     /// thesis's style (<see cref="ThesisStyleTennisBall"/>), the naive code of the full-model rows' model.
     /// </summary>
     [Config(typeof(ShortConfig))]
@@ -49,6 +50,12 @@ namespace MagnusBall.Benchmarks
 
         [Benchmark(Description = "1,000 FixedStepDrivers (rk4), thesis model, one frame")]
         public double Drivers1000Thesis() => _work.Drivers1000Thesis();
+
+        [Benchmark(Description = "1,000 balls by RungeKutta4.Advance(4), full tennis model (the drivers' floor)")]
+        public double KernelFloor1000() => _work.KernelFloor1000();
+
+        [Benchmark(Description = "10,000 balls by RungeKutta4.Advance(4), full tennis model (the scalar kernel)")]
+        public double KernelFloor10000() => _work.KernelFloor10000();
 
         [Benchmark(Description = "AimSolver.MinimumElevationToClear (net)")]
         public double AimClearNet() => _work.AimClearNet();

@@ -32,6 +32,8 @@ namespace MagnusBall.Benchmarks
         private FixedStepDriver[] _drivers = null!;
         private FixedStepDriver[] _driversRk4 = null!;
         private FixedStepDriver[] _driversThesis = null!;
+        private FlightState[] _kernelStates = null!;
+        private StateDerivative[] _kernelDerivatives = null!;
         private AimSolver _solver = null!;
         private AimSolver _solverFixed = null!;
         private LaunchSpin _spin;
@@ -70,6 +72,17 @@ namespace MagnusBall.Benchmarks
                 _drivers[i] = new FixedStepDriver(_fullModel, Step, start, events);
                 _driversRk4[i] = new FixedStepDriver(_fullModel, RungeKutta4.Instance, Step, start, events);
                 _driversThesis[i] = new FixedStepDriver(_thesisModel, RungeKutta4.Instance, Step, start, events);
+            }
+
+            // The same crowd's states for the kernel-alone floor (RungeKutta4.Advance per ball): 10,000 of them, the first
+            // 1,000 for the drivers' floor.
+            random = new Random(1);
+            _kernelStates = new FlightState[10_000];
+            _kernelDerivatives = new StateDerivative[_kernelStates.Length];
+            for (int i = 0; i < _kernelStates.Length; i++)
+            {
+                _kernelStates[i] = RandomDrive(random);
+                _kernelDerivatives[i] = _fullModel.Derivative(_kernelStates[i]);
             }
 
             FlightModel model = _fullModel;
@@ -194,6 +207,29 @@ namespace MagnusBall.Benchmarks
         /// 8 U target asks for, without the full model's costlier laws.
         /// </summary>
         public double Drivers1000Thesis() => Drive(_driversThesis);
+
+        /// <summary>
+        /// The floor of <see cref="Drivers1000Rk4"/>: the same 1,000 balls (full tennis model) through one 60 FPS frame, each
+        /// by one RungeKutta4.Advance call of 4 steps, the kernel alone with the state in registers: no stepper, no event test,
+        /// no driver. No per-ball loop on this model and method costs less.
+        /// </summary>
+        public double KernelFloor1000() => KernelFloor(1000);
+
+        /// <summary>
+        /// The same for 10,000 balls: the floor of a batch that steps ball by ball (<see cref="Batch10000"/> where
+        /// <c>Vector&lt;double&gt;</c> is not accelerated, as under Mono 6.8).
+        /// </summary>
+        public double KernelFloor10000() => KernelFloor(10_000);
+
+        private double KernelFloor(int count)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                RungeKutta4.Instance.Advance(_fullModel, ref _kernelStates[i], ref _kernelDerivatives[i], Step, 4);
+            }
+
+            return _kernelStates[0].Position.X;
+        }
 
         private static double Drive(FixedStepDriver[] drivers)
         {
