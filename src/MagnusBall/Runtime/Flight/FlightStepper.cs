@@ -90,6 +90,10 @@ namespace MagnusBall.Flight
         private readonly bool _gravityHolds;          // gravity pushes the ball into the surface
 
         private Snapshot _now;
+        // Where a fixed step goes straight to the model's RK4 kernel (IntegrateFixed): plain RK4, or the stable RK4 with RK4 inside
+        // wherever its step is one substep. Fixed here, as the integrator is.
+        private readonly bool _plainRk4;
+        private readonly StableIntegrator? _stableRk4;
         private Snapshot _before; // Advance's copy of _now from before the step (scratch: see there)
         private FlightEvent _stopEvent;        // the flight's stop event (outside the snapshot: set only by a step that stops)
         private FlightEvent _pendingStop;      // a stop found during the step, committed with it
@@ -120,6 +124,8 @@ namespace MagnusBall.Flight
         {
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
+            _plainRk4 = integrator is RungeKutta4;
+            _stableRk4 = integrator is StableIntegrator stable && stable.Inner is RungeKutta4 ? stable : null;
             EventSet = events;
             Contact = contact;
             int perPiece = (events?.MaximumEventsPerStep ?? 0) + 1;
@@ -310,58 +316,242 @@ namespace MagnusBall.Flight
         {
             RequireStarted();
             Require.Step(step, nameof(step));
-            if (Contact == null && _now.Phase == FlightPhase.Flying)
+            return Steps(step, stopAt, 1, out _, out _);
+        }
+
+        /// <summary>
+        /// Up to <paramref name="count"/> steps of <paramref name="step"/> seconds in one call (<see cref="Stepping.FixedStepDriver"/>'s
+        /// frame): the same steps, bits and counts as that many <see cref="TryStep"/> calls, up to and including the first step
+        /// that is not quiet. A quiet step is TryStep's common step by plain RK4 (or the stable RK4 in one substep): in flight
+        /// with no contact, taken in one piece, surely no event on it. Quiet steps hand their end to the next step in locals and
+        /// are committed together, where TryStep commits each into the stepper's fields. The first step that is not quiet (an
+        /// event may lie on it, it is refused, it takes another method or more substeps) is taken as TryStep takes it, and the
+        /// call returns after it with its outcome.
+        /// </summary>
+        /// <param name="step">The step, s; finite and &gt; 0.</param>
+        /// <param name="stopAt">As <see cref="TryStep"/>'s.</param>
+        /// <param name="count">The most steps, at least 1: the caller bounds it (the driver by its step and work caps, each quiet step
+        /// costing <see cref="QuietStepWork"/>).</param>
+        /// <param name="quiet">The quiet steps taken. <paramref name="count"/> when every step was quiet (the outcome is then
+        /// <see cref="StepOutcome.Taken"/>); otherwise one more step was attempted after them, and the outcome is its own.</param>
+        /// <param name="lastStart">The time at the start of the last step attempted.</param>
+        internal StepOutcome TrySteps(double step, FlightEventKinds stopAt, int count, out int quiet, out double lastStart)
+        {
+            RequireStarted();
+            Require.Step(step, nameof(step));
+            return Steps(step, stopAt, Math.Max(count, 1), out quiet, out lastStart);
+        }
+
+        /// <summary>The work (evaluations plus one step) of one quiet step of <see cref="TrySteps"/>.</summary>
+        internal const int QuietStepWork = RungeKutta4.Evaluations + 1;
+
+        // How a fixed step from a state came out (IntegrateFixed).
+        private enum FixedStepKind
+        {
+            Quiet,           // taken, by the RK4 kernel in one piece, and surely no event on it
+            Plain,           // taken the same way by another method (or substeps): no event surely, but not a quiet step
+            MaybeEvents,     // finite, but an event may lie on it (the full scan decides)
+            Diverged,        // its end or end derivative is not finite (refused)
+            TimeCannotAdvance,
+        }
+
+        // TryStep's and TrySteps' steps. The common step first: one piece, and, when it holds no event, taken at once (nothing to
+        // put back if it were refused, so no snapshot). Where it holds an event, the general step takes this integration as its
+        // first piece: the step is integrated once either way.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private StepOutcome Steps(double step, FlightEventKinds stopAt, int count, out int quiet, out double lastStart)
+        {
+            quiet = 0;
+            lastStart = _now.State.Time;
+            if (Contact != null || _now.Phase != FlightPhase.Flying)
             {
-                // The common step first: one piece, and, when it holds no event, taken at once (nothing to put back if it
-                // were refused, so no snapshot). Where it holds an event, the general step takes this integration as its
-                // first piece: the step is integrated once either way.
-                double endTime = _now.State.Time + step;
-                if (!(endTime > _now.State.Time))
-                {
+                return Advance(step, stopAt, adaptive: null);
+            }
+
+            if (count > 1)
+            {
+                return QuietSteps(step, stopAt, count, out quiet, out lastStart);
+            }
+
+            // Integrated straight into the first-piece fields (meaningful only once _hasFirstPiece is set): Mono zeroes every
+            // struct local on entry, and these two are 152 bytes.
+            FixedStepKind kind = IntegrateFixed(_now.State, _now.Derivative, step, out _firstPiece, out _firstPieceDerivative, out int evaluations);
+
+            if (kind == FixedStepKind.Quiet)
+            {
+                quiet = 1;
+            }
+
+            return Finish(kind, step, stopAt, evaluations);
+        }
+
+        // One fixed step from (start, startDerivative), integrated into (next, nextDerivative) as TryStep's common step takes it.
+        // The built-in RK4 goes straight to the model's kernel (no argument check: the state is finite, as every state this class
+        // takes, and the step was checked; no interface call), and so does the stable RK4 where its step is one substep; every
+        // other method, and the stable RK4's substepped steps, through IIntegrator.Step. next must not be start.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private FixedStepKind IntegrateFixed(
+            in FlightState start, in StateDerivative startDerivative, double step, out FlightState next, out StateDerivative nextDerivative, out int evaluations)
+        {
+            double endTime = start.Time + step;
+            if (!(endTime > start.Time))
+            {
+                next = start;
+                nextDerivative = startDerivative;
+                evaluations = 0;
+                return FixedStepKind.TimeCannotAdvance;
+            }
+
+            evaluations = RungeKutta4.Evaluations;
+            bool kernel = _plainRk4 || (_stableRk4 != null && StableStepping.SubstepsFor(Model, start, step, _stableRk4.StiffnessLimit) == 1);
+            if (kernel)
+            {
+                // Plain RK4, or the stable RK4's common case: StableStepping.Step's one substep, the whole step, counted by the
+                // same method (its result is that RK4 step with the time set to the step's end, as here below).
+                RungeKutta4.StepCheckedInto(Model, start, startDerivative, step, out next, out nextDerivative);
+            }
+            else
+            {
+                next = Integrator.Step(Model, start, startDerivative, step, out nextDerivative, out evaluations);
+            }
+
+            if (!Takes(start, next, nextDerivative))
+            {
+                return FixedStepKind.Diverged; // nothing changed
+            }
+
+            if (next.Time != endTime)
+            {
+                next = new FlightState(next.Position, next.Velocity, next.AngularVelocity, endTime);
+            }
+
+            if (EventSet != null && !EventSet.SurelyClear(start, startDerivative, next, nextDerivative))
+            {
+                return FixedStepKind.MaybeEvents;
+            }
+
+            return kernel ? FixedStepKind.Quiet : FixedStepKind.Plain;
+        }
+
+        // The step integrated into the first-piece fields from the current state, taken as TryStep takes it.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private StepOutcome Finish(FixedStepKind kind, double step, FlightEventKinds stopAt, int evaluations)
+        {
+            switch (kind)
+            {
+                case FixedStepKind.Diverged:
+                    return StepOutcome.Diverged;
+                case FixedStepKind.TimeCannotAdvance:
                     return StepOutcome.TimeCannotAdvance;
-                }
+                case FixedStepKind.MaybeEvents:
+                    if (ScansClear(_firstPiece, _firstPieceDerivative))
+                    {
+                        break;
+                    }
 
-                // Integrated straight into the first-piece fields (meaningful only once _hasFirstPiece is set): Mono zeroes
-                // every struct local on entry, and these two are 152 bytes. The built-in RK4 goes straight to the model's
-                // kernel (no argument check: the state is finite, as every state this class takes, and the step was checked
-                // above; no interface call), and so does the stable RK4 where its step is one substep; every other method,
-                // and the stable RK4's substepped steps, through IIntegrator.Step.
-                int evaluations = RungeKutta4.Evaluations;
-                if (Integrator is RungeKutta4 ||
-                    (Integrator is StableIntegrator stable && stable.Inner is RungeKutta4 &&
-                     StableStepping.SubstepsFor(Model, _now.State, step, stable.StiffnessLimit) == 1))
-                {
-                    // Plain RK4, or the stable RK4's common case: StableStepping.Step's one substep, the whole step, counted by
-                    // the same method (its result is that RK4 step with the time set to the step's end, as here below).
-                    RungeKutta4.StepCheckedInto(Model, _now.State, _now.Derivative, step, out _firstPiece, out _firstPieceDerivative);
-                }
-                else
-                {
-                    _firstPiece = Integrator.Step(Model, _now.State, _now.Derivative, step, out _firstPieceDerivative, out evaluations);
-                }
+                    _firstPieceEvaluations = evaluations;
+                    _hasFirstPiece = true;
+                    return Advance(step, stopAt, adaptive: null);
+            }
 
-                if (!Takes(_now.State, _firstPiece, _firstPieceDerivative))
-                {
-                    return StepOutcome.Diverged; // nothing changed
-                }
+            TakePlainStep(_firstPiece, _firstPieceDerivative, evaluations);
+            return StepOutcome.Taken;
+        }
 
-                if (_firstPiece.Time != endTime)
-                {
-                    _firstPiece = new FlightState(_firstPiece.Position, _firstPiece.Velocity, _firstPiece.AngularVelocity, endTime);
-                }
+        // TrySteps' steps for a count of two or more. Three slots in turn, a, b and c, each a state and its derivative: each step
+        // reads the last step's end and writes the slot that holds neither that end nor its start, so no state is copied from
+        // step to step, and when a step is not quiet the last quiet step's start and end are both at hand to commit. The current
+        // state, the first step's start, is not written before the commit. Out of line: Mono zeroes every struct local on entry
+        // (456 bytes here), which a single step (TryStep) should not pay. Every turn of the loop takes a step until count are
+        // taken or one is not quiet: at most count steps.
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private StepOutcome QuietSteps(double step, FlightEventKinds stopAt, int count, out int quiet, out double lastStart)
+        {
+            FlightState a, b, c;
+            StateDerivative ka, kb, kc;
+            lastStart = _now.State.Time;
+            FixedStepKind kind = IntegrateFixed(_now.State, _now.Derivative, step, out a, out ka, out int evaluations);
+            if (kind != FixedStepKind.Quiet)
+            {
+                quiet = 0;
+                return AfterQuiet(_now.State, _now.Derivative, _now.State, _now.Derivative, 0, a, ka, kind, step, stopAt, evaluations);
+            }
 
-                if (EventSet == null || EventSet.SurelyClear(_now.State, _now.Derivative, _firstPiece, _firstPieceDerivative) ||
-                    ScansClear(_firstPiece, _firstPieceDerivative))
+            lastStart = a.Time;
+            kind = IntegrateFixed(a, ka, step, out b, out kb, out evaluations);
+            if (kind != FixedStepKind.Quiet)
+            {
+                quiet = 1;
+                return AfterQuiet(_now.State, _now.Derivative, a, ka, 1, b, kb, kind, step, stopAt, evaluations);
+            }
+
+            int taken = 2; // the last from a to b
+            while (true)
+            {
+                if (taken == count)
                 {
-                    TakePlainStep(_firstPiece, _firstPieceDerivative, evaluations);
+                    quiet = taken;
+                    CommitQuiet(a, ka, b, kb, taken);
                     return StepOutcome.Taken;
                 }
 
-                _firstPieceEvaluations = evaluations;
-                _hasFirstPiece = true;
+                lastStart = b.Time;
+                kind = IntegrateFixed(b, kb, step, out c, out kc, out evaluations);
+                if (kind != FixedStepKind.Quiet)
+                {
+                    quiet = taken;
+                    return AfterQuiet(a, ka, b, kb, taken, c, kc, kind, step, stopAt, evaluations);
+                }
+
+                if (++taken == count)
+                {
+                    quiet = taken;
+                    CommitQuiet(b, kb, c, kc, taken);
+                    return StepOutcome.Taken;
+                }
+
+                lastStart = c.Time;
+                kind = IntegrateFixed(c, kc, step, out a, out ka, out evaluations);
+                if (kind != FixedStepKind.Quiet)
+                {
+                    quiet = taken;
+                    return AfterQuiet(b, kb, c, kc, taken, a, ka, kind, step, stopAt, evaluations);
+                }
+
+                if (++taken == count)
+                {
+                    quiet = taken;
+                    CommitQuiet(c, kc, a, ka, taken);
+                    return StepOutcome.Taken;
+                }
+
+                lastStart = a.Time;
+                kind = IntegrateFixed(a, ka, step, out b, out kb, out evaluations);
+                if (kind != FixedStepKind.Quiet)
+                {
+                    quiet = taken;
+                    return AfterQuiet(c, kc, a, ka, taken, b, kb, kind, step, stopAt, evaluations);
+                }
+
+                taken++; // the last from a to b again
+            }
+        }
+
+        // QuietSteps after `quiet` quiet steps, the last from (start, startDerivative) to (end, endDerivative) (neither read when
+        // quiet is 0), whose next step, integrated into (next, nextDerivative), was not quiet: commits the quiet steps, then takes
+        // that step from the first-piece fields as TryStep takes it.
+        private StepOutcome AfterQuiet(
+            in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, int quiet,
+            in FlightState next, in StateDerivative nextDerivative, FixedStepKind kind, double step, FlightEventKinds stopAt, int evaluations)
+        {
+            if (quiet > 0)
+            {
+                CommitQuiet(start, startDerivative, end, endDerivative, quiet);
             }
 
-            return Advance(step, stopAt, adaptive: null);
+            _firstPiece = next;
+            _firstPieceDerivative = nextDerivative;
+            return Finish(kind, step, stopAt, evaluations);
         }
 
         // The full scan of a plain step's segment, for the steps SurelyClear cannot decide (out of line: the segment is 304 bytes
@@ -374,14 +564,24 @@ namespace MagnusBall.Flight
         }
 
         // Commits a step of one piece with no event: what Advance does for it, without the snapshot and the piece loop.
-        private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations)
+        private void TakePlainStep(in FlightState next, in StateDerivative nextDerivative, int evaluations) =>
+            Commit(_now.State, _now.Derivative, next, nextDerivative, 1, evaluations);
+
+        // Commits `steps` quiet steps (QuietSteps: RK4's evaluations each).
+        private void CommitQuiet(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, int steps) =>
+            Commit(start, startDerivative, end, endDerivative, steps, (long)RungeKutta4.Evaluations * steps);
+
+        // Commits `steps` steps of one piece with no event that made `evaluations` in all, the last from (start, startDerivative)
+        // to (end, endDerivative): TakePlainStep's commit of each, at once. start may be the current state (it is read before it
+        // is written); end may not be, and neither may be the previous state.
+        private void Commit(in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative, int steps, long evaluations)
         {
-            _now.Previous = _now.State;
-            _now.PreviousDerivative = _now.Derivative;
-            _now.State = next;
-            _now.Derivative = nextDerivative;
+            _now.Previous = start;
+            _now.PreviousDerivative = startDerivative;
+            _now.State = end;
+            _now.Derivative = endDerivative;
             _now.Evaluations += evaluations;
-            _now.Steps++;
+            _now.Steps += steps;
             _now.StartsFlight = false;
             _eventCount = 0;
             _segmentCount = 0;

@@ -329,8 +329,22 @@ namespace MagnusBall.Stepping
                     break;
                 }
 
-                double stepStart = _stepper.CurrentTime;
-                StepOutcome outcome = _stepper.TryStep(FixedStep, _stopAt);
+                // The steps this loop would start from here if each were quiet (no event, plain RK4): taken in one stepper call,
+                // the same steps as one TryStep call each (FlightStepper.TrySteps), which returns after the first step that is
+                // not quiet; that step is then handled below as the loop handled every step.
+                int allowed = StepsAllowed(steps, _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore);
+                StepOutcome outcome = _stepper.TrySteps(FixedStep, _stopAt, allowed, out int quiet, out double stepStart);
+                for (int i = 0; i < quiet; i++)
+                {
+                    _accumulator -= FixedStep;
+                }
+
+                steps += quiet;
+                if (quiet == allowed)
+                {
+                    continue; // every step quiet: no other step was attempted
+                }
+
                 if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
                 {
                     // Refused: the stepper kept its last finite state. The flight ends there, and the render time runs on to it:
@@ -366,6 +380,23 @@ namespace MagnusBall.Stepping
             }
 
             return new AdvanceResult(steps, written, lost, dropped, _diverged, deferred);
+        }
+
+        // How many steps in a row the loop in Advance would start from here (its tests passed for the first) if each were a quiet
+        // one, which subtracts FixedStep from the accumulator and adds FlightStepper.QuietStepWork to the work: the same tests,
+        // made ahead on copies. At least 1, at most MaxStepsPerAdvance - steps.
+        private int StepsAllowed(int steps, long work)
+        {
+            double accumulator = _accumulator - FixedStep;
+            int allowed = 1;
+            while (accumulator >= FixedStep && steps + allowed < MaxStepsPerAdvance &&
+                work + (long)allowed * FlightStepper.QuietStepWork < MaxEvaluationsPerAdvance)
+            {
+                accumulator -= FixedStep;
+                allowed++;
+            }
+
+            return allowed;
         }
 
         /// <summary>
