@@ -462,79 +462,64 @@ namespace MagnusBall.Flight
         // reads the last step's end and writes the slot that holds neither that end nor its start, so no state is copied from
         // step to step, and when a step is not quiet the last quiet step's start and end are both at hand to commit. The current
         // state, the first step's start, is not written before the commit. Out of line: Mono zeroes every struct local on entry
-        // (456 bytes here), which a single step (TryStep) should not pay. Every turn of the loop takes a step until count are
-        // taken or one is not quiet: at most count steps.
+        // (456 bytes here), which a single step (TryStep) should not pay. Each QuietStep takes a step or ends the call, and it
+        // ends once count steps are taken: at most count steps.
         [MethodImpl(MethodImplOptions.NoInlining)]
         private StepOutcome QuietSteps(double step, FlightEventKinds stopAt, int count, out int quiet, out double lastStart)
         {
             FlightState a, b, c;
             StateDerivative ka, kb, kc;
+            int taken = 0;
             lastStart = _now.State.Time;
-            FixedStepKind kind = IntegrateFixed(_now.State, _now.Derivative, step, out a, out ka, out int evaluations);
+            StepOutcome outcome;
+            // From the current state into a (no quiet step before it, so its start is not read), then from a into b.
+            if (QuietStep(_now.State, _now.Derivative, _now.State, _now.Derivative, out a, out ka, ref taken, count, step, stopAt, ref lastStart, out outcome) ||
+                QuietStep(_now.State, _now.Derivative, a, ka, out b, out kb, ref taken, count, step, stopAt, ref lastStart, out outcome))
+            {
+                quiet = taken;
+                return outcome;
+            }
+
+            while (!QuietStep(a, ka, b, kb, out c, out kc, ref taken, count, step, stopAt, ref lastStart, out outcome) &&
+                !QuietStep(b, kb, c, kc, out a, out ka, ref taken, count, step, stopAt, ref lastStart, out outcome) &&
+                !QuietStep(c, kc, a, ka, out b, out kb, ref taken, count, step, stopAt, ref lastStart, out outcome))
+            {
+            }
+
+            quiet = taken;
+            return outcome;
+        }
+
+        // One turn of QuietSteps after `taken` quiet steps, the last from (start, startDerivative) to (end, endDerivative): true,
+        // with the call's outcome, where the call ends here (count steps taken: they are committed; or the next step, integrated
+        // into (next, nextDerivative), is not quiet: the quiet steps are committed and that step taken as TryStep takes it);
+        // false where the next step was quiet (taken counts it). next is not meaningful where it returns true before integrating.
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private bool QuietStep(
+            in FlightState start, in StateDerivative startDerivative, in FlightState end, in StateDerivative endDerivative,
+            out FlightState next, out StateDerivative nextDerivative, ref int taken, int count, double step, FlightEventKinds stopAt,
+            ref double lastStart, out StepOutcome outcome)
+        {
+            if (taken == count)
+            {
+                CommitQuiet(start, startDerivative, end, endDerivative, taken);
+                next = default;
+                nextDerivative = default;
+                outcome = StepOutcome.Taken;
+                return true;
+            }
+
+            lastStart = end.Time;
+            FixedStepKind kind = IntegrateFixed(end, endDerivative, step, out next, out nextDerivative, out int evaluations);
             if (kind != FixedStepKind.Quiet)
             {
-                quiet = 0;
-                return AfterQuiet(_now.State, _now.Derivative, _now.State, _now.Derivative, 0, a, ka, kind, step, stopAt, evaluations);
+                outcome = AfterQuiet(start, startDerivative, end, endDerivative, taken, next, nextDerivative, kind, step, stopAt, evaluations);
+                return true;
             }
 
-            lastStart = a.Time;
-            kind = IntegrateFixed(a, ka, step, out b, out kb, out evaluations);
-            if (kind != FixedStepKind.Quiet)
-            {
-                quiet = 1;
-                return AfterQuiet(_now.State, _now.Derivative, a, ka, 1, b, kb, kind, step, stopAt, evaluations);
-            }
-
-            int taken = 2; // the last from a to b
-            while (true)
-            {
-                if (taken == count)
-                {
-                    quiet = taken;
-                    CommitQuiet(a, ka, b, kb, taken);
-                    return StepOutcome.Taken;
-                }
-
-                lastStart = b.Time;
-                kind = IntegrateFixed(b, kb, step, out c, out kc, out evaluations);
-                if (kind != FixedStepKind.Quiet)
-                {
-                    quiet = taken;
-                    return AfterQuiet(a, ka, b, kb, taken, c, kc, kind, step, stopAt, evaluations);
-                }
-
-                if (++taken == count)
-                {
-                    quiet = taken;
-                    CommitQuiet(b, kb, c, kc, taken);
-                    return StepOutcome.Taken;
-                }
-
-                lastStart = c.Time;
-                kind = IntegrateFixed(c, kc, step, out a, out ka, out evaluations);
-                if (kind != FixedStepKind.Quiet)
-                {
-                    quiet = taken;
-                    return AfterQuiet(b, kb, c, kc, taken, a, ka, kind, step, stopAt, evaluations);
-                }
-
-                if (++taken == count)
-                {
-                    quiet = taken;
-                    CommitQuiet(c, kc, a, ka, taken);
-                    return StepOutcome.Taken;
-                }
-
-                lastStart = a.Time;
-                kind = IntegrateFixed(a, ka, step, out b, out kb, out evaluations);
-                if (kind != FixedStepKind.Quiet)
-                {
-                    quiet = taken;
-                    return AfterQuiet(c, kc, a, ka, taken, b, kb, kind, step, stopAt, evaluations);
-                }
-
-                taken++; // the last from a to b again
-            }
+            taken++;
+            outcome = StepOutcome.Taken;
+            return false;
         }
 
         // QuietSteps after `quiet` quiet steps, the last from (start, startDerivative) to (end, endDerivative) (neither read when
