@@ -335,6 +335,12 @@ namespace MagnusBall.Flight
         /// <param name="quiet">The quiet steps taken. <paramref name="count"/> when every step was quiet (the outcome is then
         /// <see cref="StepOutcome.Taken"/>); otherwise one more step was attempted after them, and the outcome is its own.</param>
         /// <param name="lastStart">The time at the start of the last step attempted.</param>
+        /// <remarks>
+        /// A law of the user's that throws does so while a step is integrated, before the call commits anything: the exception
+        /// goes through with the stepper as the call found it (TryStep calls would have kept the steps before the throwing one).
+        /// The one other code a step here runs, the event scan and the stop at a landing, calls no user code: bounces and rolls,
+        /// which do, need a contact surface, and with one no step is quiet.
+        /// </remarks>
         internal StepOutcome TrySteps(double step, FlightEventKinds stopAt, int count, out int quiet, out double lastStart)
         {
             RequireStarted();
@@ -344,6 +350,12 @@ namespace MagnusBall.Flight
 
         /// <summary>The work (evaluations plus one step) of one quiet step of <see cref="TrySteps"/>.</summary>
         internal const int QuietStepWork = RungeKutta4.Evaluations + 1;
+
+        /// <summary>
+        /// Whether the next step may be quiet (<see cref="TrySteps"/>): in flight, no contact surface, and plain RK4 or the
+        /// stable RK4 with RK4 inside. Where it is false every step is taken the general way, one a call.
+        /// </summary>
+        internal bool StepsQuietly => Contact == null && _now.Phase == FlightPhase.Flying && (_plainRk4 || _stableRk4 != null);
 
         // How a fixed step from a state came out (IntegrateFixed).
         private enum FixedStepKind

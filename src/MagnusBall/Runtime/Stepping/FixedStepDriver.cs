@@ -309,6 +309,7 @@ namespace MagnusBall.Stepping
             bool deferrable = events.Length >= perStep; // a buffer that holds any one step's events: never lose one
             bool deferred = false;
             long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount;
+            bool lookAhead = true;
             // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
             {
@@ -331,8 +332,12 @@ namespace MagnusBall.Stepping
 
                 // The steps this loop would start from here if each were quiet (no event, plain RK4): taken in one stepper call,
                 // the same steps as one TryStep call each (FlightStepper.TrySteps), which returns after the first step that is
-                // not quiet; that step is then handled below as the loop handled every step.
-                int allowed = StepsAllowed(steps, _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore);
+                // not quiet; that step is then handled below as the loop handled every step. Looked ahead only where steps can
+                // be quiet and the last call took one (otherwise one step a call, as TryStep), so a flight whose steps are not
+                // quiet (a bounce model, another method, events step after step) pays nothing for it.
+                int allowed = lookAhead && _stepper.StepsQuietly
+                    ? StepsAllowed(steps, _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore)
+                    : 1;
                 StepOutcome outcome = _stepper.TrySteps(FixedStep, _stopAt, allowed, out int quiet, out double stepStart);
                 for (int i = 0; i < quiet; i++)
                 {
@@ -340,6 +345,7 @@ namespace MagnusBall.Stepping
                 }
 
                 steps += quiet;
+                lookAhead = quiet > 0;
                 if (quiet == allowed)
                 {
                     continue; // every step quiet: no other step was attempted
@@ -382,14 +388,18 @@ namespace MagnusBall.Stepping
             return new AdvanceResult(steps, written, lost, dropped, _diverged, deferred);
         }
 
+        // The most steps Advance asks of the stepper in one call: it bounds the look-ahead below (a frame of more steps takes more
+        // calls), so that a flight whose quiet runs are cut short often pays at most this many turns of it a step.
+        private const int MaxQuietRun = 16;
+
         // How many steps in a row the loop in Advance would start from here (its tests passed for the first) if each were a quiet
         // one, which subtracts FixedStep from the accumulator and adds FlightStepper.QuietStepWork to the work: the same tests,
-        // made ahead on copies. At least 1, at most MaxStepsPerAdvance - steps.
+        // made ahead on copies. At least 1, at most MaxQuietRun and MaxStepsPerAdvance - steps.
         private int StepsAllowed(int steps, long work)
         {
             double accumulator = _accumulator - FixedStep;
             int allowed = 1;
-            while (accumulator >= FixedStep && steps + allowed < MaxStepsPerAdvance &&
+            while (allowed < MaxQuietRun && accumulator >= FixedStep && steps + allowed < MaxStepsPerAdvance &&
                 work + (long)allowed * FlightStepper.QuietStepWork < MaxEvaluationsPerAdvance)
             {
                 accumulator -= FixedStep;
