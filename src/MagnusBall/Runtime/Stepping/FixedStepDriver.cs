@@ -313,7 +313,8 @@ namespace MagnusBall.Stepping
             // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
             {
-                if (steps == MaxStepsPerAdvance || _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore >= MaxEvaluationsPerAdvance)
+                long work = _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore; // this call's so far
+                if (steps == MaxStepsPerAdvance || work >= MaxEvaluationsPerAdvance)
                 {
                     // Step or work cap reached: keep the fraction of a step (alpha stays continuous), drop the rest.
                     double keep = _accumulator % FixedStep;
@@ -335,9 +336,7 @@ namespace MagnusBall.Stepping
                 // not quiet; that step is then handled below as the loop handled every step. Looked ahead only where steps can
                 // be quiet and the last call took one (otherwise one step a call, as TryStep), so a flight whose steps are not
                 // quiet (a bounce model, another method, events step after step) pays nothing for it.
-                int allowed = lookAhead && _stepper.StepsQuietly
-                    ? StepsAllowed(steps, _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore)
-                    : 1;
+                int allowed = lookAhead && _stepper.StepsQuietly ? StepsAllowed(steps, work) : 1;
                 StepOutcome outcome = _stepper.TrySteps(FixedStep, _stopAt, allowed, out int quiet, out double stepStart);
                 for (int i = 0; i < quiet; i++)
                 {
