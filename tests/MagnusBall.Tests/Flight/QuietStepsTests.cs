@@ -371,14 +371,6 @@ namespace MagnusBall.Tests.Flight
             Assert.That(driver.TotalSteps, Is.EqualTo(160), "the time held over is stepped once the law works again");
         }
 
-        private sealed class SwitchableDrag : IDragModel
-        {
-            public bool Throw;
-
-            public double DragCoefficient(in AeroConditions conditions) =>
-                Throw ? throw new InvalidOperationException("the user's drag law failed") : 0.5 + 0.05 * conditions.SpinParameter;
-        }
-
         // The same flight, bit for bit (FlightState and StateDerivative compare their doubles' bits: value-type equality).
         private static void AssertSameFlight(FlightStepper t, FlightStepper r, string when)
         {

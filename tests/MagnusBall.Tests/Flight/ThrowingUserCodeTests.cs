@@ -13,14 +13,6 @@ namespace MagnusBall.Tests.Flight
     /// </summary>
     public class ThrowingUserCodeTests
     {
-        private sealed class SwitchableDrag : IDragModel
-        {
-            public bool Throw;
-
-            public double DragCoefficient(in AeroConditions conditions) =>
-                Throw ? throw new InvalidOperationException("the user's drag law failed") : 0.5 + 0.05 * conditions.SpinParameter;
-        }
-
         private sealed class SwitchableBounce : IBounceModel
         {
             public bool Throw;
