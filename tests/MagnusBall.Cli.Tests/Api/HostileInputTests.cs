@@ -57,15 +57,42 @@ namespace MagnusBall.Cli.Tests.Api
             Assert.That(stderr.ToString(), Does.StartWith("magnusball: aims[0].name: the string holds a lone UTF-16 surrogate"));
         }
 
-        [TestCase("rk4")]
-        [TestCase("stable-rk4")]
-        public void Divergence_ExitsWith2_ForEveryIntegrator(string integrator)
+        [TestCase("rk4", "scenarios[0].step: a step of 0.004166666666666667 s is beyond rk4's stability bound for this flight's drag at t = 0 s (1E+155 m/s); the largest stable step there is 4.31639")]
+        [TestCase("stable-rk4", "scenarios[0].step: the flight diverged (the state would not be finite after t = 0 s with stable-rk4)")]
+        public void Divergence_ExitsWith2_ForEveryIntegrator(string integrator, string expected)
         {
-            // v = 1e155 m/s: the drag overflows within the first step (stable-rk4 used to throw from a substep).
+            // v = 1e155 m/s: the drag overflows within the first step. A plain method's step is refused before it is
+            // taken (beyond its stability bound); stable-rk4 takes it in substeps and diverges (it used to throw from one).
             JsonObject root = CliRun.Drive();
             S(root)["integrator"] = integrator;
             S(root)["initial"]!["velocity"] = new JsonArray(1e155, 0, 0);
-            AssertInputError(CliRun.Simulate(root), "scenarios[0].step: the flight diverged (the state would not be finite after t = 0 s with " + integrator + ")");
+            AssertInputError(CliRun.Simulate(root), expected);
+        }
+
+        [TestCase("euler", 0.05, 0.0442838520488942)]
+        [TestCase("rk4", 0.05, 0.05535)]
+        public void StepBeyondTheStabilityBound_IsRefused_NamingTheLargestStableStep(string integrator, double step, double largest)
+        {
+            // A table-tennis ball (2.7 g, 20 mm) at 100 m/s: the drag rate 2 k C_D s is about 45 1/s, so Euler's bound
+            // (h sigma <= 2) is about 0.044 s; RK4's check (2.5) accepts 0.05 s and the next test's 0.1 s is refused.
+            JsonObject root = CliRun.Drive();
+            S(root)["ball"] = new JsonObject { ["mass"] = 0.0027, ["radius"] = 0.02 };
+            S(root)["initial"]!["velocity"] = new JsonArray(100, 0, 5);
+            S(root)["integrator"] = integrator;
+            S(root)["step"] = integrator == "rk4" ? 0.1 : step;
+            CliRun run = CliRun.Simulate(root);
+            Assert.That(run.ExitCode, Is.EqualTo(Program.BadInput), run.Stderr);
+            Assert.That(run.Stdout, Is.Empty, "no landing is printed");
+            Assert.That(run.Stderr, Does.StartWith(
+                $"magnusball: scenarios[0].step: a step of {(integrator == "rk4" ? 0.1 : step).ToString(System.Globalization.CultureInfo.InvariantCulture)} s is beyond {integrator}'s stability bound"));
+            string text = run.Stderr.Substring(run.Stderr.IndexOf("the largest stable step there is ", StringComparison.Ordinal) + 33);
+            double named = double.Parse(text.Substring(0, text.IndexOf(' ')), System.Globalization.CultureInfo.InvariantCulture);
+            Assert.That(named, Is.EqualTo(largest).Within(0.02 * largest), "the bisection's answer, within 2 % of the value measured once");
+
+            // The named step is taken: the same flight at it lands.
+            S(root)["step"] = named;
+            CliRun again = CliRun.Simulate(root);
+            Assert.That(again.ExitCode, Is.EqualTo(0), again.Stderr);
         }
 
         [Test]
@@ -199,8 +226,10 @@ namespace MagnusBall.Cli.Tests.Api
                 var budget = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
                 FlightResult r = ScenarioFlight.Simulate(scenario, Recording.None, budget);
                 Assert.That(r.Landing, Is.Not.Null, name);
-                Assert.That(budget.Total, Is.EqualTo(counting.Calls), name);
                 Assert.That(budget.Total, Is.EqualTo(r.DerivativeEvaluations), name);
+                // Each evaluation asks the law once; the stability check asks it once or twice more a step (the stiffness
+                // rate at the speed and at the fastest speed within the step), outside the flight's evaluations.
+                Assert.That(counting.Calls - budget.Total, Is.InRange(r.Steps, 2 * r.Steps), name);
             }
         }
 
@@ -237,9 +266,11 @@ namespace MagnusBall.Cli.Tests.Api
             S(root)["ball"] = new JsonObject { ["mass"] = 1e-6, ["radius"] = 0.033 };
             S(root)["initial"]!["velocity"] = new JsonArray(300, 0, 10);
             S(root)["maxTime"] = 1;
+            // Plain RK4 at 1/240 s is far beyond its stability bound here: refused before its first step.
             var rk4 = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
-            FlightResult plain = ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4);
-            Assert.That(rk4.Total, Is.EqualTo(1 + 4 * plain.Steps), "one evaluation at the start, four a step");
+            InputError refused = Assert.Throws<InputError>(() => ScenarioFlight.Simulate(ScenarioReader.Read(root.ToJsonString()).Single(), Recording.None, rk4))!;
+            Assert.That(refused.Message, Does.Contain("beyond rk4's stability bound"));
+            Assert.That(rk4.Total, Is.EqualTo(1), "only the start's evaluation");
 
             S(root)["integrator"] = "stable-rk4";
             var stable = new WorkBudget(ScenarioFlight.MaxEvaluationsPerFile);
