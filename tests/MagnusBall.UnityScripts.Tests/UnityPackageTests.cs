@@ -47,6 +47,18 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void TheManifest_DeclaresEveryUnityModuleTheComponentsUse()
+        {
+            // MagnusBallRigidbody uses Rigidbody, Collision and ForceMode: the Physics module's types. A project that
+            // disabled the module would not compile the package unless the manifest pulls the module in.
+            using JsonDocument manifest = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "package.json")));
+            JsonElement dependencies = manifest.RootElement.GetProperty("dependencies");
+            string components = string.Concat(Directory.EnumerateFiles(Path.Combine(Package, "Runtime", "Unity"), "*.cs").Select(File.ReadAllText));
+            Assert.That(components, Does.Contain("Rigidbody").And.Contain("ForceMode"), "the premise: the components use physics");
+            Assert.That(dependencies.GetProperty("com.unity.modules.physics").GetString(), Is.EqualTo("1.0.0"));
+        }
+
+        [Test]
         public void TheAssemblyDefinition_IsEngineFree_AndAutoReferenced()
         {
             using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Runtime", "MagnusBall.asmdef")));
