@@ -175,6 +175,20 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(root.GetProperty("defineConstraints").EnumerateArray().Select(e => e.GetString()), Does.Contain("UNITY_INCLUDE_TESTS"));
         }
 
+        [Test]
+        public void TheEditModeTestAssembly_IsEditorOnly_AndSeesTheComponents()
+        {
+            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Tests", "Editor", "MagnusBall.Tests.Editor.asmdef")));
+            JsonElement root = asmdef.RootElement;
+            Assert.That(root.GetProperty("includePlatforms").EnumerateArray().Select(e => e.GetString()), Is.EqualTo(new[] { "Editor" }), "Edit Mode");
+            string[] references = root.GetProperty("references").EnumerateArray().Select(e => e.GetString()!).ToArray();
+            Assert.That(references, Does.Contain("MagnusBall").And.Contain("MagnusBall.Unity").And.Contain("UnityEngine.TestRunner").And.Contain("UnityEditor.TestRunner"));
+            Assert.That(root.GetProperty("precompiledReferences").EnumerateArray().Select(e => e.GetString()), Does.Contain("nunit.framework.dll"));
+            Assert.That(root.GetProperty("defineConstraints").EnumerateArray().Select(e => e.GetString()), Does.Contain("UNITY_INCLUDE_TESTS"));
+            Assert.That(root.GetProperty("autoReferenced").GetBoolean(), Is.False);
+            Assert.That(Directory.EnumerateFiles(Path.Combine(Package, "Tests", "Editor"), "*.cs"), Is.Not.Empty);
+        }
+
         private static bool IsNotImported(string path)
         {
             // Folders whose name ends in "~" (Samples~, Documentation~) are not imported by Unity: no .meta there.

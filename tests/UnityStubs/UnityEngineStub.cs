@@ -333,6 +333,8 @@ namespace UnityEngine
 
         public bool useWorldSpace { get; set; } = true;
 
+        public float widthMultiplier { get; set; } = 1;
+
         public void SetPosition(int index, Vector3 position) => _positions[Check(index)] = position;
 
         public Vector3 GetPosition(int index) => _positions[Check(index)];
@@ -352,6 +354,7 @@ namespace UnityEngine
 
     public sealed class Camera : Behaviour
     {
+        public float depth { get; set; }
     }
 
     public enum ForceMode
