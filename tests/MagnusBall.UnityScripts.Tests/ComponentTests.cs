@@ -608,10 +608,7 @@ namespace MagnusBall.UnityScripts.Tests
         public void ThePreview_AndTheFlight_AllocateNothingPerFrame()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true);
-            var holder = new GameObject("line");
-            holder.AddComponent<LineRenderer>();
-            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
-            preview.flight = flight;
+            MagnusBallTrajectoryPreview preview = AddPreview(flight);
             int events = 0;
             flight.Bounced += e => events++;
             flight.PlaneCrossed += e => events++;

@@ -261,10 +261,7 @@ namespace MagnusBall.UnityScripts.Tests
         public void ThePreviewRedraws_AfterAnInspectorEdit()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.None, watchNet: false);
-            var lineHolder = new GameObject("line");
-            lineHolder.AddComponent<LineRenderer>();
-            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(lineHolder);
-            preview.flight = flight;
+            MagnusBallTrajectoryPreview preview = AddPreview(flight);
             flight.Launch(new Vector3(24f, 6f, 1.5f), Vector3.zero);
             Call(preview, "LateUpdate");
             int full = preview.PointCount;

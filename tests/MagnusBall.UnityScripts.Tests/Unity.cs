@@ -59,6 +59,16 @@ namespace MagnusBall.UnityScripts.Tests
             return component;
         }
 
+        /// <summary>A trajectory preview on a new GameObject with its LineRenderer, awake, following <paramref name="flight"/>.</summary>
+        public static MagnusBallTrajectoryPreview AddPreview(MagnusBallFlight flight)
+        {
+            var holder = new GameObject("line");
+            holder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+            return preview;
+        }
+
         /// <summary>What Unity does when it loads a component saved before 0.2.0 whose free-text preset field held <paramref name="oldName"/>.</summary>
         public static void LoadOldPreset(FlightSettings settings, string oldName)
         {
