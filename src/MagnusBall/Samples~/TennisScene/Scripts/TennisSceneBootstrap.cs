@@ -13,7 +13,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
     public class TennisSceneBootstrap : MonoBehaviour
     {
         /// <summary>The ball's diameter, m (the tennis preset's ball: 2 x 33 mm).</summary>
-        public const float BallDiameter = 0.066f;
+        public const float BallDiameterMetres = 0.066f;
 
         /// <summary>The objects built (null before Awake).</summary>
         public GameObject Court { get; private set; }
@@ -34,7 +34,7 @@ namespace MagnusBall.Samples.TennisScene.Scripts
 
             GameObject ball = GameObject.CreatePrimitive(PrimitiveType.Sphere);
             ball.name = "Ball";
-            ball.transform.localScale = new Vector3(BallDiameter, BallDiameter, BallDiameter);
+            ball.transform.localScale = new Vector3(BallDiameterMetres, BallDiameterMetres, BallDiameterMetres);
             ball.AddComponent<RuntimeMaterial>().color = new Color(0.85f, 0.95f, 0.2f, 1f);
             MagnusBallFlight flight = ball.AddComponent<MagnusBallFlight>();
             Ball = ball.AddComponent<TennisBall>();
