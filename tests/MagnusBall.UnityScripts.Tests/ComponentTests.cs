@@ -116,15 +116,56 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
-        public void PresetTooltip_NamesEveryPreset()
+        public void ThePresetDropDown_HasEveryPreset_ByItsName()
         {
-            // The inspector's tooltip is the list a designer picks from: every name SportPresets.FromName accepts.
-            var field = typeof(FlightSettings).GetField(nameof(FlightSettings.preset))!;
-            var tooltip = (TooltipAttribute)Attribute.GetCustomAttribute(field, typeof(TooltipAttribute))!;
-            foreach (string name in SportPresets.Names)
+            // The drop-down is the list a designer picks from: every name SportPresets.FromName accepts, each once.
+            var names = new List<string>();
+            foreach (PresetChoice choice in (PresetChoice[])Enum.GetValues(typeof(PresetChoice)))
             {
-                Assert.That(tooltip.tooltip, Does.Contain(" " + name + ",").Or.Contain(" " + name + "."), name);
+                names.Add(FlightSettings.PresetName(choice));
+                var settings = new FlightSettings { presetChoice = choice };
+                Assert.That(settings.Preset().Name, Is.EqualTo(FlightSettings.PresetName(choice)), choice.ToString());
+                Assert.That(settings.preset, Is.EqualTo(settings.Preset().Name));
             }
+
+            Assert.That(names, Is.EquivalentTo(SportPresets.Names));
+        }
+
+        [Test]
+        public void ThePresetByName_StillWorks_AndRefusesAnUnknownNameAtOnce()
+        {
+            var settings = new FlightSettings();
+            settings.preset = "Table_Tennis";
+            Assert.That(settings.presetChoice, Is.EqualTo(PresetChoice.TableTennis));
+            var e = Assert.Throws<ArgumentException>(() => settings.preset = "squash")!;
+            Assert.That(e.ParamName, Is.EqualTo("preset"));
+            Assert.That(e.Message, Does.Contain("table-tennis").And.Contain("squash"));
+            Assert.That(settings.presetChoice, Is.EqualTo(PresetChoice.TableTennis), "unchanged");
+        }
+
+        [TestCase("soccer", PresetChoice.Soccer)]
+        [TestCase("golf-linear-2023", PresetChoice.GolfLinear2023)]
+        [TestCase("Table Tennis", PresetChoice.TableTennis)]
+        public void AnOldScenesPresetText_BecomesTheDropDownsValue(string oldText, PresetChoice expected)
+        {
+            var settings = new FlightSettings();
+            LoadOldPreset(settings, oldText);
+            Assert.That(settings.presetChoice, Is.EqualTo(expected));
+            Assert.That(settings.Preset().Name, Is.EqualTo(FlightSettings.PresetName(expected)));
+        }
+
+        [Test]
+        public void AnOldScenesUnknownPresetText_IsRefusedNamingIt_UntilAPresetIsPicked()
+        {
+            var settings = new FlightSettings();
+            LoadOldPreset(settings, "squash");
+            var e = Assert.Throws<ArgumentException>(() => settings.Preset())!;
+            Assert.That(e.ParamName, Is.EqualTo("preset"));
+            Assert.That(e.Message, Does.Contain("'squash'").And.Contain("drop-down"));
+            settings.presetChoice = PresetChoice.Soccer; // picked in the inspector
+            Assert.That(settings.Preset().Name, Is.EqualTo("soccer"));
+            ((ISerializationCallbackReceiver)settings).OnBeforeSerialize();
+            Assert.That(settings.preset, Is.EqualTo("soccer"));
         }
 
         [Test]
@@ -435,7 +476,7 @@ namespace MagnusBall.UnityScripts.Tests
             Refused("planePoint", f => { f.watchPlane = true; f.planePoint = new Vector3(float.NaN, 0f, 0f); });
             Refused("planeNormal", f => { f.watchPlane = true; f.planeNormal = Vector3.zero; });
             Refused("airDensity", f => f.settings.airDensity = -1f);
-            Refused("preset", f => f.settings.preset = "squash");
+            Refused("preset", f => LoadOldPreset(f.settings, "squash"));
             Refused("radius", f => { f.settings.customBall = true; f.settings.radius = 0f; });
         }
 
@@ -567,10 +608,7 @@ namespace MagnusBall.UnityScripts.Tests
         public void ThePreview_AndTheFlight_AllocateNothingPerFrame()
         {
             MagnusBallFlight flight = NewFlight(SurfaceChoice.Preset, watchNet: true);
-            var holder = new GameObject("line");
-            holder.AddComponent<LineRenderer>();
-            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
-            preview.flight = flight;
+            MagnusBallTrajectoryPreview preview = AddPreview(flight);
             int events = 0;
             flight.Bounced += e => events++;
             flight.PlaneCrossed += e => events++;

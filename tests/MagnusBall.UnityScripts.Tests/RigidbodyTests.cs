@@ -155,7 +155,7 @@ namespace MagnusBall.UnityScripts.Tests
             var holder = new GameObject("ball");
             holder.AddComponent<Rigidbody>();
             MagnusBallRigidbody aero = holder.AddComponent<MagnusBallRigidbody>();
-            aero.settings.preset = "squash";
+            LoadOldPreset(aero.settings, "squash"); // a scene saved before the drop-down, with a name no preset has
             var awake = Assert.Throws<System.Reflection.TargetInvocationException>(() => Call(aero, "Awake"))!;
             Assert.That(awake.InnerException, Is.InstanceOf<ArgumentException>());
             Assert.That(aero.enabled, Is.False, "disabled: Unity calls no FixedUpdate on it");
@@ -167,7 +167,7 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.Throws<ArgumentException>(() => aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero), "a launch says why");
 
             // Mended, a launch configures it and turns it on again: the physics steps act once more.
-            aero.settings.preset = "tennis";
+            aero.settings.presetChoice = PresetChoice.Tennis;
             aero.Launch(new Vector3(10f, 5f, 0f), Vector3.zero);
             Assert.That(aero.enabled, Is.True);
             Rigidbody body = holder.GetComponent<Rigidbody>();

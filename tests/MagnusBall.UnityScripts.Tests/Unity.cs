@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Reflection;
+using MagnusBall.Components;
 using MagnusBall.UnityStubs;
 using NUnit.Framework;
 using UnityEngine;
@@ -56,6 +57,24 @@ namespace MagnusBall.UnityScripts.Tests
             T component = holder.AddComponent<T>();
             Call(component, "Awake");
             return component;
+        }
+
+        /// <summary>A trajectory preview on a new GameObject with its LineRenderer, awake, following <paramref name="flight"/>.</summary>
+        public static MagnusBallTrajectoryPreview AddPreview(MagnusBallFlight flight)
+        {
+            var holder = new GameObject("line");
+            holder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(holder);
+            preview.flight = flight;
+            return preview;
+        }
+
+        /// <summary>What Unity does when it loads a component saved before 0.2.0 whose free-text preset field held <paramref name="oldName"/>.</summary>
+        public static void LoadOldPreset(FlightSettings settings, string oldName)
+        {
+            // [FormerlySerializedAs("preset")] puts the old text in the hidden field; then Unity calls OnAfterDeserialize.
+            typeof(FlightSettings).GetField("legacyPresetName", BindingFlags.Instance | BindingFlags.NonPublic)!.SetValue(settings, oldName);
+            ((ISerializationCallbackReceiver)settings).OnAfterDeserialize();
         }
 
         /// <summary>The repository root (the folder with MagnusBall.sln).</summary>

@@ -47,6 +47,18 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
+        public void TheManifest_DeclaresEveryUnityModuleTheComponentsUse()
+        {
+            // MagnusBallRigidbody uses Rigidbody, Collision and ForceMode: the Physics module's types. A project that
+            // disabled the module would not compile the package unless the manifest pulls the module in.
+            using JsonDocument manifest = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "package.json")));
+            JsonElement dependencies = manifest.RootElement.GetProperty("dependencies");
+            string components = string.Concat(Directory.EnumerateFiles(Path.Combine(Package, "Runtime", "Unity"), "*.cs").Select(File.ReadAllText));
+            Assert.That(components, Does.Contain("Rigidbody").And.Contain("ForceMode"), "the premise: the components use physics");
+            Assert.That(dependencies.GetProperty("com.unity.modules.physics").GetString(), Is.EqualTo("1.0.0"));
+        }
+
+        [Test]
         public void TheAssemblyDefinition_IsEngineFree_AndAutoReferenced()
         {
             using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Runtime", "MagnusBall.asmdef")));
@@ -161,6 +173,20 @@ namespace MagnusBall.UnityScripts.Tests
             Assert.That(references, Does.Contain("MagnusBall").And.Contain("UnityEngine.TestRunner"));
             Assert.That(root.GetProperty("precompiledReferences").EnumerateArray().Select(e => e.GetString()), Does.Contain("nunit.framework.dll"));
             Assert.That(root.GetProperty("defineConstraints").EnumerateArray().Select(e => e.GetString()), Does.Contain("UNITY_INCLUDE_TESTS"));
+        }
+
+        [Test]
+        public void TheEditModeTestAssembly_IsEditorOnly_AndSeesTheComponents()
+        {
+            using JsonDocument asmdef = JsonDocument.Parse(File.ReadAllText(Path.Combine(Package, "Tests", "Editor", "MagnusBall.Tests.Editor.asmdef")));
+            JsonElement root = asmdef.RootElement;
+            Assert.That(root.GetProperty("includePlatforms").EnumerateArray().Select(e => e.GetString()), Is.EqualTo(new[] { "Editor" }), "Edit Mode");
+            string[] references = root.GetProperty("references").EnumerateArray().Select(e => e.GetString()!).ToArray();
+            Assert.That(references, Does.Contain("MagnusBall").And.Contain("MagnusBall.Unity").And.Contain("UnityEngine.TestRunner").And.Contain("UnityEditor.TestRunner"));
+            Assert.That(root.GetProperty("precompiledReferences").EnumerateArray().Select(e => e.GetString()), Does.Contain("nunit.framework.dll"));
+            Assert.That(root.GetProperty("defineConstraints").EnumerateArray().Select(e => e.GetString()), Does.Contain("UNITY_INCLUDE_TESTS"));
+            Assert.That(root.GetProperty("autoReferenced").GetBoolean(), Is.False);
+            Assert.That(Directory.EnumerateFiles(Path.Combine(Package, "Tests", "Editor"), "*.cs"), Is.Not.Empty);
         }
 
         private static bool IsNotImported(string path)

@@ -32,6 +32,19 @@ namespace MagnusBall.UnityStubs
         /// <summary>The shared default material CreatePrimitive's renderers get.</summary>
         internal static readonly Material DefaultMaterial = new Material((Shader)null);
 
+        /// <summary>Every <c>Debug.LogWarning</c> and <c>Debug.LogError</c> so far, as "Warning: message" / "Error: message".</summary>
+        internal static readonly List<string> Logged = new List<string>();
+
+        /// <summary>Every line <c>Gizmos.DrawLine</c> drew so far, with the colour it was drawn in.</summary>
+        internal static readonly List<(Vector3 From, Vector3 To, Color Color)> GizmoLines = new List<(Vector3, Vector3, Color)>();
+
+        /// <summary>Keeps a warning or error (and prints it, as Unity's console shows it).</summary>
+        internal static void Log(string type, object message)
+        {
+            Logged.Add(type + ": " + message);
+            System.Console.WriteLine(type + ": " + message);
+        }
+
         /// <summary>Connects (or with null, disconnects) a keyboard: <c>Keyboard.current</c>.</summary>
         internal static void ConnectKeyboard(bool connected) => Keyboard.StubSetCurrent(connected ? new Keyboard() : null);
 

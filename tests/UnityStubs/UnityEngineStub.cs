@@ -15,7 +15,24 @@ namespace UnityEngine
     {
         internal bool StubDestroyed;
 
-        public string name { get; set; } = string.Empty;
+        private string _name = string.Empty;
+
+        // Unity: a component's name is its GameObject's (reading and writing it).
+        public string name
+        {
+            get => this is Component c && c.gameObject != null ? c.gameObject.name : _name;
+            set
+            {
+                if (this is Component c && c.gameObject != null)
+                {
+                    c.gameObject.name = value;
+                }
+                else
+                {
+                    _name = value;
+                }
+            }
+        }
 
         // Unity: a destroyed object compares equal to null and converts to false.
         public static bool operator ==(Object x, Object y) => Compare(x, y);
@@ -316,6 +333,8 @@ namespace UnityEngine
 
         public bool useWorldSpace { get; set; } = true;
 
+        public float widthMultiplier { get; set; } = 1;
+
         public void SetPosition(int index, Vector3 position) => _positions[Check(index)] = position;
 
         public Vector3 GetPosition(int index) => _positions[Check(index)];
@@ -335,6 +354,7 @@ namespace UnityEngine
 
     public sealed class Camera : Behaviour
     {
+        public float depth { get; set; }
     }
 
     public enum ForceMode
@@ -514,6 +534,12 @@ namespace UnityEngine
         }
 
         public static Color white => new Color(1, 1, 1, 1);
+
+        public static Color yellow => new Color(1F, 235F / 255F, 4F / 255F, 1F);
+
+        public static Color cyan => new Color(0F, 1F, 1F, 1F);
+
+        public static Color green => new Color(0F, 1F, 0F, 1F);
     }
 
     public enum KeyCode
@@ -546,6 +572,80 @@ namespace UnityEngine
     public class Debug
     {
         public static void Log(object message) => Console.WriteLine(message);
+
+        // The stub keeps warnings and errors for tests (StubControl.Logged) and prints them, as Unity's console shows them.
+        public static void LogWarning(object message, Object context) => StubControl.Log("Warning", message);
+
+        public static void LogError(object message, Object context) => StubControl.Log("Error", message);
+    }
+
+    // Unity draws these in the Scene view; the stub records each line (StubControl.GizmoLines) in the current colour.
+    public sealed class Gizmos
+    {
+        public static Color color { get; set; } = Color.white;
+
+        public static void DrawLine(Vector3 from, Vector3 to) => StubControl.GizmoLines.Add((from, to, color));
+    }
+
+    public partial struct Plane
+    {
+        private Vector3 m_Normal;
+        private float m_Distance;
+
+        // Unity: the normal is normalized; distance = -Dot(normal, inPoint).
+        public Plane(Vector3 inNormal, Vector3 inPoint)
+        {
+            double length = Math.Sqrt(inNormal.x * inNormal.x + inNormal.y * inNormal.y + inNormal.z * inNormal.z);
+            m_Normal = length > 1e-5 ? inNormal.StubTimes((float)(1 / length)) : Vector3.zero;
+            m_Distance = -(m_Normal.x * inPoint.x + m_Normal.y * inPoint.y + m_Normal.z * inPoint.z);
+        }
+
+        public Vector3 normal
+        {
+            get => m_Normal;
+            set => m_Normal = value;
+        }
+
+        public float distance
+        {
+            get => m_Distance;
+            set => m_Distance = value;
+        }
+
+        public float GetDistanceToPoint(Vector3 point) => m_Normal.x * point.x + m_Normal.y * point.y + m_Normal.z * point.z + m_Distance;
+    }
+
+    [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = false)]
+    public sealed class MinAttribute : PropertyAttribute
+    {
+        public readonly float min;
+
+        public MinAttribute(float min) => this.min = min;
+    }
+
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = false)]
+    public class HelpURLAttribute : Attribute
+    {
+        private readonly string m_Url;
+
+        public HelpURLAttribute(string url) => m_Url = url;
+
+        public virtual string URL => m_Url;
+    }
+
+    public sealed class HideInInspector : Attribute
+    {
+    }
+
+    public sealed class SerializeField : Attribute
+    {
+    }
+
+    public interface ISerializationCallbackReceiver
+    {
+        void OnBeforeSerialize();
+
+        void OnAfterDeserialize();
     }
 
     [AttributeUsage(AttributeTargets.Field | AttributeTargets.Property, Inherited = true, AllowMultiple = false)]

@@ -6,6 +6,7 @@ using MagnusBall.Integration;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;
 using UnityEngine;
+using UnityEngine.Events;
 
 namespace MagnusBall.Components
 {
@@ -36,10 +37,16 @@ namespace MagnusBall.Components
     /// <para>Events are raised from inside <c>Update</c> (or <c>FixedUpdate</c>), once each (every one: the event buffer
     /// holds any step's, and a frame with more is finished after they are raised), in time order,
     /// with their exact time and state (located inside the step; they may lie up to one fixed step after
-    /// what is drawn). Nothing allocates per frame after the launch.</para>
+    /// what is drawn). Each is raised twice over: the C# event (<see cref="Landed"/>, ...) first, then the inspector's
+    /// UnityEvent (<see cref="onLanded"/>, ...). Nothing allocates per frame after the launch.</para>
+    /// <para>Inspector edits take effect at once, also during Play (<c>OnValidate</c>): the next launch uses them, and a
+    /// ball in flight flies on under them from where it is. A value the launch would refuse is refused the same way and
+    /// reported once in the Console, naming the field; the previous settings stay in use. Selected, the component draws
+    /// the current arc, the ground and the watched plane in the Scene view.</para>
     /// </remarks>
     [AddComponentMenu("MagnusBall/Ball Flight")]
     [DisallowMultipleComponent]
+    [HelpURL(UnityFrame.ManualUrl + "#ball-flight")]
     public class MagnusBallFlight : MonoBehaviour
     {
         /// <summary>The ball, its aerodynamics, the air and the bounce.</summary>
@@ -52,10 +59,12 @@ namespace MagnusBall.Components
 
         /// <summary>The fixed step, s.</summary>
         [Tooltip("Fixed step, s. The flight is the same at any frame rate for a given step.")]
+        [Min(0.0001f)]
         public float fixedStep = 1f / 240f;
 
         /// <summary>Frame-time clamp, s: a longer frame (a hitch) is cut to this.</summary>
-        [Tooltip("Frame-time clamp, s: a longer frame (a hitch) is cut to this.")]
+        [Tooltip("Frame-time clamp, s: a longer frame (a hitch) is cut to this. At least the fixed step.")]
+        [Min(0.001f)]
         public float maxFrameDelta = (float)FixedStepDriver.DefaultMaxFrameDeltaSeconds;
 
         /// <summary>Step in Update (interpolated drawing) or in FixedUpdate.</summary>
@@ -81,6 +90,25 @@ namespace MagnusBall.Components
         [Tooltip("Turn the transform with the ball's spin.")]
         public bool rotateWithSpin = true;
 
+        /// <summary>Raised at every launch, after <see cref="Launched"/> (the ball is at its start).</summary>
+        [Header("Events (raised after the C# events of the same name)")]
+        public UnityEvent onLaunched = new UnityEvent();
+
+        /// <summary>Raised with <see cref="Landed"/>: the ball came down and, without a bounce model, the flight ended there.</summary>
+        public FlightEventUnityEvent onLanded = new FlightEventUnityEvent();
+
+        /// <summary>Raised with <see cref="Bounced"/>.</summary>
+        public FlightEventUnityEvent onBounced = new FlightEventUnityEvent();
+
+        /// <summary>Raised with <see cref="PlaneCrossed"/>: the ball's centre crossed the watched plane.</summary>
+        public FlightEventUnityEvent onPlaneCrossed = new FlightEventUnityEvent();
+
+        /// <summary>Raised with <see cref="ApexReached"/>.</summary>
+        public FlightEventUnityEvent onApex = new FlightEventUnityEvent();
+
+        /// <summary>Raised with <see cref="Stopped"/>: the ball came to rest.</summary>
+        public FlightEventUnityEvent onStopped = new FlightEventUnityEvent();
+
         private FlightEvent[] _events = new FlightEvent[16]; // grown at a launch to the driver's MaximumEventsPerStep: no event is lost
         private FlightModel? _model;
         private IIntegrator? _integrator;
@@ -92,6 +120,12 @@ namespace MagnusBall.Components
         private bool _flying;
         private FlightState _segmentStart;
         private int _segmentVersion;
+        private bool _configuredInCode; // Configure or Launch(start, model, ...) set the configuration: inspector edits do not replace it
+        private string? _reported; // the last inspector problem reported, so that each is reported once
+        private Vector3d[]? _gizmoPath;
+
+        /// <summary>The ball was launched (the state it starts from: on the ground plane if it was started just below it).</summary>
+        public event Action<FlightState>? Launched;
 
         /// <summary>The ball came down and, without a bounce model, the flight ended there.</summary>
         public event Action<FlightEvent>? Landed;
@@ -211,6 +245,7 @@ namespace MagnusBall.Components
                 : new FlightEventSet(up, ground);
             IIntegrator chosen = FlightSettings.Integrator(integrator);
             Set(model, chosen, fixedStep, events, bounce, maxFrameDelta);
+            _configuredInCode = false;
         }
 
         /// <summary>
@@ -229,6 +264,7 @@ namespace MagnusBall.Components
             double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds)
         {
             Set(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            _configuredInCode = true;
         }
 
         /// <summary>Launches the ball from the transform's position.</summary>
@@ -296,6 +332,7 @@ namespace MagnusBall.Components
             CheckConfiguration(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
             FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
             Assign(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            _configuredInCode = true;
             StartFlight(driver);
         }
 
@@ -317,7 +354,7 @@ namespace MagnusBall.Components
 
         // The arc starts, and the transform is put, where the driver starts: with a bounce model the flight core moves a start
         // on or below the court onto it (rolling), so that is not always the start given.
-        private void StartFlight(FixedStepDriver driver)
+        private void StartFlight(FixedStepDriver driver, bool announce = true)
         {
             FlightState from = driver.State;
             if (_events.Length < driver.MaximumEventsPerStep)
@@ -330,6 +367,106 @@ namespace MagnusBall.Components
             _segmentStart = from;
             _segmentVersion++;
             transform.position = UnityFrame.ToUnity(from.Position);
+            if (!announce)
+            {
+                return; // the same flight under new settings (OnValidate): not a launch
+            }
+
+            Launched?.Invoke(from);
+            if (_driver == driver)
+            {
+                onLaunched?.Invoke(); // not when a C# handler has relaunched or cancelled
+            }
+        }
+
+        /// <summary>
+        /// Unity calls this after an inspector edit (also during Play) and when the component is loaded: the inspector's
+        /// fields are checked and applied as <see cref="ApplySettings"/> applies them, and a ball in flight flies on under them
+        /// from its current state. A refused value is reported once with <c>Debug.LogError</c>, naming the field; the previous
+        /// settings stay. Nothing happens while a configuration given in code (<see cref="Configure"/>) is in use.
+        /// </summary>
+        private void OnValidate()
+        {
+            if (_configuredInCode)
+            {
+                return;
+            }
+
+            try
+            {
+                ApplySettings();
+                _reported = null;
+                if (_flying && _driver != null && !_driver.IsFinished)
+                {
+                    StartFlight(Build(_driver.State, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta), announce: false);
+                }
+            }
+            catch (ArgumentException e)
+            {
+                UnityFrame.ReportRefusal(ref _reported, this, e);
+            }
+        }
+
+        /// <summary>
+        /// Unity calls this when the object is selected in the Scene view: the current arc (from the launch or the latest bounce to
+        /// the next touch of the ground; nothing before the first launch) in yellow, the ground plane around the ball in green, the
+        /// watched plane in cyan. Nothing is drawn while the inspector's settings are refused.
+        /// </summary>
+        private void OnDrawGizmosSelected()
+        {
+            try
+            {
+                EnsureConfigured();
+            }
+            catch (ArgumentException)
+            {
+                return; // OnValidate reports it
+            }
+
+            Vector3d centre = UnityFrame.ToLibrary(transform.position);
+            const double halfSize = 2; // m: the patch of each plane drawn around the ball
+            if (_eventSet!.Ground is Plane ground)
+            {
+                Gizmos.color = Color.green;
+                DrawPlanePatch(new Plane(ground.Project(centre) - ground.Normal * _model!.Ball.Radius, ground.Normal), centre, halfSize);
+            }
+
+            Gizmos.color = Color.cyan;
+            foreach (Plane watched in _eventSet.Planes)
+            {
+                DrawPlanePatch(watched, centre, halfSize);
+            }
+
+            if (_driver == null)
+            {
+                return;
+            }
+
+            _gizmoPath ??= new Vector3d[1024];
+            var predictor = new TrajectoryPredictor(_model!, _integrator!, _fixedStep, _eventSet);
+            int count = predictor.Predict(_segmentStart, 10, _gizmoPath).SampleCount;
+            Gizmos.color = Color.yellow;
+            for (int i = 1; i < count; i++)
+            {
+                Gizmos.DrawLine(UnityFrame.ToUnity(_gizmoPath[i - 1]), UnityFrame.ToUnity(_gizmoPath[i]));
+            }
+        }
+
+        // A square of the plane, 2 halfSize across, centred on the foot of `near` on it, with its two diagonals.
+        private static void DrawPlanePatch(in Plane plane, Vector3d near, double halfSize)
+        {
+            Vector3d n = plane.Normal.NormalizedOrZero();
+            Vector3d any = Math.Abs(n.Y) < 0.9 ? UnityFrame.Up : new Vector3d(1, 0, 0);
+            Vector3d u = Vector3d.Cross(n, any).NormalizedOrZero() * halfSize;
+            Vector3d v = Vector3d.Cross(n, u).NormalizedOrZero() * halfSize;
+            Vector3d c = plane.Project(near);
+            Vector3 a = UnityFrame.ToUnity(c + u + v), b = UnityFrame.ToUnity(c + u - v), d = UnityFrame.ToUnity(c - u - v), e = UnityFrame.ToUnity(c - u + v);
+            Gizmos.DrawLine(a, b);
+            Gizmos.DrawLine(b, d);
+            Gizmos.DrawLine(d, e);
+            Gizmos.DrawLine(e, a);
+            Gizmos.DrawLine(a, d);
+            Gizmos.DrawLine(b, e);
         }
 
         /// <summary>How far below the ground's touchdown plane a launch may start and be lifted onto it, m (0.1 mm: a float position meant to be on it).</summary>
@@ -516,22 +653,33 @@ namespace MagnusBall.Components
             switch (e.Kind)
             {
                 case FlightEventKinds.Landing:
-                    Landed?.Invoke(e);
+                    Raise(Landed, onLanded, e);
                     break;
                 case FlightEventKinds.Bounce:
                     _segmentStart = e.After;
                     _segmentVersion++;
-                    Bounced?.Invoke(e);
+                    Raise(Bounced, onBounced, e);
                     break;
                 case FlightEventKinds.PlaneCrossing:
-                    PlaneCrossed?.Invoke(e);
+                    Raise(PlaneCrossed, onPlaneCrossed, e);
                     break;
                 case FlightEventKinds.Apex:
-                    ApexReached?.Invoke(e);
+                    Raise(ApexReached, onApex, e);
                     break;
                 case FlightEventKinds.Rest:
-                    Stopped?.Invoke(e);
+                    Raise(Stopped, onStopped, e);
                     break;
+            }
+        }
+
+        // The C# event, then the UnityEvent, unless a C# handler relaunched or cancelled the flight.
+        private void Raise(Action<FlightEvent>? csharp, FlightEventUnityEvent? unity, in FlightEvent e)
+        {
+            FixedStepDriver? driver = _driver;
+            csharp?.Invoke(e);
+            if (_driver == driver)
+            {
+                unity?.Invoke(e);
             }
         }
 

@@ -44,10 +44,15 @@ namespace MagnusBall.Components
     /// <para><b>Accuracy.</b> PhysX integrates semi-implicitly at <c>Time.fixedDeltaTime</c>; docs/unity.md
     /// gives the landing error of this path against RK4 at 1/240 s (centimetres at 0.02 s). For the exact
     /// path use <see cref="MagnusBallFlight"/>.</para>
+    /// <para><b>Inspector edits</b> take effect at once, also during Play (<c>OnValidate</c>): the next physics step uses the
+    /// new settings. A refused value is reported once in the Console, naming the field; the previous settings stay.</para>
+    /// <para><b>Dependency.</b> Rigidbody, Collision and ForceMode are the Physics module's (com.unity.modules.physics, which
+    /// the package declares).</para>
     /// </remarks>
     [AddComponentMenu("MagnusBall/Rigidbody Aerodynamics")]
     [RequireComponent(typeof(Rigidbody))]
     [DisallowMultipleComponent]
+    [HelpURL(UnityFrame.ManualUrl + "#rigidbody-aerodynamics")]
     public class MagnusBallRigidbody : MonoBehaviour
     {
         /// <summary>The ball, its aerodynamics, the air and the bounce used at contacts.</summary>
@@ -67,6 +72,8 @@ namespace MagnusBall.Components
         private Vector3d _spin;
         private Vector3d _velocityBefore;
         private bool _configurationFailed; // the inspector's settings were refused: no retry (and no exception) every physics step
+        private bool _configuredInCode; // Configure gave the model: inspector edits do not replace it
+        private string? _reported; // the last inspector problem reported, so that each is reported once
 
         /// <summary>The ball's spin, rad/s, about world axes (left-hand rule); integrated here, not by PhysX.</summary>
         public Vector3d Spin => _spin;
@@ -91,6 +98,40 @@ namespace MagnusBall.Components
         public void Configure(FlightModel model, IBounceModel? bounce)
         {
             Adopt(model ?? throw new ArgumentNullException(nameof(model)), bounce);
+            _configuredInCode = true;
+        }
+
+        /// <summary>
+        /// Unity calls this after an inspector edit (also during Play) and when the component is loaded: the settings are
+        /// checked, and once the component has taken a model (at Awake) the new one replaces it from the next physics step. A
+        /// refused value is reported once with <c>Debug.LogError</c>, naming the field; the previous settings stay. Nothing
+        /// happens while a model given to <see cref="Configure"/> is in use.
+        /// </summary>
+        private void OnValidate()
+        {
+            if (_configuredInCode)
+            {
+                return;
+            }
+
+            FlightModel model;
+            IBounceModel? bounce;
+            try
+            {
+                model = settings.CreateModel(Gravity.YUp);
+                bounce = settings.CreateBounce();
+            }
+            catch (ArgumentException e)
+            {
+                UnityFrame.ReportRefusal(ref _reported, this, e);
+                return;
+            }
+
+            _reported = null;
+            if (_model != null || _configurationFailed)
+            {
+                Adopt(model, bounce); // taken at Awake already (or refused there): the edit replaces it
+            }
         }
 
         /// <summary>Sets the spin, rad/s (left-hand rule), for example after a racket hit.</summary>

@@ -23,6 +23,7 @@ namespace MagnusBall.Components
     /// </remarks>
     [AddComponentMenu("MagnusBall/Trajectory Preview")]
     [RequireComponent(typeof(LineRenderer))]
+    [HelpURL(UnityFrame.ManualUrl + "#trajectory-preview")]
     public class MagnusBallTrajectoryPreview : MonoBehaviour
     {
         /// <summary>The ball whose model is used and whose arcs are followed.</summary>
@@ -34,10 +35,11 @@ namespace MagnusBall.Components
         public bool followFlight = true;
 
         /// <summary>
-        /// Most points drawn (one per fixed step, plus the landing), read at Awake: an arc longer than this many fixed steps is
+        /// Most points drawn (one per fixed step, plus the landing), read at Awake and at each inspector edit: an arc longer than this many fixed steps is
         /// drawn only to its last point (2048 points are 8.5 s at 1/240 s, 2 s at 1/1000 s).
         /// </summary>
-        [Tooltip("Most points drawn (one per fixed step), read at Awake; a longer arc is cut short.")]
+        [Tooltip("Most points drawn (one per fixed step); a longer arc is cut short.")]
+        [Min(2)]
         public int maxPoints = 2048;
 
         /// <summary>
@@ -45,6 +47,7 @@ namespace MagnusBall.Components
         /// call <see cref="Show"/> again, or the next launch or bounce redraws).
         /// </summary>
         [Tooltip("Longest prediction, s.")]
+        [Min(0.01f)]
         public float maxDuration = 10f;
 
         private LineRenderer? _line;
@@ -101,6 +104,31 @@ namespace MagnusBall.Components
             int n = Math.Max(2, maxPoints);
             _path = new Vector3d[n];
             _points = new Vector3[n];
+        }
+
+        /// <summary>
+        /// Unity calls this after an inspector edit (also during Play): the line is predicted again at the next
+        /// <c>LateUpdate</c> with the new <see cref="maxDuration"/> and <see cref="maxPoints"/> (once the component is awake).
+        /// </summary>
+        private void OnValidate()
+        {
+            if (_line == null)
+            {
+                return; // not awake yet: Awake reads the fields
+            }
+
+            int n = Math.Max(2, maxPoints);
+            if (n != _path.Length)
+            {
+                _path = new Vector3d[n];
+                _points = new Vector3[n];
+            }
+
+            if (_hasDrawn)
+            {
+                _followedVersion = -1; // the followed arc is drawn again
+                _hasDrawn = false; // and so is a requested launch
+            }
         }
 
         private void LateUpdate()

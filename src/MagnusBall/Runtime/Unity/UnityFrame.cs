@@ -1,4 +1,5 @@
 #nullable enable
+using System;
 using UnityEngine;
 
 namespace MagnusBall.Components
@@ -31,6 +32,23 @@ namespace MagnusBall.Components
         /// <summary>A library vector as a Unity vector (same components, rounded to float).</summary>
         /// <param name="v">Library vector.</param>
         public static Vector3 ToUnity(Vector3d v) => new Vector3((float)v.X, (float)v.Y, (float)v.Z);
+
+        /// <summary>The package's manual (the components' [HelpURL] pages point into it).</summary>
+        internal const string ManualUrl = "https://github.com/magnusball/MagnusBall/blob/main/src/MagnusBall/Documentation~/MagnusBall.md";
+
+        /// <summary>
+        /// Reports an inspector value a component refused (OnValidate) with <c>Debug.LogError</c>, naming the field, unless it is
+        /// the problem reported last (<paramref name="last"/>): each problem once, not at every edit or load.
+        /// </summary>
+        internal static void ReportRefusal(ref string? last, Component component, ArgumentException refusal)
+        {
+            string message = $"{component.GetType().Name} on '{component.name}': {refusal.ParamName} refused: {refusal.Message} The previous settings stay in use.";
+            if (message != last)
+            {
+                last = message;
+                Debug.LogError(message, component);
+            }
+        }
 
         /// <summary>Unity's up, +y: the opposite of <see cref="Gravity.YUp"/>.</summary>
         public static Vector3d Up => new Vector3d(0, 1, 0);

@@ -126,10 +126,13 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         [Tooltip("C_D, the drag coefficient (thesis: 0.55).")]
         public float dragCoefficient = 0.55f;
         [Tooltip("kg")]
+        [Min(0.0001f)]
         public float mass = 0.057f;
         [Tooltip("m")]
+        [Min(0.0001f)]
         public float radius = 0.033f;
         [Tooltip("kg/m^3 (thesis: 1.29, 'pure air'; Cross 2011: 1.21)")]
+        [Min(0f)]
         public float airDensity = 1.21f;
         [Tooltip("The court the ball bounces on (Cross's slide/grip bounce), or None to stop at the first landing.")]
         public CourtSurface surface = CourtSurface.Hard;
@@ -137,8 +140,10 @@ namespace MagnusBall.Samples.TennisScene.Scripts
         [Header("Stepping")]
         public IntegratorChoice integrator = IntegratorChoice.RungeKutta4;
         [Tooltip("Fixed step, s. The flight is the same at any frame rate for a given step.")]
+        [Min(0.0001f)]
         public float fixedStep = 1f / 240f;
         [Tooltip("Frame-time clamp, s: a longer frame (a hitch) is cut to this.")]
+        [Min(0.001f)]
         public float maxFrameDelta = 0.25f;
         [Tooltip("Step from FixedUpdate with Time.fixedDeltaTime instead of from Update with Time.deltaTime.")]
         public bool stepInFixedUpdate = false;
