@@ -2,7 +2,6 @@
 // rates from FlightKernel.Rates.cs, the stage sums formed as the tableau's Combine forms them. The kernel's entry points
 // are in FlightKernel.cs.
 using System.Runtime.CompilerServices;
-using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using DP = MagnusBall.Integration.DormandPrince54;
 

@@ -1,11 +1,6 @@
 // BallBatch, part: the vector lanes (StepVector), RK4 on Vector<double>.Count balls at once with System.Numerics vectors;
 // a lane whose step may hold a landing is finished through the scalar path's Finish. The batch itself and the scalar lanes are in BallBatch.cs.
-using System;
 using System.Numerics;
-using System.Runtime.CompilerServices;
-using MagnusBall.Aerodynamics;
-using MagnusBall.Flight;
-using MagnusBall.Integration;
 
 namespace MagnusBall.Batch
 {

@@ -3,7 +3,6 @@
 // piece loop it runs in is Advance (FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
 using System;
 using System.Runtime.CompilerServices;
-using MagnusBall.Contact;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Flight

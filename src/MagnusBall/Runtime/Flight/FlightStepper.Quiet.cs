@@ -3,7 +3,6 @@
 // (Finish, in FlightStepper.cs). The main path is TryStep in FlightStepper.cs.
 using System;
 using System.Runtime.CompilerServices;
-using MagnusBall.Contact;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Flight

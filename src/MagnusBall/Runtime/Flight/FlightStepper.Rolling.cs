@@ -1,9 +1,6 @@
 // FlightStepper, part: rolling on a contact surface (StartRolling, Roll): Heun's steps of the rolling ball under slope,
 // rolling resistance and the air, and the stop where it comes to rest (StopWithin). Reached from the general step
 // (Advance, FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
-using System;
-using System.Runtime.CompilerServices;
-using MagnusBall.Contact;
 using MagnusBall.Integration;
 
 namespace MagnusBall.Flight

@@ -2,8 +2,6 @@
 // aim, and where it fails a search over the azimuth with an elevation solve at each. The public entry point,
 // AnglesToReach, is in AimSolver.cs.
 using System;
-using MagnusBall.Flight;
-using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
 {

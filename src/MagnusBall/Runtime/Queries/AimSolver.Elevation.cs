@@ -2,8 +2,6 @@
 // root finder every one-variable solve uses (SolveFromGuess: secant steps from the vacuum's guess to a bracket, then
 // Illinois regula falsi). The public entry points are in AimSolver.cs.
 using System;
-using MagnusBall.Flight;
-using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
 {

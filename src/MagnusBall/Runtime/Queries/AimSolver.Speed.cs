@@ -2,8 +2,6 @@
 // elevation and azimuth, by SolveFromGuess (AimSolver.Elevation.cs), then a scan. The public entry point, SpeedToReach, is
 // in AimSolver.cs.
 using System;
-using MagnusBall.Flight;
-using MagnusBall.Integration;
 
 namespace MagnusBall.Queries
 {
