@@ -4,7 +4,6 @@
 // kernel's entry points are in FlightKernel.cs.
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
-using DP = MagnusBall.Integration.DormandPrince54;
 
 namespace MagnusBall
 {

@@ -4,7 +4,6 @@
 // FlightKernel.Rates.cs.
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
-using DP = MagnusBall.Integration.DormandPrince54;
 
 namespace MagnusBall
 {

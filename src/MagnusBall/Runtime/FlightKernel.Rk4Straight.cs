@@ -3,7 +3,6 @@
 // same bits as the general shape. Rk4 (FlightKernel.Rk4.cs) picks them; the entry points are in FlightKernel.cs.
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
-using DP = MagnusBall.Integration.DormandPrince54;
 
 namespace MagnusBall
 {

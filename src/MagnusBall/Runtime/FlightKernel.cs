@@ -8,7 +8,6 @@
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
-using DP = MagnusBall.Integration.DormandPrince54;
 
 namespace MagnusBall
 {
