@@ -1,3 +1,7 @@
+// AimSolver: its public surface (the solves MinimumElevationToClear, ElevationToReach, AnglesToReach, SpeedToReach, each
+// checking its arguments and calling its Core), the target frame, and the shared ends of a solve. The solves themselves:
+// AimSolver.Elevation.cs (the elevation solves and the bracket-and-refine root finder every one-variable solve uses),
+// AimSolver.Speed.cs (the speed solve), AimSolver.Angles.cs (both angles at once: Broyden, then an azimuth search).
 using System;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
@@ -42,7 +46,7 @@ namespace MagnusBall.Queries
     /// Miss is the radius.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
-    public sealed class AimSolver
+    public sealed partial class AimSolver
     {
         /// <summary>Elevation and azimuth are refined to this tolerance, rad (1e-8 rad = 5.7e-7 degree).</summary>
         public const double AngleTolerance = 1e-8;
@@ -253,49 +257,6 @@ namespace MagnusBall.Queries
             in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height) =>
             Finish(MinimumElevationToClearCore(position, speed, azimuthRadians, spin, plane, height));
 
-        private AimSolution MinimumElevationToClearCore(
-            in Vector3d position, double speed, double azimuthRadians, in LaunchSpin spin, in Plane plane, double height)
-        {
-            Require.Finite(position, nameof(position));
-            Require.Positive(speed, nameof(speed));
-            Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            Require.Finite(height, nameof(height));
-            if (plane.Normal.LengthSquared == 0)
-            {
-                throw new ArgumentException("plane must have a non-zero normal.", nameof(plane));
-            }
-
-            Vector3d up = Model.Up;
-            if (Math.Abs(Vector3d.Dot(plane.Normal, up)) > 1 - 1e-9)
-            {
-                throw new ArgumentException("plane must not be horizontal: clearing is measured by height at the crossing.", nameof(plane));
-            }
-
-            double side = plane.SignedDistance(position);
-            if (!(side < 0))
-            {
-                throw new ArgumentException(
-                    $"position must be on the negative side of plane (signed distance < 0 m), from where the ball crosses it along its normal; got {Require.Format(side)} m. Flip the plane (Plane.Flipped) to clear it the other way.",
-                    nameof(position));
-            }
-
-            Vector3d required = Ground.Point + Ground.Normal * height;
-            if (!required.IsFinite)
-            {
-                throw new ArgumentOutOfRangeException(
-                    nameof(height), height,
-                    $"height must keep the required point, the ground's point plus its normal times the height, within the range of a double; got {Require.Format(height)} m from a ground point {Ground.Point}.");
-            }
-
-            var frame = new LaunchFrame(up, plane.Normal);
-            var goal = new AimGoal(position, frame, spin, plane, required, missToTarget: false);
-            // The vacuum guess: the horizontal path to the plane along the launch's horizontal direction.
-            double along = Vector3d.Dot(plane.Normal, frame.Direction(0, azimuthRadians));
-            double path = along > 0 ? -side / along : double.NaN;
-            _trials.StartSolve();
-            return SolveElevation(goal, speed, azimuthRadians, path, double.NaN, out _);
-        }
-
         /// <summary>
         /// (b) The lowest elevation at which a ball launched from <paramref name="position"/> at
         /// <paramref name="speed"/> toward <paramref name="target"/> (turned by <paramref name="azimuthRadians"/>)
@@ -311,16 +272,6 @@ namespace MagnusBall.Queries
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0) =>
             Finish(ElevationToReachCore(position, speed, spin, target, azimuthRadians));
-
-        private AimSolution ElevationToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians)
-        {
-            CheckTarget(position, target);
-            Require.Positive(speed, nameof(speed));
-            Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            return SolveElevation(goal, speed, azimuthRadians, PathToTarget(goal, azimuthRadians), double.NaN, out _);
-        }
 
         /// <summary>
         /// (b') The elevation and azimuth at which a ball launched from <paramref name="position"/> at
@@ -342,22 +293,6 @@ namespace MagnusBall.Queries
         public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45) =>
             Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees));
 
-        private AimSolution AnglesToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees)
-        {
-            CheckTarget(position, target);
-            Require.Positive(speed, nameof(speed));
-            Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
-            double limit = maximumAzimuthDegrees * (Math.PI / 180);
-            AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            if (TryBothAngles(goal, speed, limit, out AimSolution solved))
-            {
-                return solved;
-            }
-
-            return AnglesByAzimuthSearch(goal, speed, limit);
-        }
-
         /// <summary>
         /// (c) The lowest speed at which a ball launched from <paramref name="position"/> at the given elevation
         /// and azimuth (from the direction to the target) passes the target's plane at the target's height.
@@ -372,64 +307,6 @@ namespace MagnusBall.Queries
         public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target) =>
             Finish(SpeedToReachCore(position, elevationRadians, azimuthRadians, spin, target));
 
-        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
-        {
-            CheckTarget(position, target);
-            Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
-            Require.Finite(azimuthRadians, nameof(azimuthRadians));
-            AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthRadians);
-            double scan = 0.01 * MaximumSpeed;
-
-            // The fast path: from the vacuum's speed, within [1 %, 100 %] of the maximum (below, the scan's crawl rule).
-            double guess = VacuumAim.Speed(_gravity, elevationRadians, PathToTarget(goal, azimuthRadians), goal.Rise, out double slope);
-            if (SolveFromGuess(ref margin, guess, slope, scan, MaximumSpeed, 0.25 * MaximumSpeed, SpeedTolerance, out _, out AimSolution atRoot))
-            {
-                return WithFlights(atRoot);
-            }
-
-            // The scan: upward in speed from 1 % of the maximum in 1 % steps.
-            double lo = scan, flo = margin.Evaluate(lo, out AimSolution atLo);
-            if (flo >= 0)
-            {
-                // Already there at the lowest speed tried: refine between a crawl and it.
-                double crawl = 1e-3 * scan;
-                double fc = margin.Evaluate(crawl, out AimSolution atCrawl);
-                if (fc >= 0)
-                {
-                    return WithFlights(atCrawl);
-                }
-
-                AimRoots.Refine(ref margin, crawl, fc, lo, flo, ref atLo, SpeedTolerance, out _);
-                return WithFlights(atLo);
-            }
-
-            // Bounded: about 100 passes (1 % steps up to the maximum speed; MaximumSpeedScanPasses caps the count), by count too: a maximum speed below about
-            // 1e-322 m/s makes the 1 % step round to 0 (the loop stood still, for ever), and one near double.MaxValue
-            // makes the end test's MaximumSpeed (1 + 1e-12) infinite.
-            int passes = 0;
-            double last = Math.Min(double.MaxValue, MaximumSpeed * (1 + 1e-12)); // no trial at an infinite speed
-            for (double v = lo + scan; v <= last && passes < MaximumSpeedScanPasses; v += scan, passes++)
-            {
-                double fv = margin.Evaluate(v, out AimSolution atV);
-                if (fv >= 0)
-                {
-                    AimRoots.Refine(ref margin, lo, flo, v, fv, ref atV, SpeedTolerance, out _);
-                    return WithFlights(atV);
-                }
-
-                lo = v;
-                flo = fv;
-            }
-
-            return UnreachableSpeed(elevationRadians, azimuthRadians);
-        }
-
-        private AimSolution UnreachableSpeed(double elevationRadians, double azimuthRadians) =>
-            new AimSolution(
-                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
-
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
 
@@ -442,285 +319,6 @@ namespace MagnusBall.Queries
 
         private AimSolution WithFlights(in AimSolution s, AimStatus? status = null) =>
             new AimSolution(status ?? s.Status, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, _trials.Flights);
-
-        /// <summary>
-        /// The fast path of a one-parameter solve: secant steps from the vacuum's guess to the root. With adaptive trials,
-        /// first on coarse trials to <see cref="CoarseFactor"/> times the tolerance, then moved onto the full trials
-        /// (<see cref="AimRoots.TryPolish"/>, usually two trials); where that does not settle, secant steps on the full trials.
-        /// </summary>
-        private bool SolveFromGuess<T>(
-            ref T margin, double guess, double slope, double min, double max, double stride, double tolerance, out double root, out AimSolution atRoot)
-            where T : struct, IAimMargin
-        {
-            if (_trials.HasCoarse)
-            {
-                _trials.Coarse = true;
-                bool coarse = AimRoots.TrySecant(ref margin, guess, slope, min, max, stride, CoarseFactor * tolerance, out double near, out _, out double nearSlope);
-                _trials.Coarse = false;
-                if (coarse)
-                {
-                    if (AimRoots.TryPolish(ref margin, near, nearSlope, min, max, tolerance, out root, out atRoot))
-                    {
-                        return true;
-                    }
-
-                    guess = near;
-                    slope = nearSlope;
-                }
-            }
-
-            return AimRoots.TrySecant(ref margin, guess, slope, min, max, stride, tolerance, out root, out atRoot, out _);
-        }
-
-        /// <summary>
-        /// The lowest elevation whose trial margin is &gt;= 0, at a fixed speed and azimuth: near a hint (the azimuth
-        /// search's last elevation) by a small bracket; else the lower limit when it works, the fast path from the
-        /// vacuum's lower elevation over <paramref name="path"/> metres, or the scan upward from the lower limit.
-        /// </summary>
-        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
-        {
-            var margin = new ElevationMargin(_trials, goal, speed, azimuth);
-            double lo, flo, hi, fhi;
-            AimSolution atLo, atHi;
-            if (double.IsFinite(hint))
-            {
-                // Near a previous solution (the azimuth search moves it a little): try a small bracket first.
-                double width = ElevationScanRadians;
-                lo = Math.Max(MinimumElevationRadians, hint - width);
-                hi = Math.Min(MaximumElevationRadians, hint + width);
-                flo = margin.Evaluate(lo, out _);
-                if (flo < 0)
-                {
-                    fhi = margin.Evaluate(hi, out atHi);
-                    if (fhi >= 0)
-                    {
-                        elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
-                        return WithFlights(atHi);
-                    }
-                }
-            }
-
-            lo = MinimumElevationRadians;
-            flo = margin.Evaluate(lo, out atLo);
-            if (flo >= 0)
-            {
-                // Even the lowest elevation tried does it: report that limit.
-                elevation = lo;
-                return WithFlights(atLo);
-            }
-
-            double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
-            if (SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
-                    out elevation, out AimSolution atRoot))
-            {
-                return WithFlights(atRoot);
-            }
-
-            // The scan: bounded by MaximumScanTrials (the constructor checks the scan width).
-            for (int i = 1; ; i++)
-            {
-                hi = Math.Min(MaximumElevationRadians, MinimumElevationRadians + i * ElevationScanRadians);
-                fhi = margin.Evaluate(hi, out atHi);
-                if (fhi >= 0)
-                {
-                    elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
-                    return WithFlights(atHi);
-                }
-
-                if (hi >= MaximumElevationRadians)
-                {
-                    break;
-                }
-
-                lo = hi;
-                flo = fhi;
-            }
-
-            elevation = double.NaN;
-            return Unreachable(speed, azimuth);
-        }
-
-        /// <summary>
-        /// Both angles at once: Broyden's method on r = (height margin at the target plane, sideways miss) over
-        /// x = (elevation, azimuth), from the vacuum's lower elevation and azimuth 0 with the vacuum's Jacobian
-        /// (diag(d height / d elevation, distance)). Converged when the next step is within <see cref="AngleTolerance"/>
-        /// in both angles; accepted only on the drive side (the height grows with elevation), with the lower limit not
-        /// working (else the lower limit is the answer, as the fallback finds) and within the limits.
-        /// </summary>
-        private bool TryBothAngles(in AimGoal goal, double speed, double azimuthLimit, out AimSolution solved)
-        {
-            solved = default;
-            double distance = Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward);
-            double e = VacuumAim.LowElevation(_gravity, speed, distance, goal.Rise, out double slope);
-            if (double.IsNaN(e) || !(slope > 0))
-            {
-                return false;
-            }
-
-            // The lower limit, at the azimuth toward the target: where it works, the fallback returns it.
-            if (!(_trials.Margin(goal, speed, MinimumElevationRadians, 0, out _) < 0))
-            {
-                return false;
-            }
-
-            _trials.Coarse = _trials.HasCoarse;
-            bool found = Broyden(goal, speed, azimuthLimit, e, slope, distance, out solved);
-            _trials.Coarse = false;
-            return found;
-        }
-
-        // TryBothAngles's iteration: with adaptive trials first on coarse trials to CoarseFactor times the tolerance, then on
-        // the full trials (the first full trial keeps the Jacobian as it is: the change of residual from a coarse to a full
-        // trial is the two trials' difference, not the step's effect).
-        private bool Broyden(in AimGoal goal, double speed, double azimuthLimit, double e, double slope, double distance, out AimSolution solved)
-        {
-            solved = default;
-            double az = 0;
-            double j11 = slope, j12 = 0, j21 = 0, j22 = distance;
-            double r1 = 0, r2 = 0, dx1 = 0, dx2 = 0;
-            bool update = false;
-            for (int k = 0; k < AimRoots.MaximumBroydenSteps; k++)
-            {
-                if (e < MinimumElevationRadians || e > MaximumElevationRadians || Math.Abs(az) > azimuthLimit)
-                {
-                    return false;
-                }
-
-                double m = _trials.Margin(goal, speed, e, az, out AimSolution s);
-                if (!double.IsFinite(m))
-                {
-                    return false;
-                }
-
-                double lateral = Vector3d.DotOfDifference(s.Arrival.Position, goal.Target, goal.Frame.Side);
-                if (update)
-                {
-                    // Broyden's update with the step taken and the change of the residual.
-                    double y1 = m - r1 - (j11 * dx1 + j12 * dx2), y2 = lateral - r2 - (j21 * dx1 + j22 * dx2);
-                    double dd = dx1 * dx1 + dx2 * dx2;
-                    j11 += y1 * dx1 / dd; j12 += y1 * dx2 / dd; j21 += y2 * dx1 / dd; j22 += y2 * dx2 / dd;
-                }
-
-                update = true;
-                r1 = m;
-                r2 = lateral;
-                double determinant = j11 * j22 - j12 * j21;
-                if (!(Math.Abs(determinant) > 0) || !double.IsFinite(determinant))
-                {
-                    return false;
-                }
-
-                dx1 = -(r1 * j22 - r2 * j12) / determinant;
-                dx2 = -(j11 * r2 - j21 * r1) / determinant;
-                if (_trials.Coarse && Math.Abs(dx1) <= CoarseFactor * AngleTolerance && Math.Abs(dx2) <= CoarseFactor * AngleTolerance)
-                {
-                    _trials.Coarse = false;
-                    update = false;
-                }
-                else if (Math.Abs(dx1) <= AngleTolerance && Math.Abs(dx2) <= AngleTolerance)
-                {
-                    // Converged at this trial (it is within the tolerance of the root), on the drive side, having arrived.
-                    if (!(j11 > 0) || !(s.Miss < ConvergedMiss))
-                    {
-                        return false;
-                    }
-
-                    solved = WithFlights(s, AimStatus.Solved);
-                    return true;
-                }
-
-                double largest = Math.Max(Math.Abs(dx1), Math.Abs(dx2));
-                if (largest > AngleStride)
-                {
-                    dx1 *= AngleStride / largest;
-                    dx2 *= AngleStride / largest;
-                }
-
-                e += dx1;
-                az += dx2;
-            }
-
-            return false;
-        }
-
-        /// <summary>The fallback of <see cref="AnglesToReach"/>: the azimuth refined on the sideways miss, the elevation solved for each.</summary>
-        private AimSolution AnglesByAzimuthSearch(in AimGoal goal, double speed, double limit)
-        {
-            var lateral = new AzimuthMargin(this, goal, speed);
-            double a0 = 0;
-            double f0 = lateral.Evaluate(a0, out AimSolution s0);
-            if (double.IsNaN(f0))
-            {
-                return Unreachable(speed, a0);
-            }
-
-            if (f0 == 0)
-            {
-                return WithFlights(s0);
-            }
-
-            // The lateral miss grows with azimuth (about distance x azimuth): step toward zero by that estimate,
-            // widening until the sign changes.
-            double distance = Math.Max(1e-3, Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward));
-            double direction = f0 > 0 ? -1 : 1;
-            double stride = Math.Min(limit, Math.Max(Math.Abs(f0) / distance * 1.5, 1e-3));
-            double a1 = a0, f1 = f0;
-            AimSolution s1 = s0;
-            // Bounded: the stride is at least 1e-3 rad and the azimuth at most the limit (<= 90 degrees), so at most
-            // about 1,600 passes before the limit is reached.
-            while (true)
-            {
-                double next = a1 + direction * stride;
-                if (Math.Abs(next) > limit)
-                {
-                    next = direction * limit;
-                }
-
-                double fn = lateral.Evaluate(next, out AimSolution sn);
-                if (double.IsNaN(fn))
-                {
-                    return Unreachable(speed, next);
-                }
-
-                if (Math.Sign(fn) != Math.Sign(f0) || fn == 0)
-                {
-                    a0 = a1;
-                    f0 = f1;
-                    s0 = s1;
-                    a1 = next;
-                    f1 = fn;
-                    s1 = sn;
-                    break;
-                }
-
-                if (Math.Abs(next) >= limit)
-                {
-                    return Unreachable(speed, next);
-                }
-
-                a1 = next;
-                f1 = fn;
-                s1 = sn;
-                stride *= 2;
-            }
-
-            // Refine between the negative end and the non-negative end.
-            bool failed;
-            AimSolution atB;
-            double root;
-            if (f0 < 0)
-            {
-                atB = s1;
-                root = AimRoots.Refine(ref lateral, a0, f0, a1, f1, ref atB, AngleTolerance, out failed);
-            }
-            else
-            {
-                atB = s0;
-                root = AimRoots.Refine(ref lateral, a1, f1, a0, f0, ref atB, AngleTolerance, out failed);
-            }
-
-            return failed ? Unreachable(speed, root) : WithFlights(atB);
-        }
 
         private static void CheckTarget(in Vector3d position, in Vector3d target)
         {
@@ -780,71 +378,6 @@ namespace MagnusBall.Queries
         {
             double along = Vector3d.Dot(goal.Frame.Forward, goal.Frame.Direction(0, azimuth));
             return along > 0 ? Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward) / along : double.NaN;
-        }
-
-        private struct ElevationMargin : IAimMargin
-        {
-            private readonly AimTrials _trials;
-            private readonly AimGoal _goal;
-            private readonly double _speed;
-            private readonly double _azimuth;
-
-            public ElevationMargin(AimTrials trials, in AimGoal goal, double speed, double azimuth)
-            {
-                _trials = trials;
-                _goal = goal;
-                _speed = speed;
-                _azimuth = azimuth;
-            }
-
-            public double Evaluate(double elevation, out AimSolution solution) => _trials.Margin(_goal, _speed, elevation, _azimuth, out solution);
-        }
-
-        private struct SpeedMargin : IAimMargin
-        {
-            private readonly AimTrials _trials;
-            private readonly AimGoal _goal;
-            private readonly double _elevation;
-            private readonly double _azimuth;
-
-            public SpeedMargin(AimTrials trials, in AimGoal goal, double elevation, double azimuth)
-            {
-                _trials = trials;
-                _goal = goal;
-                _elevation = elevation;
-                _azimuth = azimuth;
-            }
-
-            public double Evaluate(double speed, out AimSolution solution) => _trials.Margin(_goal, speed, _elevation, _azimuth, out solution);
-        }
-
-        private struct AzimuthMargin : IAimMargin
-        {
-            private readonly AimSolver _solver;
-            private readonly AimGoal _goal;
-            private readonly double _speed;
-            private double _hint;
-
-            public AzimuthMargin(AimSolver solver, in AimGoal goal, double speed)
-            {
-                _solver = solver;
-                _goal = goal;
-                _speed = speed;
-                _hint = double.NaN;
-            }
-
-            /// <summary>The sideways miss (along the frame's side) after solving the elevation; NaN when no elevation reaches the height.</summary>
-            public double Evaluate(double azimuth, out AimSolution solution)
-            {
-                solution = _solver.SolveElevation(_goal, _speed, azimuth, PathToTarget(_goal, azimuth), _hint, out double elevation);
-                if (!solution.IsSolved)
-                {
-                    return double.NaN;
-                }
-
-                _hint = elevation;
-                return Vector3d.DotOfDifference(solution.Arrival.Position, _goal.Target, _goal.Frame.Side);
-            }
         }
     }
 }

@@ -104,7 +104,7 @@ namespace MagnusBall.Contact.Swings
         /// <summary>True for a head-clamped racket (infinite effective mass).</summary>
         public bool Clamped { get; }
 
-        /// <summary>A copy with another face tilt and azimuth (used by <see cref="SwingAim"/>).</summary>
+        /// <summary>A copy with another face tilt and azimuth (used by <c>Queries.SwingAim</c>).</summary>
         /// <param name="faceTiltDegrees">Face tilt, degrees, in [-80, 80].</param>
         /// <param name="azimuthDegrees">Azimuth, degrees, in [-90, 90].</param>
         public RacketSwing WithFace(double faceTiltDegrees, double azimuthDegrees) =>

@@ -1,7 +1,7 @@
 using System;
-using MagnusBall.Queries;
+using MagnusBall.Contact.Swings;
 
-namespace MagnusBall.Contact.Swings
+namespace MagnusBall.Queries
 {
     /// <summary>
     /// The result of a <see cref="SwingAim"/> solve: the swing found (<typeparamref name="TSwing"/>: a
