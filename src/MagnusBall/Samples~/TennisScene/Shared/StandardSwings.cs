@@ -7,7 +7,7 @@ namespace MagnusBall.Samples.TennisScene
     /// The scene's six shots made by racket swings (<see cref="TennisSwing"/>), hit from the same points as
     /// <see cref="StandardShots"/>. The racket speed, path, face turn and impact point are chosen here so the launches
     /// are like the standard shots' (a serve from a ball at rest, rally shots from a ball arriving at 10-15 m/s);
-    /// the face tilt and azimuth were then solved by the library's inverse (<see cref="SwingAim"/>, through
+    /// the face tilt and azimuth were then solved by the library's inverse (<see cref="MagnusBall.Queries.SwingAim"/>, through
     /// <see cref="ShotSimulation.AimSwing"/>) so that each lands where its standard shot lands with the scene's default
     /// settings, and rounded to 0.001 deg (tests/MagnusBall.UnityScripts.Tests/SwingShotTests.cs checks both).
     /// </summary>
