@@ -464,6 +464,7 @@ namespace UnityEngine
         }
 
         public static Vector3 zero => new Vector3(0, 0, 0);
+        public static Vector3 up => new Vector3(0, 1, 0);
 
         internal Vector3 StubPlus(Vector3 b) => new Vector3(x + b.x, y + b.y, z + b.z);
 
