@@ -136,6 +136,19 @@ namespace MagnusBall
         {
             double pressure = Atmosphere.StandardPressure(altitudeMetres);
             double temperature = temperatureCelsius ?? Atmosphere.StandardTemperatureCelsius(altitudeMetres);
+            Require.InRange(temperature, Atmosphere.MinimumTemperatureCelsius, Atmosphere.MaximumTemperatureCelsius, nameof(temperatureCelsius));
+            Require.InRange(relativeHumidity, 0, 1, nameof(relativeHumidity));
+            double vapour = relativeHumidity * Atmosphere.SaturationVapourPressure(temperature);
+            if (vapour >= pressure)
+            {
+                // The caller gave no pressure: the humidity is what cannot be at this altitude and temperature.
+                throw new System.ArgumentOutOfRangeException(
+                    nameof(relativeHumidity),
+                    relativeHumidity,
+                    $"relativeHumidity must leave the vapour pressure below the standard pressure at {Require.Format(altitudeMetres)} m " +
+                    $"({Require.Format(pressure)} Pa); got {Require.Format(relativeHumidity)}, a vapour pressure of {Require.Format(vapour)} Pa at {Require.Format(temperature)} degC.");
+            }
+
             return FromWeather(temperature, pressure, relativeHumidity, wind);
         }
 

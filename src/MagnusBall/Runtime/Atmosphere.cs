@@ -82,7 +82,8 @@ namespace MagnusBall
         /// <param name="temperatureCelsius">Temperature, degC; in [-90, 60].</param>
         /// <param name="pressurePascals">Total (station) pressure, Pa; finite and &gt; 0.</param>
         /// <param name="relativeHumidity">Relative humidity as a fraction, in [0, 1] (0.5 is 50 %).</param>
-        /// <exception cref="ArgumentOutOfRangeException">A value is out of range, or the vapour pressure would exceed the total pressure.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">A value is out of range, or the pressure is not above the vapour
+        /// pressure (a pressure in kPa or hPa by mistake; the message names pressurePascals).</exception>
         public static double MoistAirDensity(double temperatureCelsius, double pressurePascals, double relativeHumidity = 0)
         {
             Require.InRange(temperatureCelsius, MinimumTemperatureCelsius, MaximumTemperatureCelsius, nameof(temperatureCelsius));
@@ -91,11 +92,15 @@ namespace MagnusBall
             double vapour = relativeHumidity * SaturationVapourPressure(temperatureCelsius);
             if (vapour >= pressurePascals)
             {
+                // The vapour pressure is at most 20 kPa (saturation at 60 degC), below any station pressure on Earth
+                // (about 33 kPa on Everest): the pressure is the value in the wrong unit, not the humidity.
                 throw new ArgumentOutOfRangeException(
-                    nameof(relativeHumidity),
-                    relativeHumidity,
-                    $"relativeHumidity must leave the vapour pressure below the total pressure ({Require.Format(pressurePascals)} Pa); " +
-                    $"got {Require.Format(relativeHumidity)}, a vapour pressure of {Require.Format(vapour)} Pa.");
+                    nameof(pressurePascals),
+                    pressurePascals,
+                    $"pressurePascals must be above the water-vapour pressure of this air ({Require.Format(vapour)} Pa at " +
+                    $"{Require.Format(temperatureCelsius)} degC and relative humidity {Require.Format(relativeHumidity)}); got " +
+                    $"{Require.Format(pressurePascals)} Pa. Station pressures are about 30000-110000 Pa: was it given in kPa or hPa " +
+                    "(101.325 kPa = 1013.25 hPa = 101325 Pa)?");
             }
 
             double kelvin = temperatureCelsius + ZeroCelsiusInKelvin;

@@ -89,7 +89,13 @@ namespace MagnusBall.Tests.Aerodynamics
             Assert.That(() => Air.FromWeather(15, 0), Throws.InstanceOf<ArgumentException>().With.Message.Contains("pressurePascals"));
             Assert.That(() => Air.FromWeather(15, 101325, 1.5), Throws.InstanceOf<ArgumentException>().With.Message.Contains("relativeHumidity"));
             Assert.That(() => Air.FromWeather(15, 101325, -0.1), Throws.InstanceOf<ArgumentException>().With.Message.Contains("relativeHumidity"));
-            Assert.That(() => Air.FromWeather(50, 5000, 1), Throws.InstanceOf<ArgumentException>().With.Message.Contains("relativeHumidity"));
+            // A vapour pressure above the total pressure is the pressure's fault (a value in kPa, hPa or far below any
+            // station): 5000 Pa at 50 degC saturated, and the 101.325 (kPa) at 20 degC and 50 %.
+            Assert.That(() => Air.FromWeather(50, 5000, 1), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("pressurePascals"));
+            Assert.That(() => Air.FromWeather(20, 101.325, 0.5), Throws.InstanceOf<ArgumentException>()
+                .With.Property("ParamName").EqualTo("pressurePascals").And.Message.Contains("kPa"));
+            // AtAltitude takes no pressure: there the humidity is named (60 degC saturated at 20 km, 5.5 kPa).
+            Assert.That(() => Air.AtAltitude(20000, 60, 1), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("relativeHumidity"));
             Assert.That(() => Air.AtAltitude(30000), Throws.InstanceOf<ArgumentException>().With.Message.Contains("altitudeMetres"));
             Assert.That(() => Air.AtAltitude(double.PositiveInfinity), Throws.InstanceOf<ArgumentException>().With.Message.Contains("altitudeMetres"));
             Assert.That(() => Air.FromWeather(15, 101325, 0, new Vector3d(double.NaN, 0, 0)), Throws.InstanceOf<ArgumentException>().With.Message.Contains("wind"));
