@@ -178,7 +178,29 @@ namespace MagnusBall.Cli
 
             find.RejectUnknown();
             a.RejectUnknown();
+
+            // The trials fly the file's integrator at its step: a step beyond the method's stability bound at the
+            // launch is refused, as simulate refuses it (its trials would diverge or fly a wrong path and the
+            // solve would print "unreachable" for a target stable-rk4 reaches). The check takes the fastest launch
+            // the request can make (speed-to-reach: maximumSpeed) into the wind, with the whole spin.
+            double launchSpeed = kind == "speed-to-reach" ? maxSpeed : find.Positive("speed");
+            StabilityCheck.Require(
+                StabilityCheck.For(setup.Integrator), setup.Integrator, setup.Model, FastestLaunch(setup.Model, position, launchSpeed, spin), setup.Step, a.PathOf("step"));
             return new AimRequest(name, a.Path, solver, position, spin, solve);
+        }
+
+        /// <summary>
+        /// The launch with the largest air speed and spin the request can make: <paramref name="speed"/> straight into the
+        /// wind (up where there is none), spinning at the spin's whole rate. The stiffness rate depends on the air
+        /// speed and the spin rate, not on the directions (it takes the whole spin as transverse).
+        /// </summary>
+        private static FlightState FastestLaunch(FlightModel model, in Vector3d position, double speed, in LaunchSpin spin)
+        {
+            Vector3d wind = model.Air.WindAt(position, model.Up);
+            Vector3d direction = wind.LengthSquared > 0 ? -wind.NormalizedOrZero() : model.Up;
+            double rate = System.Math.Sqrt(spin.Topspin * spin.Topspin + spin.Sidespin * spin.Sidespin + spin.Gyro * spin.Gyro);
+            Vector3d across = Vector3d.Cross(direction, System.Math.Abs(direction.X) < 0.9 ? Vector3d.UnitX : Vector3d.UnitY).NormalizedOrZero();
+            return new FlightState(position, direction * speed, across * rate);
         }
 
         // A number in [min, max]; NaN as the fallback makes the field required.

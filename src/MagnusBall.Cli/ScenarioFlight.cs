@@ -165,60 +165,6 @@ namespace MagnusBall.Cli
             }
         }
 
-        /// <summary>
-        /// The stability check of a plain explicit method: a <see cref="StableIntegrator"/> whose limit on h sigma (the
-        /// step times the library's stiffness rate, which bounds the drag eigenvalue 2 k C_D s and adds the Magnus and
-        /// spin-decay rates; StableIntegrator's remarks) is the method's own stability bound on the real axis, h |lambda|
-        /// &lt;= 2 for the Euler methods and Heun and 2.785 for RK4 and 3.3 for Dormand-Prince, capped at the 2.5 the
-        /// library accepts. A step it would split is beyond the bound. Null for stable-rk4, which splits by itself.
-        /// </summary>
-        private static StableIntegrator? StabilityGuard(IIntegrator integrator) => integrator switch
-        {
-            StableIntegrator => null,
-            ExplicitEuler or SemiImplicitEuler or Heun => new StableIntegrator(integrator, 2.0),
-            _ => new StableIntegrator(integrator, 2.5),
-        };
-
-        /// <summary>
-        /// The largest step below <paramref name="step"/> that <paramref name="bound"/> takes whole: halvings down to the
-        /// first stable step (at most 1,100, past the smallest double), then 60 bisections between it and its double.
-        /// 0 where no positive step is stable (a speed whose drag rate overflows).
-        /// </summary>
-        private static double LargestStableStep(StableIntegrator bound, FlightModel model, in FlightState state, double step)
-        {
-            double unstable = step, stable = 0.5 * step;
-            for (int k = 0; k < 1100 && stable > 0 && bound.SubstepCount(model, state, stable) > 1; k++)
-            {
-                unstable = stable;
-                stable *= 0.5;
-            }
-
-            if (!(stable > 0) || bound.SubstepCount(model, state, stable) > 1)
-            {
-                return 0;
-            }
-
-            for (int i = 0; i < 60; i++)
-            {
-                double mid = 0.5 * (stable + unstable);
-                if (!(mid > stable && mid < unstable))
-                {
-                    break;
-                }
-
-                if (bound.SubstepCount(model, state, mid) > 1)
-                {
-                    unstable = mid;
-                }
-                else
-                {
-                    stable = mid;
-                }
-            }
-
-            return stable;
-        }
-
         private static InputError OverBudget(Scenario scenario, WorkBudget budget, double reached) =>
             new InputError($"scenarios[{scenario.Index}].step",
                 $"the file's flights need more than {budget.Limit} model evaluations ({scenario.Integrator.Name} makes " +
@@ -246,7 +192,7 @@ namespace MagnusBall.Cli
 
             stepper.Reset(scenario.Initial); // one evaluation, at the start state
             var stable = scenario.Integrator as StableIntegrator;
-            StableIntegrator? bound = StabilityGuard(scenario.Integrator);
+            StableIntegrator? bound = StabilityCheck.For(scenario.Integrator);
 
             List<StepPoint>? points = keepAll > 0 || keep != null ? new List<StepPoint>() : null;
             if (keepAll > 0)
@@ -269,16 +215,7 @@ namespace MagnusBall.Cli
 
                 // A step beyond the method's stability bound for the flight's drag is refused before it is taken: its
                 // growth may stay finite for a while, and a "landing" it reached would be printed as a result.
-                if (bound is not null && h > 0 && bound.SubstepCount(model, stepper.State, h) > 1)
-                {
-                    double largest = LargestStableStep(bound, model, stepper.State, h);
-                    throw new InputError(stepPath,
-                        $"a step of {JsonFields.Format(h)} s is beyond {scenario.Integrator.Name}'s stability bound for this flight's drag " +
-                        $"at t = {JsonFields.Format(before)} s ({JsonFields.Format(stepper.State.Velocity.Length)} m/s); " +
-                        (largest > 0
-                            ? $"the largest stable step there is {JsonFields.Format(largest)} s: use a step of at most that, or stable-rk4, which splits a step into stable substeps"
-                            : "no positive step is stable there (the drag rate overflows a double): check the speed and the ball"));
-                }
+                StabilityCheck.Require(bound, scenario.Integrator, model, stepper.State, h, stepPath);
 
                 // The work cap: a step costs the integrator's evaluations per step, a substepping integrator's step that
                 // times the substeps it will take (judged at the start of the step, as the integrator judges it).

@@ -49,6 +49,29 @@ namespace MagnusBall.Cli.Tests.Api
             return run.FirstResult();
         }
 
+        [TestCase("euler")]
+        [TestCase("rk4")]
+        public void StepBeyondTheStabilityBound_IsRefused_NotAnsweredUnreachable(string integrator)
+        {
+            // A table-tennis ball (2.7 g, 20 mm, C_D 0.55, no spin) at 100 m/s at a 0.1 s step: beyond both methods'
+            // bounds (about 0.06 and 0.08 s here). The trials would fly a wrong path and the solve print "unreachable" with exit 0.
+            JsonObject root = Aim("""{"kind": "elevation-to-reach", "speed": 100, "target": [20, 0, 0]}""");
+            JsonObject a = root["aims"]![0]!.AsObject();
+            a["ball"] = new JsonObject { ["mass"] = 0.0027, ["radius"] = 0.02 };
+            a["launch"] = new JsonObject { ["position"] = new JsonArray(0, 0, 1) }; // no spin: drag alone
+            a["integrator"] = integrator;
+            a["step"] = 0.1;
+            CliRun run = Run(root);
+            Assert.That(run.ExitCode, Is.EqualTo(2), run.Stdout);
+            Assert.That(run.Stderr, Does.StartWith($"magnusball: aims[0].step: a step of 0.1 s is beyond {integrator}'s stability bound"));
+
+            // stable-rk4 splits the step and solves the same request.
+            a["integrator"] = "stable-rk4";
+            CliRun stable = Run(root);
+            Assert.That(stable.ExitCode, Is.EqualTo(0), stable.Stderr);
+            Assert.That(stable.FirstResult().GetProperty("status").GetString(), Is.EqualTo("solved"));
+        }
+
         [Test]
         public void MinimumElevationToClear_TouchesTheTape()
         {

@@ -69,30 +69,43 @@ namespace MagnusBall.Cli.Tests.Api
             AssertInputError(CliRun.Simulate(root), expected);
         }
 
-        [TestCase("euler", 0.05, 0.0442838520488942)]
-        [TestCase("rk4", 0.05, 0.05535)]
-        public void StepBeyondTheStabilityBound_IsRefused_NamingTheLargestStableStep(string integrator, double step, double largest)
+        [TestCase("euler", 2.0)]
+        [TestCase("heun", 2.0)]
+        [TestCase("rk4", 2.5)]
+        [TestCase("dp54", 2.5)]
+        public void StepBeyondTheStabilityBound_IsRefused_NamingTheLargestStableStep(string integrator, double bound)
         {
-            // A table-tennis ball (2.7 g, 20 mm) at 100 m/s: the drag rate 2 k C_D s is about 45 1/s, so Euler's bound
-            // (h sigma <= 2) is about 0.044 s; RK4's check (2.5) accepts 0.05 s and the next test's 0.1 s is refused.
+            // A table-tennis ball (2.7 g, 20 mm) at 100 m/s with the drive's constant C_D 0.55 and C_L 0.175, 125.7 rad/s.
+            // StableIntegrator's remarks define the check: sigma = 1.1 x 2 k s_max (C_D + |C_L|) (no spin decay here;
+            // s_max = s + |g| h <= 1.1 s), and a step is taken whole while h sigma <= the method's bound. The largest such
+            // step solves h = bound / sigma(h), found here by fixed-point iteration from the formula, not by the CLI's code.
             JsonObject root = CliRun.Drive();
             S(root)["ball"] = new JsonObject { ["mass"] = 0.0027, ["radius"] = 0.02 };
             S(root)["initial"]!["velocity"] = new JsonArray(100, 0, 5);
             S(root)["integrator"] = integrator;
-            S(root)["step"] = integrator == "rk4" ? 0.1 : step;
+            double k = 1.21 * Math.PI * 0.02 * 0.02 / (2 * 0.0027), s = Math.Sqrt(100 * 100 + 5 * 5), h = 0.05;
+            for (int i = 0; i < 100; i++)
+            {
+                h = bound / (1.1 * 2 * k * (s + 9.81 * h) * (0.55 + 0.175));
+            }
+
+            // Just above the bound: refused, exit 2, no landing printed, the largest stable step named.
+            S(root)["step"] = h * 1.01;
             CliRun run = CliRun.Simulate(root);
             Assert.That(run.ExitCode, Is.EqualTo(Program.BadInput), run.Stderr);
             Assert.That(run.Stdout, Is.Empty, "no landing is printed");
-            Assert.That(run.Stderr, Does.StartWith(
-                $"magnusball: scenarios[0].step: a step of {(integrator == "rk4" ? 0.1 : step).ToString(System.Globalization.CultureInfo.InvariantCulture)} s is beyond {integrator}'s stability bound"));
+            Assert.That(run.Stderr, Does.StartWith($"magnusball: scenarios[0].step: a step of {JsonFields.Format(h * 1.01)} s is beyond {integrator}'s stability bound"));
             string text = run.Stderr.Substring(run.Stderr.IndexOf("the largest stable step there is ", StringComparison.Ordinal) + 33);
             double named = double.Parse(text.Substring(0, text.IndexOf(' ')), System.Globalization.CultureInfo.InvariantCulture);
-            Assert.That(named, Is.EqualTo(largest).Within(0.02 * largest), "the bisection's answer, within 2 % of the value measured once");
+            // 1e-9: the bisection resolves the step to about 1e-18 relative; the check's own arithmetic (its ceiling of
+            // h sigma / bound) and the formula's order of operations differ by rounding only.
+            Assert.That(named, Is.EqualTo(h).Within(1e-9 * h));
 
-            // The named step is taken: the same flight at it lands.
-            S(root)["step"] = named;
+            // Just below it: taken, and the flight lands.
+            S(root)["step"] = h * 0.99;
             CliRun again = CliRun.Simulate(root);
             Assert.That(again.ExitCode, Is.EqualTo(0), again.Stderr);
+            Assert.That(again.FirstResult().GetProperty("landing").ValueKind, Is.EqualTo(System.Text.Json.JsonValueKind.Object));
         }
 
         [Test]

@@ -156,9 +156,10 @@ namespace MagnusBall.Presets
 
         /// <summary>
         /// Basketball: FIBA size 7 (circumference 749-780 mm, 567-650 g; 0.6 kg and r = 0.1205 m used), thin
-        /// shell. C_D = 0.54, the value used in free-throw models such as Okubo &amp; Hubbard (2006, J. Sports Sci.
-        /// 24:1303; recalled, not checked here). Stated assumptions: lift from Stepanek's saturating curve
-        /// (borrowed from tennis) and constant spin (a shot lasts about a second).
+        /// shell. C_D = 0.54: a recalled value, <b>not traced to a measurement</b> (none of a basketball was found). It was
+        /// attributed to Okubo &amp; Hubbard (2006, J. Sports Sci. 24:1303), which could not be confirmed: a secondary
+        /// summary describes their flight model as purely gravitational. Stated assumptions: lift from Stepanek's
+        /// saturating curve (borrowed from tennis) and constant spin (a shot lasts about a second).
         /// </summary>
         public static SportPreset Basketball { get; } = new SportPreset(
             "basketball",
@@ -166,7 +167,7 @@ namespace MagnusBall.Presets
             new ConstantDrag(0.54),
             StepanekLift.Instance,
             null,
-            "FIBA Official Basketball Rules, equipment (size 7). C_D = 0.54 as in Okubo & Hubbard 2006 (recalled, not checked). " +
+            "FIBA Official Basketball Rules, equipment (size 7). C_D = 0.54 recalled, not traced to a measurement (attributed to Okubo & Hubbard 2006, not confirmed). " +
             "Assumptions: C_L from Stepanek's tennis curve; constant spin.");
 
         /// <summary>Golf spin-decay time constant, s: 4 %/s, tau = -1/ln(0.96) = 24.5 s.</summary>
