@@ -15,6 +15,7 @@ namespace MagnusBall.Docs.Tests
     /// Every C# block (```csharp) in the repository's Markdown compiles as C# 9 against the library and netstandard2.1
     /// (as Unity compiles a script) and runs as pasted into a blank console program, as a reader would paste it. A block that goes on from the one before
     /// it says so with <c>&lt;!-- continues --&gt;</c> on the line above its fence: it is run joined to that block. A
+    /// A comment <c>// prints: TEXT</c> in a block says what it prints, and the test holds it to that. A
     /// Unity script says so with <c>&lt;!-- engine: unity --&gt;</c>: it is compiled (not run) against the stub of
     /// UnityEngine in tests/UnityStubs and the components built on it, as a script in a Unity project's Assets is.
     /// </summary>
@@ -175,7 +176,16 @@ namespace MagnusBall.Docs.Tests
 
             string output = Run(image, program.Name);
             TestContext.Out.WriteLine(output);
+
+            // What a block says it prints ("// prints: ..."), it prints: the docs' numbers are the code's.
+            foreach (System.Text.RegularExpressions.Match m in Prints.Matches(program.Source))
+            {
+                Assert.That(output, Does.Contain(m.Groups[1].Value.Trim()), $"{program.Name} says it prints '{m.Groups[1].Value.Trim()}'");
+            }
         }
+
+        private static readonly System.Text.RegularExpressions.Regex Prints =
+            new System.Text.RegularExpressions.Regex(@"//\s*prints:\s*(.+)$", System.Text.RegularExpressions.RegexOptions.Multiline);
 
         private static byte[] Compile(DocProgram program)
         {
