@@ -104,17 +104,53 @@ namespace MagnusBall.Playground.Tests
             }
         }
 
-        /// <summary>A new page (its own context) at the app's address with <paramref name="query"/>, loaded.</summary>
+        private static readonly System.Collections.Generic.List<(IBrowserContext Context, IPage Page, System.Collections.Generic.List<string> Errors)> Opened =
+            new System.Collections.Generic.List<(IBrowserContext, IPage, System.Collections.Generic.List<string>)>();
+
+        /// <summary>
+        /// A new page (its own context) at the app's address with <paramref name="query"/>, loaded. Its uncaught errors
+        /// and console errors (where Blazor reports an exception in an event handler) are collected for <see cref="CloseAllAsync"/>.
+        /// </summary>
         public static async Task<IPage> OpenAsync(string query = "", int width = 1280, int height = 900)
         {
             IBrowserContext context = await Browser.NewContextAsync(new BrowserNewContextOptions { ViewportSize = new ViewportSize { Width = width, Height = height } });
             IPage page = await context.NewPageAsync();
             var errors = new System.Collections.Generic.List<string>();
-            page.PageError += (_, e) => errors.Add(e);
+            page.PageError += (_, e) => errors.Add("page error: " + e);
+            page.Console += (_, m) =>
+            {
+                if (m.Type == "error")
+                {
+                    errors.Add("console error: " + m.Text);
+                }
+            };
+            Opened.Add((context, page, errors));
             await page.GotoAsync(BaseUrl + query);
             await page.WaitForSelectorAsync("h1", new PageWaitForSelectorOptions { Timeout = 120_000 });
-            Assert.That(errors, Is.Empty, "the page threw");
+            Assert.That(errors, Is.Empty, "the page threw while loading");
             return page;
+        }
+
+        /// <summary>
+        /// Asserts that no page opened since the last call threw or showed Blazor's error bar (#blazor-error-ui), then
+        /// closes them all.
+        /// </summary>
+        public static async Task CloseAllAsync()
+        {
+            var problems = new System.Collections.Generic.List<string>();
+            foreach ((IBrowserContext context, IPage page, System.Collections.Generic.List<string> errors) in Opened)
+            {
+                problems.AddRange(errors);
+                if (!page.IsClosed && await page.IsVisibleAsync("#blazor-error-ui"))
+                {
+                    problems.Add("Blazor's error bar is shown at " + page.Url);
+                }
+
+                await context.CloseAsync();
+            }
+
+            Opened.Clear();
+            Assert.That(problems, Is.Empty, "the app reported an error");
         }
 
         private static string RepositoryRoot()

@@ -22,6 +22,10 @@ namespace MagnusBall.Playground.Tests
     [TestFixture]
     public sealed class PlaygroundTests
     {
+        /// <summary>Every test's pages: no uncaught error, no console error, no Blazor error bar; then closed.</summary>
+        [TearDown]
+        public Task NoPageReportedAnError() => PlaygroundHost.CloseAllAsync();
+
         private static double ValueOf(string text) => double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture);
 
         private static async Task<double> CellValue(IPage page, string selector) =>
@@ -58,8 +62,10 @@ namespace MagnusBall.Playground.Tests
         [TestCase("golf", "on the fairway")]
         public async Task EachSportsShot_IsJudgedInItsTerms(string preset, string outcome)
         {
+            var clock = System.Diagnostics.Stopwatch.StartNew();
             IPage page = await PlaygroundHost.OpenAsync($"?preset={preset}");
             await page.WaitForSelectorAsync("#path-side");
+            TestContext.Out.WriteLine($"{preset}: loaded and flown (with the no-spin shot and both references) in {clock.ElapsedMilliseconds} ms");
             Assert.That(await page.Locator("#row-outcome td").First.InnerTextAsync(), Is.EqualTo(outcome));
             Assert.That(await page.InputValueAsync("#in-preset"), Is.EqualTo(preset));
         }
@@ -145,9 +151,19 @@ namespace MagnusBall.Playground.Tests
             string before = await page.GetAttributeAsync("#path-side", "d") ?? string.Empty;
             double landingBefore = await CellValue(page, "#row-landing-x td:nth-child(2)");
 
+            var clock = System.Diagnostics.Stopwatch.StartNew();
             await page.FillAsync("#in-top", "3000");
             await page.PressAsync("#in-top", "Tab");
             await page.WaitForFunctionAsync("d => document.querySelector('#path-side').getAttribute('d') !== d", before);
+            TestContext.Out.WriteLine($"a tennis shot, its second shot and their references redrawn in {clock.ElapsedMilliseconds} ms");
+            clock.Restart();
+            await page.FillAsync("#in-rate", "120");
+            await page.PressAsync("#in-rate", "Tab");
+            await page.WaitForFunctionAsync("() => new URL(location.href).searchParams.get('rate') === '120'");
+            TestContext.Out.WriteLine($"the same at another rate (references kept) in {clock.ElapsedMilliseconds} ms");
+            await page.FillAsync("#in-rate", "240");
+            await page.PressAsync("#in-rate", "Tab");
+            await page.WaitForFunctionAsync("() => new URL(location.href).searchParams.get('rate') === '240'");
             string after = await page.GetAttributeAsync("#path-side", "d") ?? string.Empty;
             double landingAfter = await CellValue(page, "#row-landing-x td:nth-child(2)");
             Assert.That(after, Is.Not.EqualTo(before));
@@ -177,10 +193,17 @@ namespace MagnusBall.Playground.Tests
             Assert.That(await fromLink.InnerTextAsync("#message"), Does.Contain("Steps per second (1/s) must be a number; got 'abc'."));
             await fromLink.WaitForSelectorAsync("#path-side");
 
-            // A step far beyond explicit Euler's stability for a light fast ball is reported as diverged, not as a landing.
-            IPage unstable = await PlaygroundHost.OpenAsync("?preset=table-tennis&speed=100&elev=5&method=euler&rate=10&cmp=none");
-            Assert.That(await unstable.Locator("#row-outcome td").First.InnerTextAsync(), Is.EqualTo("diverged (no landing)").Or.StartWith("unreliable"));
-            Assert.That(await unstable.InnerTextAsync("#message"), Does.Contain("The flight diverged").Or.Contain("too few for a plain euler"));
+            // A step beyond explicit Euler's stability bound for a light, fast, spinning ball is reported as unreliable, not as a landing.
+            // (12,000 rpm: the lift adds to the drag rate, h sigma about 2.4 against Euler's 2.)
+            IPage unstable = await PlaygroundHost.OpenAsync("?preset=table-tennis&speed=100&elev=5&top=12000&method=euler&rate=10&cmp=none");
+            Assert.That(await unstable.Locator("#row-outcome td").First.InnerTextAsync(), Is.EqualTo("unreliable: the step is beyond the method's stability bound"));
+            Assert.That(await unstable.InnerTextAsync("#message"), Does.Contain("10 steps per second are too few for euler"));
+            Assert.That(await unstable.GetAttributeAsync("#row-landing-x [data-value]", "data-value"), Is.Empty, "no landing is reported");
+
+            // A bad self-test count says so instead of flying nothing.
+            IPage selfTest = await PlaygroundHost.OpenAsync("?selftest=abc");
+            Assert.That(await selfTest.InnerTextAsync("#message"), Does.Contain("selftest must be a whole number of shots from 1 to 100000; got 'abc'."));
+            Assert.That(await selfTest.Locator("#determinism-hash").CountAsync(), Is.Zero);
         }
 
         [Test]
@@ -199,6 +222,21 @@ namespace MagnusBall.Playground.Tests
             // 2e-8 rad and 1e-7 m/s (AimSolver's docs), a few micrometres at 20 m.
             Assert.That(x, Is.EqualTo(20).Within(1e-3));
             Assert.That(y, Is.EqualTo(2).Within(1e-3));
+
+            // The aimed shot's link opens the same shot.
+            string path = await page.GetAttributeAsync("#path-side", "d") ?? string.Empty;
+            IPage shared = await PlaygroundHost.OpenAsync(new Uri(page.Url).Query);
+            await shared.WaitForSelectorAsync("#path-side");
+            Assert.That(await shared.Locator("#message").CountAsync(), Is.Zero, "the link is accepted");
+            Assert.That(await shared.GetAttributeAsync("#path-side", "d"), Is.EqualTo(path));
+
+            // A target whose launch the page cannot carry (68 degrees to the side) is refused, and the shot stays.
+            await page.FillAsync("#in-tx", "2");
+            await page.FillAsync("#in-ty", "5");
+            await page.ClickAsync("#aim");
+            await page.Locator("#message").WaitForAsync();
+            Assert.That(await page.InnerTextAsync("#message"), Does.Contain("Direction (deg, + left) must be from -60 to 60"));
+            Assert.That(await page.GetAttributeAsync("#path-side", "d"), Is.EqualTo(path));
         }
 
         [Test]

@@ -217,7 +217,10 @@ namespace MagnusBall.UnityScripts.Tests
             broken.maxFrameDelta = 0f;
             Assert.DoesNotThrow(() => Call(broken, "OnDrawGizmosSelected"));
             Assert.That(StubControl.GizmoLines, Is.Empty);
-            Assert.That(flight, Is.Not.Null);
+
+            // The well-configured ball beside it still draws: the refusal is the broken one's alone.
+            Call(flight, "OnDrawGizmosSelected");
+            Assert.That(StubControl.GizmoLines, Is.Not.Empty);
         }
 
         [Test]

@@ -24,13 +24,12 @@ namespace UnityEngine.Events
 
         public void RemoveListener(UnityAction call) => _calls.Remove(call);
 
-        // Unity invokes a snapshot of the list (a listener added during Invoke runs from the next Invoke); no allocation.
+        // Unity invokes a snapshot of the list: a listener added or removed during Invoke changes the next Invoke only.
         public void Invoke()
         {
-            int count = _calls.Count;
-            for (int i = 0; i < count && i < _calls.Count; i++)
+            foreach (UnityAction call in _calls.ToArray())
             {
-                _calls[i]();
+                call();
             }
         }
     }
@@ -48,12 +47,12 @@ namespace UnityEngine.Events
 
         public void RemoveListener(UnityAction<T0> call) => _calls.Remove(call);
 
+        // As UnityEvent.Invoke: a snapshot of the listeners.
         public void Invoke(T0 arg0)
         {
-            int count = _calls.Count;
-            for (int i = 0; i < count && i < _calls.Count; i++)
+            foreach (UnityAction<T0> call in _calls.ToArray())
             {
-                _calls[i](arg0);
+                call(arg0);
             }
         }
     }

@@ -166,7 +166,7 @@ namespace MagnusBall.Playground.Lab
             },
             new[] { new SideSegment(11.885, 0, 11.885, 0.914, "obstacle", "net, 0.914 m at the centre") },
             new[] { Across(11.885) }, new[] { "the net" }, 0.914, "net",
-            r => !Cleared(r) ? "into the net" : Ends(r).X < 11.885 ? "short of the net"
+            r => !double.IsNaN(r.Clearance) && r.Clearance < -2 * r.BallRadius ? "into the net" : !Cleared(r) ? "clips the net cord" : Ends(r).X < 11.885 ? "short of the net"
                 : Ends(r).X <= 23.77 && Math.Abs(Ends(r).Y) <= 4.115 ? "in (singles court)" : "out",
             new ShotSettings { Preset = "tennis", SpeedMetresPerSecond = 30, ElevationDegrees = 6, TopspinRpm = 1200, LaunchHeightMetres = 1.0 });
 
@@ -239,7 +239,7 @@ namespace MagnusBall.Playground.Lab
             },
             new[] { new SideSegment(1.37, 0, 1.37, 0.1525, "obstacle", "net, 15.25 cm"), new SideSegment(0, 0, 2.74, 0, "target", "table") },
             new[] { Across(1.37) }, new[] { "the net" }, 0.1525, "net",
-            r => !Cleared(r) ? "into the net" : Ends(r).X < 1.37 ? "short of the net"
+            r => !double.IsNaN(r.Clearance) && r.Clearance < -2 * r.BallRadius ? "into the net" : !Cleared(r) ? "clips the net" : Ends(r).X < 1.37 ? "short of the net"
                 : Ends(r).X <= 2.74 && Math.Abs(Ends(r).Y) <= 0.7625 ? "on the table" : "off the table",
             new ShotSettings { Preset = "table-tennis", SpeedMetresPerSecond = 9, ElevationDegrees = 12, TopspinRpm = 3000, LaunchHeightMetres = 0.2, MaxFlightSeconds = 3 });
 
@@ -272,6 +272,8 @@ namespace MagnusBall.Playground.Lab
 
         private static Vector3d Ends(ShotResult r) => r.End.Position;
 
+        // The ball's bottom passes over the tape (Clearance is measured from the bottom): a centre within a radius of
+        // the tape touches it, which the flight does not model yet (no contact with the net), so the verdict says so.
         private static bool Cleared(ShotResult r) => double.IsNaN(r.Clearance) || r.Clearance > 0;
     }
 }

@@ -42,16 +42,23 @@ namespace MagnusBall.Playground.Lab
         /// <summary>The highest point of the path.</summary>
         public Vector3d Apex { get; set; }
 
-        /// <summary>Height over the obstacle where the ball crossed its plane, m (negative: into it); NaN if it did not cross.</summary>
+        /// <summary>
+        /// Height of the ball's bottom over the obstacle where its centre crossed the obstacle's plane, m: the gap
+        /// between ball and tape (negative: the ball touches or hits it); NaN if it did not cross.
+        /// </summary>
         public double Clearance { get; set; } = double.NaN;
 
-        /// <summary>
-        /// Substeps the stability-safe RK4 (stable-rk4) would split the first step into (h sigma within 1, see
-        /// StableIntegrator): above 1, the step is beyond what a plain explicit method is sure to fly stably.
-        /// </summary>
-        public int SafeSubsteps { get; set; } = 1;
+        /// <summary>The ball's radius, m.</summary>
+        public double BallRadius { get; set; }
 
-        /// <summary>The step is beyond the stable limit and the method does not split it: the numbers may be wrong.</summary>
+        /// <summary>
+        /// The launch's step against the method's stability bound for the flight's drag: how many steps the method's
+        /// check would split it into (1: within the bound). The check is the CLI's (its StabilityCheck): h sigma at most
+        /// 2 for the Euler methods and Heun, 2.5 for RK4 and Dormand-Prince, sigma the library's stiffness rate.
+        /// </summary>
+        public int StabilityRatio { get; set; } = 1;
+
+        /// <summary>The step is beyond the method's stability bound and the method does not split it: no result is shown.</summary>
         public bool Unreliable { get; set; }
 
         /// <summary>Steps taken.</summary>
@@ -164,18 +171,59 @@ namespace MagnusBall.Playground.Lab
             FlightState start = Launch(s);
             IIntegrator integrator = Integrators.FromName(integratorName);
             ShotResult result = Run(new TrajectoryPredictor(model, integrator, step, events), start, s.MaxFlightSeconds, scene);
-            result.SafeSubsteps = StableIntegrator.RungeKutta4.SubstepCount(model, start, step);
-            result.Unreliable = result.SafeSubsteps > 1 && !(integrator is StableIntegrator);
+            result.BallRadius = model.Ball.Radius;
+            if (double.IsFinite(result.Clearance))
+            {
+                result.Clearance -= model.Ball.Radius;
+            }
+
+            StableIntegrator? bound = StabilityBound(integrator);
+            result.StabilityRatio = bound is null ? 1 : bound.SubstepCount(model, start, step);
+            result.Unreliable = result.StabilityRatio > 1;
             if (withReference && result.Landed)
             {
-                ShotResult reference = Run(new TrajectoryPredictor(model, RungeKutta4.Instance, ReferenceStep, events), start, s.MaxFlightSeconds, scene);
-                if (reference.Landed)
+                FlightState? landing = ReferenceLanding(s, model, events, start, scene);
+                if (landing is FlightState l)
                 {
-                    result.ReferenceError = (result.End.Position - reference.End.Position).Length;
+                    result.ReferenceError = (result.End.Position - l.Position).Length;
                 }
             }
 
             return result;
+        }
+
+        /// <summary>The method's stability check (the CLI's rule), or null for stable-rk4, which splits its steps itself.</summary>
+        private static StableIntegrator? StabilityBound(IIntegrator integrator) => integrator switch
+        {
+            StableIntegrator => null,
+            ExplicitEuler or SemiImplicitEuler or Heun => new StableIntegrator(integrator, 2.0),
+            _ => new StableIntegrator(integrator, 2.5),
+        };
+
+        // The reference landing depends on the launch and the air, not on the integrator or its rate: the last few are
+        // kept, so changing the method, its rate or the second shot does not fly the long reference again.
+        private static readonly Dictionary<string, FlightState?> References = new Dictionary<string, FlightState?>();
+
+        private static FlightState? ReferenceLanding(ShotSettings s, FlightModel model, FlightEventSet events, in FlightState start, Scene scene)
+        {
+            ShotSettings key = s.Clone();
+            key.Integrator = "rk4";
+            key.StepsPerSecond = 240;
+            key.Compare = CompareWith.None;
+            string query = key.ToQuery() + "&t=" + ShotSettings.Format(s.MaxFlightSeconds);
+            if (!References.TryGetValue(query, out FlightState? landing))
+            {
+                ShotResult reference = Run(new TrajectoryPredictor(model, RungeKutta4.Instance, ReferenceStep, events), start, s.MaxFlightSeconds, scene);
+                landing = reference.Landed ? reference.End : (FlightState?)null;
+                if (References.Count >= 16)
+                {
+                    References.Clear();
+                }
+
+                References[query] = landing;
+            }
+
+            return landing;
         }
 
         private static ShotResult Run(TrajectoryPredictor predictor, in FlightState start, double maxSeconds, Scene scene)

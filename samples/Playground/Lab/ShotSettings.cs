@@ -230,6 +230,21 @@ namespace MagnusBall.Playground.Lab
             return s;
         }
 
+        /// <summary>Why these settings are refused (a field out of the range the page accepts), or null: what the address can carry.</summary>
+        public string? Refusal()
+        {
+            foreach (Field f in Fields)
+            {
+                string? why = f.Refusal(f.Get(this));
+                if (why is not null)
+                {
+                    return why;
+                }
+            }
+
+            return null;
+        }
+
         /// <summary>A number as the page writes it: invariant culture, shortest round-trip form.</summary>
         public static string Format(double value) => value.ToString("R", CultureInfo.InvariantCulture);
 
@@ -248,6 +263,9 @@ namespace MagnusBall.Playground.Lab
             refusals.Add($"Integrator must be one of {string.Join(", ", Lab.Names.Integrators)}; got '{name}'.");
             return fallback;
         }
+
+        /// <summary>The value of <paramref name="key"/> in an address query, or null where the query has no such key.</summary>
+        public static string? QueryValue(string query, string key) => Parse(query).TryGetValue(key, out string? v) ? v : null;
 
         private static Dictionary<string, string> Parse(string query)
         {
