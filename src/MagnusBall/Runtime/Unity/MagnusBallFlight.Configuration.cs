@@ -4,10 +4,8 @@ using System;
 using MagnusBall.Flight;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
-using MagnusBall.Queries;
 using MagnusBall.Stepping;
 using UnityEngine;
-using UnityEngine.Events;
 
 namespace MagnusBall.Components
 {

@@ -1,13 +1,8 @@
 // MagnusBallFlight, the inspector side: edits applied during Play (OnValidate) and the gizmos of the selected ball. The flight itself is in MagnusBallFlight.cs.
 #nullable enable
 using System;
-using MagnusBall.Flight;
-using MagnusBall.Contact;
-using MagnusBall.Integration;
 using MagnusBall.Queries;
-using MagnusBall.Stepping;
 using UnityEngine;
-using UnityEngine.Events;
 
 namespace MagnusBall.Components
 {
