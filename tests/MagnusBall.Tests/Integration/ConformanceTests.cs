@@ -12,7 +12,7 @@ namespace MagnusBall.Tests.Integration
     /// The one conformance test: every law of the catalogue (<see cref="LawCatalogue"/>: every drag, lift and spin-decay
     /// example, with none and a user's own law beside them, in every combination, in still air, a uniform wind and a wind
     /// profile) through every fast form and method, against the spec: the general formula
-    /// (<see cref="FlightModel.GeneralDerivative"/>) and each method's textbook combination written out below. Each form has
+    /// (<see cref="FlightModel.GeneralDerivative"/>) and each method's textbook combination written out in Textbook.cs. Each form has
     /// its contract (<see cref="Forms"/>): bit for bit, or, where the kernel folds the algebra (a constant lift beside a drag
     /// that reads nothing: the thesis model; Stepanek's lift: the tennis presets), within a stated number of ulp.
     /// </summary>
@@ -435,28 +435,7 @@ namespace MagnusBall.Tests.Integration
             return Math.Max(Math.Max(position, velocity), Math.Max(spin, endRates));
         }
 
-        // S = |g| + k s^2 (|C_D| + |C_L|) at the state, the laws' own coefficients (the general formula's conditions).
-        private static double ForceScale(FlightModel model, in FlightState state)
-        {
-            double g = model.Gravity.Length;
-            if (model.Air.Density <= 0)
-            {
-                return g;
-            }
-
-            Vector3d relative = state.Velocity - model.Air.WindAt(state.Position, model.Up);
-            double speed = relative.Length;
-            if (!(speed > FlightModel.MinimumAerodynamicSpeed))
-            {
-                return g;
-            }
-
-            double spinRate = state.AngularVelocity.Length;
-            double transverse = Vector3d.Cross(state.AngularVelocity, relative / speed).Length;
-            var conditions = new AeroConditions(speed, spinRate, transverse, model.Ball.Radius, model.Air.Density, model.Air.DynamicViscosity);
-            double c = Math.Abs(model.Drag?.DragCoefficient(conditions) ?? 0) + Math.Abs(model.Lift?.LiftCoefficient(conditions) ?? 0);
-            return g + model.AerodynamicFactor * speed * speed * c;
-        }
+        private static double ForceScale(FlightModel model, in FlightState state) => Textbook.ForceScale(model, state);
 
         // The largest component difference over the unit; 0 where every component has the same bits (NaN matching NaN).
         private static double Difference(in Vector3d actual, in Vector3d expected, double unit)
@@ -482,71 +461,16 @@ namespace MagnusBall.Tests.Integration
         private static bool Same(double a, double b) =>
             BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b) || (double.IsNaN(a) && double.IsNaN(b));
 
-        // The gap to the next double up (Math.BitIncrement is not in .NET Framework, which the Mono run compiles against).
-        private static double Ulp(double value)
-        {
-            double x = Math.Abs(value);
-            return !double.IsInfinity(x) && !double.IsNaN(x) ? BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) + 1) - x : double.PositiveInfinity;
-        }
+        private static double Ulp(double value) => Textbook.Ulp(value);
 
-        // The spec's methods: each textbook combination on the general formula, written out.
+        // The spec's methods on the general formula (Textbook.cs).
+        private static FlightState SpecHeun(FlightModel model, in FlightState y, in StateDerivative k1, double h) =>
+            Textbook.Heun(s => model.GeneralDerivative(s), y, k1, h);
 
-        // Heun: k2 = f(y + h k1), y + h/2 (k1 + k2).
-        private static FlightState SpecHeun(FlightModel model, in FlightState y, in StateDerivative k1, double h)
-        {
-            StateDerivative k2 = model.GeneralDerivative(y.Advance(k1, h));
-            double half = 0.5 * h;
-            return new FlightState(
-                y.Position + (k1.Velocity + k2.Velocity) * half,
-                y.Velocity + (k1.Acceleration + k2.Acceleration) * half,
-                y.AngularVelocity + (k1.AngularAcceleration + k2.AngularAcceleration) * half,
-                y.Time + h);
-        }
+        private static FlightState SpecRk4(FlightModel model, in FlightState y, in StateDerivative k1, double h) =>
+            Textbook.Rk4(s => model.GeneralDerivative(s), y, k1, h);
 
-        // RK4: k2 = f(y + h/2 k1), k3 = f(y + h/2 k2), k4 = f(y + h k3), y + h/6 (k1 + 2 (k2 + k3) + k4).
-        private static FlightState SpecRk4(FlightModel model, in FlightState y, in StateDerivative k1, double h)
-        {
-            double half = 0.5 * h;
-            StateDerivative k2 = model.GeneralDerivative(y.Advance(k1, half));
-            StateDerivative k3 = model.GeneralDerivative(y.Advance(k2, half));
-            StateDerivative k4 = model.GeneralDerivative(y.Advance(k3, h));
-            double sixth = h / 6.0;
-            return new FlightState(
-                y.Position + (k1.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
-                y.Velocity + (k1.Acceleration + 2.0 * (k2.Acceleration + k3.Acceleration) + k4.Acceleration) * sixth,
-                y.AngularVelocity + (k1.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
-                y.Time + h);
-        }
-
-        // Dormand & Prince (1980): the stages k2..k6 from the tableau's rows, the fifth-order end y + h (b1 k1 + b3 k3 + b4 k4 +
-        // b5 k5 + b6 k6), each sum left to right; k: k2..k7 (k7 = f(end)).
-        private static FlightState SpecDp54(FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative[] k)
-        {
-            StateDerivative k2 = model.GeneralDerivative(y.Advance(k1, (1.0 / 5) * h));
-            StateDerivative k3 = model.GeneralDerivative(Sum(y, h, new[] { k1, k2 }, new[] { 3.0 / 40, 9.0 / 40 }));
-            StateDerivative k4 = model.GeneralDerivative(Sum(y, h, new[] { k1, k2, k3 }, new[] { 44.0 / 45, -56.0 / 15, 32.0 / 9 }));
-            StateDerivative k5 = model.GeneralDerivative(
-                Sum(y, h, new[] { k1, k2, k3, k4 }, new[] { 19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729 }));
-            StateDerivative k6 = model.GeneralDerivative(
-                Sum(y, h, new[] { k1, k2, k3, k4, k5 }, new[] { 9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656 }));
-            FlightState end = Sum(y, h, new[] { k1, k3, k4, k5, k6 }, new[] { 35.0 / 384, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84 });
-            end = new FlightState(end.Position, end.Velocity, end.AngularVelocity, y.Time + h);
-            k = new[] { k2, k3, k4, k5, k6, end.IsFinite ? model.GeneralDerivative(end) : default };
-            return end;
-        }
-
-        private static FlightState Sum(in FlightState y, double h, StateDerivative[] k, double[] a)
-        {
-            Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity;
-            for (int i = 0; i < k.Length; i++)
-            {
-                double c = h * a[i];
-                p += k[i].Velocity * c;
-                v += k[i].Acceleration * c;
-                w += k[i].AngularAcceleration * c;
-            }
-
-            return new FlightState(p, v, w, y.Time);
-        }
+        private static FlightState SpecDp54(FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative[] k) =>
+            Textbook.Dp54(s => model.GeneralDerivative(s), y, k1, h, out k);
     }
 }

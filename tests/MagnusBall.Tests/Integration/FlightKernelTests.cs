@@ -121,7 +121,7 @@ namespace MagnusBall.Tests.Integration
                 {
                     // The folded forms: to rounding, within 1e-15 (about 4.5 ulp) of the largest terms (see the two tests
                     // below; ConformanceTests holds every law and form to its bound in ulp).
-                    Assert.That((fast.Acceleration - general.Acceleration).Length, Is.LessThanOrEqualTo(1e-15 * ForceScale(model, state)), $"{state}");
+                    Assert.That((fast.Acceleration - general.Acceleration).Length, Is.LessThanOrEqualTo(1e-15 * Textbook.ForceScale(model, state)), $"{state}");
                 }
                 else
                 {
@@ -130,22 +130,6 @@ namespace MagnusBall.Tests.Integration
 
                 AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
             }
-        }
-
-        // |g| + k s^2 (|C_D| + |C_L|) at the state, with the laws' own coefficients: the largest terms of the acceleration.
-        private static double ForceScale(FlightModel model, in FlightState state)
-        {
-            Vector3d relative = state.Velocity - model.Air.WindAt(state.Position, model.Up);
-            double speed = relative.Length;
-            if (!(model.Air.Density > 0 && speed > FlightModel.MinimumAerodynamicSpeed))
-            {
-                return model.Gravity.Length;
-            }
-
-            double transverse = Vector3d.Cross(state.AngularVelocity, relative / speed).Length;
-            var conditions = new AeroConditions(speed, state.AngularVelocity.Length, transverse, model.Ball.Radius, model.Air.Density, model.Air.DynamicViscosity);
-            double c = Math.Abs(model.Drag?.DragCoefficient(conditions) ?? 0) + Math.Abs(model.Lift?.LiftCoefficient(conditions) ?? 0);
-            return model.Gravity.Length + model.AerodynamicFactor * speed * speed * c;
         }
 
         // A lift law that reads no spin parameter (constant C_L) runs through the folded form (C_L s / |w|) (w x v_rel), and
@@ -646,8 +630,7 @@ namespace MagnusBall.Tests.Integration
             TestContext.WriteLine($"worst velocity difference {worst:F3} of its bound");
         }
 
-        // The gap to the next double up (Math.BitIncrement is not in .NET Framework, which the Mono run compiles against).
-        private static double Ulp(double value) => BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(Math.Abs(value)) + 1) - Math.Abs(value);
+        private static double Ulp(double value) => Textbook.Ulp(value);
 
         [Test]
         public void StraightLineRk4_OfTheThesisModel_IsTheGeneralStep_BitForBit()
@@ -1057,45 +1040,18 @@ namespace MagnusBall.Tests.Integration
             Assert.That(end.IsFinite, Is.True);
         }
 
-        // RungeKutta4.Step as it was written before the kernel: the general derivative at each stage.
+        // The textbook steps (Textbook.cs) on the general derivative, or on the rates given.
         private static FlightState ReferenceRk4(
-            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null)
-        {
-            rates ??= s => model.GeneralDerivative(s);
-            double half = 0.5 * step;
-            StateDerivative k2 = rates(state.Advance(derivative, half));
-            StateDerivative k3 = rates(state.Advance(k2, half));
-            StateDerivative k4 = rates(state.Advance(k3, step));
-            double sixth = step / 6.0;
-            return new FlightState(
-                state.Position + (derivative.Velocity + 2.0 * (k2.Velocity + k3.Velocity) + k4.Velocity) * sixth,
-                state.Velocity + (derivative.Acceleration + 2.0 * (k2.Acceleration + k3.Acceleration) + k4.Acceleration) * sixth,
-                state.AngularVelocity +
-                (derivative.AngularAcceleration + 2.0 * (k2.AngularAcceleration + k3.AngularAcceleration) + k4.AngularAcceleration) * sixth,
-                state.Time + step);
-        }
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null) =>
+            Textbook.Rk4(rates ?? (s => model.GeneralDerivative(s)), state, derivative, step);
 
-        // Dormand & Prince's (1980) tableau through the general derivative at each stage, written out here: the end state
-        // y + h (b1 k1 + b3 k3 + b4 k4 + b5 k5 + b6 k6) and k7 = f(end), each sum left to right as DormandPrince54 forms it.
-        // Every stage's state is formed in full here (positions and spins too), so the stage velocities, the rates and the
-        // end are the tableau's whatever the kernel leaves out. k: k2..k7.
         private static FlightState ReferenceDp54(
-            FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative[] k, Func<FlightState, StateDerivative>? rates = null)
-        {
-            rates ??= s => model.GeneralDerivative(s);
-            StateDerivative k2 = rates(y.Advance(k1, (1.0 / 5) * h));
-            StateDerivative k3 = rates(Sum(y, h, new[] { k1, k2 }, new[] { 3.0 / 40, 9.0 / 40 }));
-            StateDerivative k4 = rates(Sum(y, h, new[] { k1, k2, k3 }, new[] { 44.0 / 45, -56.0 / 15, 32.0 / 9 }));
-            StateDerivative k5 = rates(
-                Sum(y, h, new[] { k1, k2, k3, k4 }, new[] { 19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729 }));
-            StateDerivative k6 = rates(
-                Sum(y, h, new[] { k1, k2, k3, k4, k5 }, new[] { 9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656 }));
-            FlightState end = Sum(y, h, new[] { k1, k3, k4, k5, k6 }, new[] { 35.0 / 384, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84 });
-            end = new FlightState(end.Position, end.Velocity, end.AngularVelocity, y.Time + h);
-            StateDerivative k7 = rates(end);
-            k = new[] { k2, k3, k4, k5, k6, k7 };
-            return end;
-        }
+            FlightModel model, in FlightState y, in StateDerivative k1, double h, out StateDerivative[] k, Func<FlightState, StateDerivative>? rates = null) =>
+            Textbook.Dp54(rates ?? (s => model.GeneralDerivative(s)), y, k1, h, out k);
+
+        private static FlightState ReferenceHeun(
+            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null) =>
+            Textbook.Heun(rates ?? (s => model.GeneralDerivative(s)), state, derivative, step);
 
         private static StateDerivative Rates(in StageRates k) => new StateDerivative(k.Velocity, k.Acceleration, k.AngularAcceleration);
 
@@ -1113,33 +1069,6 @@ namespace MagnusBall.Tests.Integration
                 K6 = rates,
                 K7 = new StateDerivative(nan, nan, nan),
             };
-        }
-
-        private static FlightState Sum(in FlightState y, double h, StateDerivative[] k, double[] a)
-        {
-            Vector3d p = y.Position, v = y.Velocity, w = y.AngularVelocity;
-            for (int i = 0; i < k.Length; i++)
-            {
-                double c = h * a[i];
-                p += k[i].Velocity * c;
-                v += k[i].Acceleration * c;
-                w += k[i].AngularAcceleration * c;
-            }
-
-            return new FlightState(p, v, w, y.Time);
-        }
-
-        private static FlightState ReferenceHeun(
-            FlightModel model, in FlightState state, in StateDerivative derivative, double step, Func<FlightState, StateDerivative>? rates = null)
-        {
-            rates ??= s => model.GeneralDerivative(s);
-            StateDerivative k2 = rates(state.Advance(derivative, step));
-            double half = 0.5 * step;
-            return new FlightState(
-                state.Position + (derivative.Velocity + k2.Velocity) * half,
-                state.Velocity + (derivative.Acceleration + k2.Acceleration) * half,
-                state.AngularVelocity + (derivative.AngularAcceleration + k2.AngularAcceleration) * half,
-                state.Time + step);
         }
 
         private static void AssertSame(in FlightState actual, in FlightState expected, in FlightState from)
