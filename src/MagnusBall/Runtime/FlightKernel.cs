@@ -344,60 +344,72 @@ namespace MagnusBall
     }
 
     /// <summary>
-    /// Picks the kernel for a model's laws: each built-in law maps to its struct; any other law (a user's own
-    /// <see cref="IDragModel"/>, <see cref="ILiftModel"/> or <see cref="ISpinDecayModel"/>) runs through its interface. A
-    /// new built-in law needs only its struct in Aerodynamics/CoefficientLaws.cs and one line here; without them it
-    /// still works, through the interface.
+    /// Builds the kernel for a model's laws: each law's struct comes from the one list of built-in laws
+    /// (<see cref="LawCatalogue"/>); a law it does not list (a user's own <see cref="IDragModel"/>, <see cref="ILiftModel"/>
+    /// or <see cref="ISpinDecayModel"/>) runs through its interface. A new built-in law needs its struct in
+    /// Aerodynamics/CoefficientLaws.cs and its line in the catalogue; nothing here.
     /// </summary>
     internal static class FlightKernelFactory
     {
         internal static FlightKernel Create(FlightModel model)
         {
             bool aero = model.Air.Density > 0;
-            IDragModel? drag = aero ? model.Drag : null;
-            switch (drag)
+            var withDrag = new WithDrag(model);
+            return LawCatalogue.Drag<WithDrag, FlightKernel>(aero ? model.Drag : null, ref withDrag);
+        }
+
+        private readonly struct WithDrag : IDragVisitor<FlightKernel>
+        {
+            private readonly FlightModel _model;
+
+            internal WithDrag(FlightModel model) => _model = model;
+
+            public FlightKernel Visit<TDrag>(TDrag drag, in LawTraits traits)
+                where TDrag : struct, IDragLaw
             {
-                case null: return WithDrag(model, default(NoDrag));
-                case ConstantDrag c: return WithDrag(model, new ConstantDragLaw(c.Value));
-                case StepanekDrag _: return WithDrag(model, default(StepanekDragLaw));
-                case LinearSpinDrag l: return WithDrag(model, new LinearSpinDragLaw(l));
-                case NathanBaseballDrag _: return WithDrag(model, default(NathanBaseballDragLaw));
-                case GoffCarreSoccerDrag _: return WithDrag(model, default(GoffCarreSoccerDragLaw));
-                default: return WithDrag(model, new InterfaceDrag(drag));
+                var withLift = new WithLift<TDrag>(_model, drag);
+                return LawCatalogue.Lift<WithLift<TDrag>, FlightKernel>(_model.Air.Density > 0 ? _model.Lift : null, ref withLift);
             }
         }
 
-        private static FlightKernel WithDrag<TDrag>(FlightModel model, TDrag drag)
+        private readonly struct WithLift<TDrag> : ILiftVisitor<FlightKernel>
             where TDrag : struct, IDragLaw
         {
-            ILiftModel? lift = model.Air.Density > 0 ? model.Lift : null;
-            switch (lift)
+            private readonly FlightModel _model;
+            private readonly TDrag _drag;
+
+            internal WithLift(FlightModel model, TDrag drag)
             {
-                case null: return WithLift(model, drag, default(NoLift));
-                case ConstantLift c: return WithLift(model, drag, new ConstantLiftLaw(c.Value));
-                case StepanekLift _: return WithLift(model, drag, default(StepanekLiftLaw));
-                case LinearSpinLift l: return WithLift(model, drag, new LinearSpinLiftLaw(l.Slope));
-                case NathanBaseballLift _: return WithLift(model, drag, default(NathanBaseballLiftLaw));
-                case PiecewiseLinearLift t: return WithLift(model, drag, new PiecewiseLinearLiftLaw(t));
-                default: return WithLift(model, drag, new InterfaceLift(lift));
+                _model = model;
+                _drag = drag;
+            }
+
+            public FlightKernel Visit<TLift>(TLift lift, in LawTraits traits)
+                where TLift : struct, ILiftLaw
+            {
+                var withDecay = new WithDecay<TDrag, TLift>(_model, _drag, lift);
+                return LawCatalogue.SpinDecay<WithDecay<TDrag, TLift>, FlightKernel>(_model.SpinDecay, ref withDecay);
             }
         }
 
-        private static FlightKernel WithLift<TDrag, TLift>(FlightModel model, TDrag drag, TLift lift)
+        private readonly struct WithDecay<TDrag, TLift> : ISpinDecayVisitor<FlightKernel>
             where TDrag : struct, IDragLaw
             where TLift : struct, ILiftLaw
         {
-            switch (model.SpinDecay)
+            private readonly FlightModel _model;
+            private readonly TDrag _drag;
+            private readonly TLift _lift;
+
+            internal WithDecay(FlightModel model, TDrag drag, TLift lift)
             {
-                case null: return new FlightKernel<TDrag, TLift, NoSpinDecay>(model, drag, lift, default);
-                case ExponentialSpinDecay e:
-                    return new FlightKernel<TDrag, TLift, ExponentialSpinDecayLaw>(model, drag, lift, new ExponentialSpinDecayLaw(e.TimeConstant));
-                case SpeedProportionalSpinDecay s:
-                    return new FlightKernel<TDrag, TLift, SpeedProportionalSpinDecayLaw>(
-                        model, drag, lift, new SpeedProportionalSpinDecayLaw(s.RatePerMetre));
-                default:
-                    return new FlightKernel<TDrag, TLift, InterfaceSpinDecay>(model, drag, lift, new InterfaceSpinDecay(model.SpinDecay));
+                _model = model;
+                _drag = drag;
+                _lift = lift;
             }
+
+            public FlightKernel Visit<TDecay>(TDecay decay, in LawTraits traits)
+                where TDecay : struct, ISpinDecayLaw =>
+                new FlightKernel<TDrag, TLift, TDecay>(_model, _drag, _lift, decay);
         }
     }
 }

@@ -91,8 +91,9 @@ namespace MagnusBall
             _windVaries = air.WindProfile != null && Up.LengthSquared > 0;
             _wind = air.Wind;
             _gravityLength = gravity.Length;
-            _coefficientBound = !_hasAero ? 0 : CoefficientBound(drag) is double d && CoefficientBound(lift) is double l ? d + l : -1;
-            _decayRateBound = spinDecay == null ? 0 : spinDecay is ExponentialSpinDecay e ? 1.0 / e.TimeConstant : double.PositiveInfinity;
+            // The laws' bounds from the one list of built-in laws (LawCatalogue): a law it does not bound has none.
+            _coefficientBound = !_hasAero ? 0 : LawCatalogue.TraitsOf(drag).Bound is double d && LawCatalogue.TraitsOf(lift).Bound is double l ? d + l : -1;
+            _decayRateBound = LawCatalogue.TraitsOf(spinDecay).Bound ?? double.PositiveInfinity;
             _kernel = FlightKernelFactory.Create(this);
         }
 
@@ -347,19 +348,6 @@ namespace MagnusBall
 
             return new StateDerivative(state.Velocity, acceleration, spinAcceleration);
         }
-
-        // The largest |C| a built-in law can give (null when unknown: a user's law, or one whose bound is not worked out).
-        // Stepanek drag: 0.508 + (22.053 + ...)^(-2/5) <= 0.508 + 22.053^(-2/5) = 0.7981; Stepanek lift: S / (2.022 S + 0.981)
-        // < 1/2.022 = 0.4946 (Stepanek 1988's fits, Aerodynamics/Stepanek.cs).
-        private static double? CoefficientBound(object? law) => law switch
-        {
-            null => 0,
-            ConstantDrag c => Math.Abs(c.Value),
-            ConstantLift c => Math.Abs(c.Value),
-            StepanekDrag _ => 0.8,
-            StepanekLift _ => 0.5,
-            _ => null,
-        };
 
         /// <summary>
         /// True when <see cref="StiffnessRate"/> over a step of <paramref name="step"/> s from <paramref name="state"/> is

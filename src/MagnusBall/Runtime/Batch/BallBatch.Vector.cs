@@ -38,7 +38,7 @@ namespace MagnusBall.Batch
                 return;
             }
 
-            bool spins = laws.Decay != VectorLaws.DecayKind.None;
+            bool spins = laws.Decay != Aerodynamics.LaneForm.Off;
 
             // The kernel's inner-stage spin rates where it scales them from the step's (FlightKernel.StageSpinFactors).
             bool scaled = laws.ScalesStageSpinRates && FlightKernel.WithinOneTimeConstant(laws.DecayFactor, step); // the kernel's condition

@@ -11,31 +11,10 @@ namespace MagnusBall.Batch
     /// </summary>
     internal readonly struct VectorLaws
     {
-        internal enum DragKind
-        {
-            None,
-            Constant,
-            Stepanek,
-        }
-
-        internal enum LiftKind
-        {
-            None,
-            Constant,
-            LinearSpin,
-            Stepanek,
-        }
-
-        internal enum DecayKind
-        {
-            None,
-            Exponential,
-        }
-
         internal readonly bool Supported;
-        internal readonly DragKind Drag;
-        internal readonly LiftKind Lift;
-        internal readonly DecayKind Decay;
+        internal readonly LaneForm Drag;  // Off, Constant or Stepanek where Supported
+        internal readonly LaneForm Lift;  // Off, Constant, LinearSpin or Stepanek where Supported
+        internal readonly LaneForm Decay; // Off or Exponential where Supported
         private readonly double _dragConstant;  // -k C_D (constant drag)
         private readonly double _negativeFactor; // -k
         private readonly double _factor;         // k
@@ -49,7 +28,7 @@ namespace MagnusBall.Batch
         private readonly double[] _lanes; // Stepanek's G lane by lane (one batch's scratch; a batch steps on one thread)
 
         private VectorLaws(
-            bool supported, DragKind drag, LiftKind lift, DecayKind decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
+            bool supported, LaneForm drag, LaneForm lift, LaneForm decay, double dragValue, double liftValue, double decayFactor, FlightModel model)
         {
             Supported = supported;
             Drag = drag;
@@ -58,7 +37,7 @@ namespace MagnusBall.Batch
             _factor = model.AerodynamicFactor;
             _negativeFactor = -_factor;
             _dragConstant = -_factor * dragValue;
-            _liftConstant = lift == LiftKind.Constant ? _factor * liftValue : liftValue;
+            _liftConstant = lift == LaneForm.Constant ? _factor * liftValue : liftValue;
             _decayFactor = decayFactor;
             _radius = model.Ball.Radius;
             _gravity = model.Gravity;
@@ -68,69 +47,24 @@ namespace MagnusBall.Batch
             _lanes = new double[Vector<double>.Count];
         }
 
+        /// <summary>
+        /// The lanes for a model's laws, each law's form read from the one list of built-in laws (<see cref="LawCatalogue"/>):
+        /// not <see cref="Supported"/> where a law has no lane form (<see cref="LaneForm.Scalar"/>) or the wind varies.
+        /// </summary>
         internal static VectorLaws For(FlightModel model)
         {
             bool aero = model.Air.Density > 0;
-            bool supported = !(model.Air.WindProfile != null && model.Up.LengthSquared > 0);
-            DragKind drag = DragKind.None;
-            double dragValue = 0;
-            switch (aero ? model.Drag : null)
-            {
-                case null:
-                    break;
-                case ConstantDrag c:
-                    drag = DragKind.Constant;
-                    dragValue = c.Value;
-                    break;
-                case StepanekDrag _:
-                    // The lanes call the kernel's scalar G (StepanekDrag.SpinPart, SpinPartOfSquare) with the kernel's inputs,
-                    // so every radius and spin is the kernel's case too.
-                    drag = DragKind.Stepanek;
-                    break;
-                default:
-                    supported = false;
-                    break;
-            }
-
-            LiftKind lift = LiftKind.None;
-            double liftValue = 0;
-            switch (aero ? model.Lift : null)
-            {
-                case null:
-                    break;
-                case ConstantLift c:
-                    lift = LiftKind.Constant;
-                    liftValue = c.Value;
-                    break;
-                case LinearSpinLift l:
-                    lift = LiftKind.LinearSpin;
-                    liftValue = l.Slope;
-                    break;
-                case StepanekLift _:
-                    lift = LiftKind.Stepanek;
-                    break;
-                default:
-                    supported = false;
-                    break;
-            }
-
-            DecayKind decay = DecayKind.None;
-            double decayFactor = 0;
-            switch (model.SpinDecay)
-            {
-                case null:
-                    break;
-                case ExponentialSpinDecay e:
-                    decay = DecayKind.Exponential;
-                    decayFactor = -1.0 / e.TimeConstant;
-                    break;
-                default:
-                    supported = false;
-                    break;
-            }
-
-            return new VectorLaws(supported, drag, lift, decay, dragValue, liftValue, decayFactor, model);
+            LawTraits drag = LawCatalogue.TraitsOf(aero ? model.Drag : null);
+            LawTraits lift = LawCatalogue.TraitsOf(aero ? model.Lift : null);
+            LawTraits decay = LawCatalogue.TraitsOf(model.SpinDecay);
+            bool supported = !(model.Air.WindProfile != null && model.Up.LengthSquared > 0) &&
+                drag.Lanes != LaneForm.Scalar && lift.Lanes != LaneForm.Scalar && decay.Lanes != LaneForm.Scalar;
+            return new VectorLaws(
+                supported, Form(drag), Form(lift), Form(decay), drag.Parameter, lift.Parameter, decay.Parameter, model);
         }
+
+        // A law without a lane form counts as off in the fields (the batch then steps ball by ball: Supported is false).
+        private static LaneForm Form(in LawTraits traits) => traits.Lanes == LaneForm.Scalar ? LaneForm.Off : traits.Lanes;
 
         /// <summary>
         /// The acceleration and spin acceleration at velocity v and spin w, lane by lane (the kernel's Rates).
@@ -152,7 +86,7 @@ namespace MagnusBall.Batch
         /// True when the kernel's RK4 takes its inner stages' spin rates scaled from the step's (FlightKernel's Rk4Loop:
         /// Stepanek's lift folded, exponential decay); the batch then passes the same rates to Rates.
         /// </summary>
-        internal bool ScalesStageSpinRates => Lift == LiftKind.Stepanek && _foldsLift && Decay == DecayKind.Exponential;
+        internal bool ScalesStageSpinRates => Lift == LaneForm.Stepanek && _foldsLift && Decay == LaneForm.Exponential;
 
         /// <summary>
         /// The rates, with the spin rate given (<paramref name="hasStageSpinRate"/>: an RK4 inner stage's rate scaled from the
@@ -172,7 +106,7 @@ namespace MagnusBall.Batch
             ax = gx;
             ay = gy;
             az = gz;
-            if (Decay == DecayKind.Exponential)
+            if (Decay == LaneForm.Exponential)
             {
                 var c = new Vector<double>(_decayFactor);
                 sx = wx * c;
@@ -186,7 +120,7 @@ namespace MagnusBall.Batch
                 sz = Vector<double>.Zero;
             }
 
-            if (Drag == DragKind.None && Lift == LiftKind.None)
+            if (Drag == LaneForm.Off && Lift == LaneForm.Off)
             {
                 return;
             }
@@ -194,22 +128,22 @@ namespace MagnusBall.Batch
             Vector<double> rx = vx - new Vector<double>(_wind.X), ry = vy - new Vector<double>(_wind.Y), rz = vz - new Vector<double>(_wind.Z);
             Vector<double> speed = Vector.SquareRoot(rx * rx + ry * ry + rz * rz);
             Vector<long> aero = Vector.GreaterThan(speed, new Vector<double>(FlightModel.MinimumAerodynamicSpeed));
-            bool needsSpinRate = Lift != LiftKind.None || Drag == DragKind.Stepanek;
+            bool needsSpinRate = Lift != LaneForm.Off || Drag == LaneForm.Stepanek;
             Vector<double> spinRate = hasStageSpinRate ? stageSpinRate : needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
             // r / s: for Stepanek's drag outside the fold (the folded drag forms it per lane where its table declines), the
             // linear lift and Stepanek's lift outside the fold.
-            bool needsRadiusOverSpeed = (Drag == DragKind.Stepanek && !(Lift == LiftKind.Stepanek && _foldsLift)) ||
-                Lift == LiftKind.LinearSpin || (Lift == LiftKind.Stepanek && !_foldsLift);
+            bool needsRadiusOverSpeed = (Drag == LaneForm.Stepanek && !(Lift == LaneForm.Stepanek && _foldsLift)) ||
+                Lift == LaneForm.LinearSpin || (Lift == LaneForm.Stepanek && !_foldsLift);
             Vector<double> inverse = needsRadiusOverSpeed ? new Vector<double>(_radius) / speed : Vector<double>.Zero;
 
-            if (Lift == LiftKind.Constant && Drag != DragKind.Stepanek)
+            if (Lift == LaneForm.Constant && Drag != LaneForm.Stepanek)
             {
                 // No law reads a spin parameter: the kernel's folded form. Where the lift acts,
                 // g + s ((-k C_D) v_rel + (k C_L / |w|) (w x v_rel)); elsewhere the drag alone, g + v_rel ((-k C_D) s).
                 Vector<double> liftScale = new Vector<double>(_liftConstant) * (Vector<double>.One / spinRate);
                 Vector<long> lifts = aero & Vector.GreaterThan(spinRate, new Vector<double>(FlightModel.MinimumLiftSpinRate));
                 Vector<double> ux = (wy * rz - wz * ry) * liftScale, uy = (wz * rx - wx * rz) * liftScale, uz = (wx * ry - wy * rx) * liftScale;
-                if (Drag == DragKind.Constant)
+                if (Drag == LaneForm.Constant)
                 {
                     var dragFactor = new Vector<double>(_dragConstant);
                     ux = rx * dragFactor + ux;
@@ -227,7 +161,7 @@ namespace MagnusBall.Batch
                 return;
             }
 
-            if (Lift == LiftKind.Stepanek && _foldsLift)
+            if (Lift == LaneForm.Stepanek && _foldsLift)
             {
                 // The kernel's folded Stepanek lift and drag (FlightKernel's TryFoldedRates), the same operations. Lanes outside
                 // the range the kernel folds in (where it takes the general formula) are marked for the per-ball step.
@@ -248,7 +182,7 @@ namespace MagnusBall.Batch
                         (Vector.GreaterThanOrEqual(transverseSquared, low) & Vector.LessThanOrEqual(transverseSquared, high)));
                 unfolded = (hasStageSpinRate ? aero : lifts) & ~inRange;
                 Vector<double> fx, fy, fz;
-                if (Drag == DragKind.Stepanek)
+                if (Drag == LaneForm.Stepanek)
                 {
                     // z = Kappa s^2 / (r |w|)^2 as the kernel forms it, then G lane by lane through the kernel's own function.
                     Vector<double> z = squared * (new Vector<double>(_kappaOverRadiusSquared) * (inverseSpinRate * inverseSpinRate));
@@ -273,7 +207,7 @@ namespace MagnusBall.Batch
                     ay = Vector.ConditionalSelect(aero, gy + ry * dragScale, gy);
                     az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
                 }
-                else if (Drag == DragKind.Constant)
+                else if (Drag == LaneForm.Constant)
                 {
                     Vector<double> dragScale = new Vector<double>(_dragConstant) * speed;
                     ax = Vector.ConditionalSelect(aero, gx + rx * dragScale, gx);
@@ -296,10 +230,10 @@ namespace MagnusBall.Batch
                 return;
             }
 
-            if (Drag != DragKind.None)
+            if (Drag != LaneForm.Off)
             {
                 Vector<double> dragScale;
-                if (Drag == DragKind.Constant)
+                if (Drag == LaneForm.Constant)
                 {
                     dragScale = new Vector<double>(_dragConstant) * speed;
                 }
@@ -314,13 +248,13 @@ namespace MagnusBall.Batch
                 az = Vector.ConditionalSelect(aero, gz + rz * dragScale, gz);
             }
 
-            if (Lift != LiftKind.None)
+            if (Lift != LaneForm.Off)
             {
                 Vector<double> unit = Vector<double>.One / speed;
                 Vector<double> dx = rx * unit, dy = ry * unit, dz = rz * unit;
                 Vector<double> cx = wy * dz - wz * dy, cy = wz * dx - wx * dz, cz = wx * dy - wy * dx;
                 Vector<double> liftTimesFactor;
-                if (Lift == LiftKind.Constant)
+                if (Lift == LaneForm.Constant)
                 {
                     liftTimesFactor = new Vector<double>(_liftConstant);
                 }
@@ -328,7 +262,7 @@ namespace MagnusBall.Batch
                 {
                     Vector<double> transverse = Vector.SquareRoot(cx * cx + cy * cy + cz * cz);
                     Vector<double> sPerp = transverse * inverse;
-                    Vector<double> cl = Lift == LiftKind.LinearSpin ? new Vector<double>(_liftConstant) * sPerp : StepanekLift(sPerp);
+                    Vector<double> cl = Lift == LaneForm.LinearSpin ? new Vector<double>(_liftConstant) * sPerp : StepanekLift(sPerp);
                     liftTimesFactor = new Vector<double>(_factor) * cl;
                 }
 
