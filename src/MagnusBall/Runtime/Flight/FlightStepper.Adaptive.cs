@@ -83,7 +83,7 @@ namespace MagnusBall.Flight
 
             _now.NextAdaptiveStep = result.NextStep;
             endTime = end.Time;
-            if ((EventSet == null || result.StaysClearOf(EventSet, landings: Contact == null)) &&
+            if ((EventSet == null || StaysClearOf(result, EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans
@@ -125,5 +125,37 @@ namespace MagnusBall.Flight
             var hermite = HermiteSegment.OfTakenStep(result.Start, result.StartDerivative, end, endDerivative);
             return HandlePiece(ref result, hermite, end, endDerivative, piece, stopAt, implicitPiece: false);
         }
-    }
+
+        /// <summary>
+        /// True when the adaptive step provably holds none of the events <paramref name="events"/> watches, with the landing
+        /// on its ground only when <paramref name="landings"/> (as FlightEventSet.Scan): its scan would find nothing. The
+        /// bounds are the step's (DormandPrince54Step.StaysClearOf, StaysClearOfApex); which events to ask about is the
+        /// flight's, so it lives here and the integration layer knows no events.
+        /// </summary>
+        private static bool StaysClearOf(in DormandPrince54Step step, FlightEventSet events, bool landings)
+        {
+            Plane? ground = landings ? events.Ground : null;
+            if (ground.HasValue && !step.StaysClearOf(ground.Value, CrossingDirection.AgainstNormal))
+            {
+                return false;
+            }
+
+            Vector3d up = events.Up;
+            if (up.LengthSquared > 0 && !step.StaysClearOfApex(up))
+            {
+                return false;
+            }
+
+            Plane[] planes = events.PlaneArray;
+            for (int i = 0; i < planes.Length; i++)
+            {
+                if (!step.StaysClearOf(planes[i], CrossingDirection.AlongNormal))
+                {
+                    return false;
+                }
+            }
+
+            return true;
+        }
+}
 }

@@ -1,6 +1,5 @@
 using System;
 using System.Runtime.CompilerServices;
-using MagnusBall.Flight;
 
 namespace MagnusBall.Integration
 {
@@ -236,36 +235,6 @@ namespace MagnusBall.Integration
         {
             var condition = new UpSpeed(up);
             return StaysClear(condition, condition.QuickValue(Start), condition.QuickValue(Stages.End));
-        }
-
-        /// <summary>
-        /// True when the step provably holds none of the events <paramref name="events"/> watches, with the landing on its
-        /// ground only when <paramref name="landings"/> (as FlightEventSet.Scan): its scan would find nothing.
-        /// </summary>
-        internal readonly bool StaysClearOf(FlightEventSet events, bool landings)
-        {
-            Plane? ground = landings ? events.Ground : null;
-            if (ground.HasValue && !StaysClearOf(ground.Value, CrossingDirection.AgainstNormal))
-            {
-                return false;
-            }
-
-            Vector3d up = events.Up;
-            if (up.LengthSquared > 0 && !StaysClearOfApex(up))
-            {
-                return false;
-            }
-
-            Plane[] planes = events.PlaneArray;
-            for (int i = 0; i < planes.Length; i++)
-            {
-                if (!StaysClearOf(planes[i], CrossingDirection.AlongNormal))
-                {
-                    return false;
-                }
-            }
-
-            return true;
         }
 
         /// <summary>Samples per step when looking for a sign change of a condition on the quartic interpolant.</summary>
