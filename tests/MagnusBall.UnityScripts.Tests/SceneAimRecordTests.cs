@@ -72,7 +72,7 @@ namespace MagnusBall.UnityScripts.Tests
             SceneSettings settings = Simulation.Settings;
             var solver = new MagnusBall.Queries.AimSolver(settings.Model, Simulation.Events.Ground!.Value, ShotSimulation.MaxFlightSeconds);
             Assert.That(solver.IsAdaptive, Is.True);
-            var spin = new MagnusBall.Queries.LaunchSpin(MagnusBall.Spin.FromRpm(shot.TopspinRpm), -MagnusBall.Spin.FromRpm(shot.SidespinRpm));
+            var spin = new MagnusBall.LaunchSpin(MagnusBall.Spin.FromRpm(shot.TopspinRpm), -MagnusBall.Spin.FromRpm(shot.SidespinRpm));
             var target = new MagnusBall.Vector3d(r.X, 0, r.Z) + TennisCourt.Up * settings.Ball.Radius;
             MagnusBall.Queries.AimSolution a = solver.AnglesToReach(shot.Start, shot.Speed, spin, target);
             Assert.That(a.IsSolved, Is.True);

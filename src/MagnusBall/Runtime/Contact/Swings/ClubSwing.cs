@@ -1,5 +1,4 @@
 using System;
-using MagnusBall.Queries;
 
 namespace MagnusBall.Contact.Swings
 {

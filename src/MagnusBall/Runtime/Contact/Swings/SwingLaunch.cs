@@ -1,5 +1,4 @@
 using System;
-using MagnusBall.Queries;
 
 namespace MagnusBall.Contact.Swings
 {
@@ -67,7 +66,7 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>
         /// The spin by effect relative to the launch direction, in the aim solvers' convention
-        /// (<see cref="Queries.LaunchSpin"/>: topspin dips, negative is backspin; sidespin curves toward the frame's side;
+        /// (<see cref="LaunchSpin"/>: topspin dips, negative is backspin; sidespin curves toward the frame's side;
         /// gyro about the direction of flight). Resolving it at this launch's direction gives <see cref="AngularVelocity"/> back.
         /// </summary>
         public LaunchSpin LaunchSpin

@@ -1,6 +1,6 @@
 using System;
 
-namespace MagnusBall.Queries
+namespace MagnusBall
 {
     /// <summary>
     /// The directions a launch is described in: up, a horizontal forward direction and a horizontal side
@@ -12,7 +12,7 @@ namespace MagnusBall.Queries
     /// so which physical side that is depends on the frame's handedness: in a right-handed frame it is the
     /// left of forward (z-up, x forward: side = +y), in Unity's left-handed y-up frame it is the right.
     /// Where it matters, work with the returned world vectors (<see cref="Direction"/>,
-    /// <see cref="AimSolution.Velocity"/>), which mean the same thing in every frame.
+    /// the aim solver's <c>AimSolution.Velocity</c>), which mean the same thing in every frame.
     /// </remarks>
     public readonly struct LaunchFrame
     {
