@@ -201,7 +201,7 @@ namespace MagnusBall.Cli.Tests
         [TestCase("""{"air": {"altitudeM": 1000, "pressurePa": 90000}}""", "scenarios[0].air.pressurePa: altitudeM sets the pressure")]
         [TestCase("""{"air": {"temperatureC": 100}}""", "scenarios[0].air.temperatureC: must be in [-90, 60]; got 100")]
         [TestCase("""{"air": {"relativeHumidity": 1.5}}""", "scenarios[0].air.relativeHumidity: must be in [0, 1]; got 1.5")]
-        [TestCase("""{"air": {"pressurePa": -5}}""", "scenarios[0].air.pressurePa: must be finite and > 0; got -5")]
+        [TestCase("""{"air": {"pressurePa": -5}}""", "scenarios[0].air.pressurePa: must be a finite pressure of at least 5000 Pa (the air at 20 km, the highest altitude AtAltitude takes); got -5 Pa")]
         [TestCase("""{"air": {"altitudeM": 50000}}""", "scenarios[0].air.altitudeM: must be in [-1000, 20000]; got 50000")]
         [TestCase("""{"air": {"temperatureC": 20, "humidity": 0.5}}""", "scenarios[0].air.humidity: unknown field")]
         [TestCase("""{"air": {"windProfile": {"roughnessLength": 0}}}""", "scenarios[0].air.windProfile.roughnessLength: must be finite and > 0")]

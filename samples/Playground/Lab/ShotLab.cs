@@ -201,7 +201,8 @@ namespace MagnusBall.Playground.Lab
         };
 
         // The reference landing depends on the launch and the air, not on the integrator or its rate: the last few are
-        // kept, so changing the method, its rate or the second shot does not fly the long reference again.
+        // kept, keyed by every other setting, so changing the method, its rate or the second shot's does not fly the
+        // long reference again.
         private static readonly Dictionary<string, FlightState?> References = new Dictionary<string, FlightState?>();
 
         private static FlightState? ReferenceLanding(ShotSettings s, FlightModel model, FlightEventSet events, in FlightState start, Scene scene)
@@ -210,6 +211,8 @@ namespace MagnusBall.Playground.Lab
             key.Integrator = "rk4";
             key.StepsPerSecond = 240;
             key.Compare = CompareWith.None;
+            key.CompareIntegrator = "rk4";
+            key.CompareStepsPerSecond = 240;
             string query = key.ToQuery() + "&t=" + ShotSettings.Format(s.MaxFlightSeconds);
             if (!References.TryGetValue(query, out FlightState? landing))
             {

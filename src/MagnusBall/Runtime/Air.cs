@@ -112,7 +112,7 @@ namespace MagnusBall
         /// 15 degC, 101325 Pa, dry: 1.2250 kg/m^3.
         /// </summary>
         /// <param name="temperatureCelsius">Temperature, degC; in [-90, 60].</param>
-        /// <param name="pressurePascals">Station (not sea-level-corrected) pressure, Pa; finite and &gt; 0.</param>
+        /// <param name="pressurePascals">Station (not sea-level-corrected) pressure, Pa; finite and at least 5000 (the air at 20 km).</param>
         /// <param name="relativeHumidity">Relative humidity as a fraction in [0, 1]; default 0 (dry).</param>
         /// <param name="wind">Uniform wind, m/s; finite. Default: still air.</param>
         /// <exception cref="System.ArgumentException">A value is outside its range; the message names it.</exception>
@@ -145,8 +145,9 @@ namespace MagnusBall
                 throw new System.ArgumentOutOfRangeException(
                     nameof(relativeHumidity),
                     relativeHumidity,
-                    $"relativeHumidity must leave the vapour pressure below the standard pressure at {Require.Format(altitudeMetres)} m " +
-                    $"({Require.Format(pressure)} Pa); got {Require.Format(relativeHumidity)}, a vapour pressure of {Require.Format(vapour)} Pa at {Require.Format(temperature)} degC.");
+                    $"relativeHumidity must be below {Require.Format(pressure / Atmosphere.SaturationVapourPressure(temperature))} at {Require.Format(altitudeMetres)} m and " +
+                    $"{Require.Format(temperature)} degC (the vapour pressure must stay below the standard pressure there, {Require.Format(pressure)} Pa); " +
+                    $"got {Require.Format(relativeHumidity)}, a vapour pressure of {Require.Format(vapour)} Pa.");
             }
 
             return FromWeather(temperature, pressure, relativeHumidity, wind);

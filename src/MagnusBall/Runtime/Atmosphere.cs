@@ -57,6 +57,10 @@ namespace MagnusBall
         /// <summary>Highest temperature accepted, 60 degC.</summary>
         public const double MaximumTemperatureCelsius = 60.0;
 
+        // The lowest station pressure taken, Pa: below the ISA's 5474.9 Pa at 20 km (AtAltitude's top), above any pressure
+        // in kPa (about 101) or hPa (about 1013) given by mistake.
+        private const double MinimumPressurePascals = 5000.0;
+
         // g0 M / (R* L) for the ISA troposphere: 9.80665 * 0.0289644 / (8.31432 * 0.0065), with the ISA's R* = 8.31432.
         private const double PressureExponent = 5.255877;
 
@@ -80,14 +84,24 @@ namespace MagnusBall
         /// 15 degC, 101325 Pa, dry: 1.2250 kg/m^3.
         /// </summary>
         /// <param name="temperatureCelsius">Temperature, degC; in [-90, 60].</param>
-        /// <param name="pressurePascals">Total (station) pressure, Pa; finite and &gt; 0.</param>
+        /// <param name="pressurePascals">Total (station) pressure, Pa; finite and at least 5000 (the air at 20 km), so that a
+        /// pressure given in kPa or hPa by mistake is refused.</param>
         /// <param name="relativeHumidity">Relative humidity as a fraction, in [0, 1] (0.5 is 50 %).</param>
         /// <exception cref="ArgumentOutOfRangeException">A value is out of range, or the pressure is not above the vapour
         /// pressure (a pressure in kPa or hPa by mistake; the message names pressurePascals).</exception>
         public static double MoistAirDensity(double temperatureCelsius, double pressurePascals, double relativeHumidity = 0)
         {
             Require.InRange(temperatureCelsius, MinimumTemperatureCelsius, MaximumTemperatureCelsius, nameof(temperatureCelsius));
-            Require.Positive(pressurePascals, nameof(pressurePascals));
+            if (!(pressurePascals >= MinimumPressurePascals) || double.IsPositiveInfinity(pressurePascals))
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(pressurePascals),
+                    pressurePascals,
+                    $"pressurePascals must be a finite pressure of at least {Require.Format(MinimumPressurePascals)} Pa (the air at 20 km, the " +
+                    $"highest altitude AtAltitude takes); got {Require.Format(pressurePascals)} Pa. Station pressures on the ground are about " +
+                    "30000-110000 Pa: was it given in kPa or hPa (101.325 kPa = 1013.25 hPa = 101325 Pa)?");
+            }
+
             Require.InRange(relativeHumidity, 0, 1, nameof(relativeHumidity));
             double vapour = relativeHumidity * SaturationVapourPressure(temperatureCelsius);
             if (vapour >= pressurePascals)

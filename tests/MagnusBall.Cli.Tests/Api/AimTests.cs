@@ -73,6 +73,28 @@ namespace MagnusBall.Cli.Tests.Api
         }
 
         [Test]
+        public void StabilityCheck_TakesTheLaunchIntoTheWind()
+        {
+            // A 2.7 g, 20 mm ball (C_D 0.55, no spin) at 50 m/s, Euler at 0.1 s: h sigma = 0.1 x 1.1 x 2 k (s + g h) C_D is
+            // 1.74 in still air, within Euler's 2, and 2.76 into a 30 m/s wind, beyond it: the check takes the launch
+            // the request can make with the largest air speed, whichever way the wind blows.
+            JsonObject root = Aim("""{"kind": "elevation-to-reach", "speed": 50, "target": [20, 0, 0]}""");
+            JsonObject a = root["aims"]![0]!.AsObject();
+            a["ball"] = new JsonObject { ["mass"] = 0.0027, ["radius"] = 0.02 };
+            a["aero"] = new JsonObject { ["drag"] = new JsonObject { ["model"] = "constant", ["cd"] = 0.55 } };
+            a["launch"] = new JsonObject { ["position"] = new JsonArray(0, 0, 1) };
+            a["integrator"] = "euler";
+            a["step"] = 0.1;
+            CliRun still = Run(root);
+            Assert.That(still.ExitCode, Is.EqualTo(0), still.Stderr);
+
+            a["air"] = new JsonObject { ["density"] = 1.21, ["wind"] = new JsonArray(0, 30, 0) }; // a crosswind
+            CliRun windy = Run(root);
+            Assert.That(windy.ExitCode, Is.EqualTo(2), windy.Stdout);
+            Assert.That(windy.Stderr, Does.StartWith("magnusball: aims[0].step: a step of 0.1 s is beyond euler's stability bound"));
+        }
+
+        [Test]
         public void MinimumElevationToClear_TouchesTheTape()
         {
             JsonElement s = Solve("""{"kind": "minimum-elevation-to-clear", "speed": 30, "plane": {"point": [11.885, 0, 0], "normal": [1, 0, 0]}, "height": 0.914}""");

@@ -101,11 +101,14 @@ namespace MagnusBall.Cli.Tests.Api
             // h sigma / bound) and the formula's order of operations differ by rounding only.
             Assert.That(named, Is.EqualTo(h).Within(1e-9 * h));
 
-            // Just below it: taken, and the flight lands.
-            S(root)["step"] = h * 0.99;
-            CliRun again = CliRun.Simulate(root);
-            Assert.That(again.ExitCode, Is.EqualTo(0), again.Stderr);
-            Assert.That(again.FirstResult().GetProperty("landing").ValueKind, Is.EqualTo(System.Text.Json.JsonValueKind.Object));
+            // The named step, and one just below it: taken, and the flight lands.
+            foreach (double taken in new[] { named, h * 0.99 })
+            {
+                S(root)["step"] = taken;
+                CliRun again = CliRun.Simulate(root);
+                Assert.That(again.ExitCode, Is.EqualTo(0), again.Stderr);
+                Assert.That(again.FirstResult().GetProperty("landing").ValueKind, Is.EqualTo(System.Text.Json.JsonValueKind.Object));
+            }
         }
 
         [Test]

@@ -94,8 +94,13 @@ namespace MagnusBall.Tests.Aerodynamics
             Assert.That(() => Air.FromWeather(50, 5000, 1), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("pressurePascals"));
             Assert.That(() => Air.FromWeather(20, 101.325, 0.5), Throws.InstanceOf<ArgumentException>()
                 .With.Property("ParamName").EqualTo("pressurePascals").And.Message.Contains("kPa"));
+            // In hPa, dry and cool (the vapour pressure is no help there): below the 5000 Pa floor, the air at 20 km.
+            Assert.That(() => Air.FromWeather(15, 1013.25, 0), Throws.InstanceOf<ArgumentException>()
+                .With.Property("ParamName").EqualTo("pressurePascals").And.Message.Contains("hPa"));
+            Assert.That(Air.AtAltitude(20000).Density, Is.GreaterThan(0), "AtAltitude's top is above the floor");
             // AtAltitude takes no pressure: there the humidity is named (60 degC saturated at 20 km, 5.5 kPa).
-            Assert.That(() => Air.AtAltitude(20000, 60, 1), Throws.InstanceOf<ArgumentException>().With.Property("ParamName").EqualTo("relativeHumidity"));
+            Assert.That(() => Air.AtAltitude(20000, 60, 1), Throws.InstanceOf<ArgumentException>()
+                .With.Property("ParamName").EqualTo("relativeHumidity").And.Message.Contains("must be below 0.27"));
             Assert.That(() => Air.AtAltitude(30000), Throws.InstanceOf<ArgumentException>().With.Message.Contains("altitudeMetres"));
             Assert.That(() => Air.AtAltitude(double.PositiveInfinity), Throws.InstanceOf<ArgumentException>().With.Message.Contains("altitudeMetres"));
             Assert.That(() => Air.FromWeather(15, 101325, 0, new Vector3d(double.NaN, 0, 0)), Throws.InstanceOf<ArgumentException>().With.Message.Contains("wind"));

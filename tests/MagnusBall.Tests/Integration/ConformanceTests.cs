@@ -241,10 +241,17 @@ namespace MagnusBall.Tests.Integration
             }
 
             TestContext.Out.WriteLine($"{form.Name}: {models} models ({folded} folded), {compared} comparisons, largest difference {worst:F2} ulp; contract: bit for bit, folded within {form.FoldedUlps} ulp ({form.Why})");
-            Assert.That(models, Is.EqualTo(8 * 8 * 4 * 3));
-            // Most states are compared; the straight-line forms answer only for their four models (the thesis model and
-            // Stepanek's drag and lift with a built-in decay, in still air), nearly always there.
-            int least = form.Name == "rk4-straight-line" ? 4 * states.Count * Steps.Length * 9 / 10 : models * states.Count / 2;
+            // Every catalogue law, plus none and a user's own, of each kind, in three airs: a law added to the catalogue
+            // is counted here without touching this test.
+            int expected = (LawCatalogue.DragExamples().Length + 2) * (LawCatalogue.LiftExamples().Length + 2) *
+                           (LawCatalogue.SpinDecayExamples().Length + 2) * 3;
+            Assert.That(models, Is.EqualTo(expected));
+            // Nearly every state is compared: every form answers for every model, state and step but stable-rk4 where it
+            // substeps (2 of 69,120 on 2026-12-04), the straight-line forms outside their four models (the thesis model and
+            // Stepanek's drag and lift with a built-in decay, in still air, where they answer nearly always), and the
+            // derivative, which has no step.
+            int least = form.Name == "rk4-straight-line" ? 4 * states.Count * Steps.Length * 9 / 10
+                : form.Name == "derivative" ? models * states.Count - 1 : models * states.Count * Steps.Length * 99 / 100;
             Assert.That(compared, Is.GreaterThan(least), "most states are compared");
         }
 

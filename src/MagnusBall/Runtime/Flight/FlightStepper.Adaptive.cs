@@ -157,5 +157,5 @@ namespace MagnusBall.Flight
 
             return true;
         }
-}
+    }
 }

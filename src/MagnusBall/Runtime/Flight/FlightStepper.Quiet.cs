@@ -10,7 +10,7 @@ namespace MagnusBall.Flight
     public sealed partial class FlightStepper
     {
         /// <summary>
-        /// Up to <paramref name="count"/> steps of <paramref name="step"/> seconds in one call (<see cref="Stepping.FixedStepDriver"/>'s
+        /// Up to <paramref name="count"/> steps of <paramref name="step"/> seconds in one call (<c>FixedStepDriver</c>'s
         /// frame): the same steps, bits and counts as that many <see cref="TryStep"/> calls, up to and including the first step
         /// that is not quiet. A quiet step is TryStep's common step by plain RK4 (or the stable RK4 in one substep): in flight
         /// with no contact, taken in one piece, surely no event on it. Quiet steps hand their end to the next step in locals and

@@ -78,7 +78,7 @@ namespace MagnusBall.Integration
 
         /// <summary>
         /// The most steps one <see cref="Advance"/> call takes: 250,000, that is 1,000,000 model evaluations, the cap of one
-        /// prediction (<see cref="Queries.TrajectoryPredictor.MaxEvaluationsPerPrediction"/>): 17 minutes of flight at 1/240 s,
+        /// prediction (<c>TrajectoryPredictor.MaxEvaluationsPerPrediction</c>): 17 minutes of flight at 1/240 s,
         /// about 11 ms of work on the thesis model and 60 ms on the full tennis model on the machine of docs/performance.md.
         /// </summary>
         public const int MaximumAdvanceSteps = 250_000;
@@ -90,7 +90,7 @@ namespace MagnusBall.Integration
         /// thesis-style code, against 0.65x for a loop of <see cref="Step"/> calls on .NET). For one step a frame, a count of
         /// 1 is the cheaper call on .NET (0.57x: the state and derivative are updated in place, so the caller copies no end
         /// derivative) and <see cref="Step"/> under Mono (0.58x against 0.77x). No events: for landings, bounces and samples use the flight core
-        /// (<see cref="Flight.FlightStepper"/>, <see cref="Stepping.FixedStepDriver"/>, <see cref="Queries.TrajectoryPredictor"/>).
+        /// (<c>FlightStepper</c>, <c>FixedStepDriver</c>, <c>TrajectoryPredictor</c>).
         /// </summary>
         /// <remarks>
         /// <paramref name="derivative"/> must be model.Derivative(state): it is not checked, and a stale one (default, or

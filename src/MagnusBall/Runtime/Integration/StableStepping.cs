@@ -133,7 +133,7 @@ namespace MagnusBall.Integration
         /// splits <paramref name="remaining"/> seconds from <paramref name="state"/> into (before its cap): 1 without
         /// evaluating the laws where a bound shows h sigma below half the limit (the exact rate then gives 1 too),
         /// otherwise ceil(h sigma / limit). Where it is 1 for the whole step, the step is the inner method's one step over
-        /// it with the time set to its end: <see cref="Flight.FlightStepper.TryStep"/> takes that case of the stable RK4
+        /// it with the time set to its end: <c>FlightStepper.TryStep</c> takes that case of the stable RK4
         /// straight to the kernel, through this same method.
         /// </summary>
         internal static int SubstepsFor(FlightModel model, in FlightState state, double remaining, double stiffnessLimit) =>
