@@ -137,8 +137,7 @@ namespace MagnusBall
             double pressure = Atmosphere.StandardPressure(altitudeMetres);
             double temperature = temperatureCelsius ?? Atmosphere.StandardTemperatureCelsius(altitudeMetres);
             Require.InRange(temperature, Atmosphere.MinimumTemperatureCelsius, Atmosphere.MaximumTemperatureCelsius, nameof(temperatureCelsius));
-            Require.InRange(relativeHumidity, 0, 1, nameof(relativeHumidity));
-            double vapour = relativeHumidity * Atmosphere.SaturationVapourPressure(temperature);
+            double vapour = Atmosphere.VapourPressure(temperature, relativeHumidity);
             if (vapour >= pressure)
             {
                 // The caller gave no pressure: the humidity is what cannot be at this altitude and temperature.

@@ -102,8 +102,7 @@ namespace MagnusBall
                     "30000-110000 Pa: was it given in kPa or hPa (101.325 kPa = 1013.25 hPa = 101325 Pa)?");
             }
 
-            Require.InRange(relativeHumidity, 0, 1, nameof(relativeHumidity));
-            double vapour = relativeHumidity * SaturationVapourPressure(temperatureCelsius);
+            double vapour = VapourPressure(temperatureCelsius, relativeHumidity);
             if (vapour >= pressurePascals)
             {
                 // The vapour pressure is at most 20 kPa (saturation at 60 degC), below any station pressure on Earth
@@ -119,6 +118,17 @@ namespace MagnusBall
 
             double kelvin = temperatureCelsius + ZeroCelsiusInKelvin;
             return (pressurePascals - vapour) / (DryAirGasConstant * kelvin) + vapour / (WaterVapourGasConstant * kelvin);
+        }
+
+        /// <summary>
+        /// The water-vapour partial pressure of air at <paramref name="relativeHumidity"/>, Pa: RH e_s(T) (Tetens), the part
+        /// of the total pressure that <see cref="MoistAirDensity"/> counts as vapour and that must stay below it.
+        /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException">The humidity is outside [0, 1] or the temperature out of range.</exception>
+        internal static double VapourPressure(double temperatureCelsius, double relativeHumidity)
+        {
+            Require.InRange(relativeHumidity, 0, 1, nameof(relativeHumidity));
+            return relativeHumidity * SaturationVapourPressure(temperatureCelsius);
         }
 
         /// <summary>ISA temperature at an altitude, degC: 15 - 6.5 per km up to 11 km, then -56.5.</summary>
