@@ -131,11 +131,12 @@ namespace MagnusBall.Cli
             JsonFields find = a.Object("find");
             string kind = find.String("kind");
             Func<AimSolver, AimSolution> solve;
+            double launchSpeed; // the fastest the request launches: the stability check below takes it
             switch (kind)
             {
                 case "minimum-elevation-to-clear":
                 {
-                    double speed = find.Positive("speed");
+                    double speed = launchSpeed = find.Positive("speed");
                     double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
                     JsonFields planeFields = find.Object("plane");
                     var p = new Plane(planeFields.Vector("point"), planeFields.Direction("normal"));
@@ -147,7 +148,7 @@ namespace MagnusBall.Cli
 
                 case "elevation-to-reach":
                 {
-                    double speed = find.Positive("speed");
+                    double speed = launchSpeed = find.Positive("speed");
                     Vector3d target = find.Vector("target");
                     double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
                     solve = s => s.ElevationToReach(position, speed, spin, target, azimuth);
@@ -156,7 +157,7 @@ namespace MagnusBall.Cli
 
                 case "angles-to-reach":
                 {
-                    double speed = find.Positive("speed");
+                    double speed = launchSpeed = find.Positive("speed");
                     Vector3d target = find.Vector("target");
                     double maxAzimuth = InRange(find, "maximumAzimuthDegrees", 45, 1e-9, 89);
                     solve = s => s.AnglesToReach(position, speed, spin, target, maxAzimuth);
@@ -169,6 +170,7 @@ namespace MagnusBall.Cli
                     double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
                     Vector3d target = find.Vector("target");
                     solve = s => s.SpeedToReach(position, elevation, azimuth, spin, target);
+                    launchSpeed = maxSpeed;
                     break;
                 }
 
@@ -183,7 +185,6 @@ namespace MagnusBall.Cli
             // launch is refused, as simulate refuses it (its trials would diverge or fly a wrong path and the
             // solve would print "unreachable" for a target stable-rk4 reaches). The check takes the fastest launch
             // the request can make (speed-to-reach: maximumSpeed) into the wind, with the whole spin.
-            double launchSpeed = kind == "speed-to-reach" ? maxSpeed : find.Positive("speed");
             StabilityCheck.Require(
                 StabilityCheck.For(setup.Integrator), setup.Integrator, setup.Model, FastestLaunch(setup.Model, position, launchSpeed, spin), setup.Step, a.PathOf("step"));
             return new AimRequest(name, a.Path, solver, position, spin, solve);
