@@ -71,7 +71,7 @@ namespace MagnusBall.Playground.Lab
                     Name = names[i],
                     Published = published[i],
                     Value = solutions[i].IsSolved ? solutions[i].ElevationDegrees : double.NaN,
-                    Path = solutions[i].IsSolved ? PathOf(predictor, solutions[i].LaunchState(start)) : Array.Empty<Vector3d>(),
+                    Path = solutions[i].IsSolved ? PathOf(predictor, solutions[i].LaunchState(start), FlightEventKinds.Landing, out _) : Array.Empty<Vector3d>(),
                 };
             }
 
@@ -106,13 +106,11 @@ namespace MagnusBall.Playground.Lab
                 {
                     Vector3d direction = frame.Direction(aim.ElevationRadians, aim.AzimuthRadians);
                     var launch = new FlightState(start, direction * speeds[i], spin.AngularVelocity(direction, frame));
-                    var samples = new Vector3d[4096];
-                    Prediction p = predictor.Predict(launch, 10, samples, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing);
+                    row.Path = PathOf(predictor, launch, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing, out Prediction p);
                     row.ReachedGoalLine = p.StopEvent.Kind == FlightEventKinds.PlaneCrossing;
                     row.Downrange = p.EndState.Position.X;
                     row.Value = p.EndState.Position.Y;
                     row.Second = p.EndState.Position.Z;
-                    row.Path = samples.AsSpan(0, p.SampleCount).ToArray();
                 }
                 else
                 {
@@ -125,11 +123,12 @@ namespace MagnusBall.Playground.Lab
             return rows;
         }
 
-        private static Vector3d[] PathOf(TrajectoryPredictor predictor, in FlightState launch)
+        /// <summary>The flight's sampled path to its first event of <paramref name="stopAt"/> (at most 10 s), and the prediction.</summary>
+        private static Vector3d[] PathOf(TrajectoryPredictor predictor, in FlightState launch, FlightEventKinds stopAt, out Prediction prediction)
         {
             var samples = new Vector3d[4096];
-            Prediction p = predictor.Predict(launch, 10, samples);
-            return samples.AsSpan(0, p.SampleCount).ToArray();
+            prediction = predictor.Predict(launch, 10, samples, stopAt);
+            return samples.AsSpan(0, prediction.SampleCount).ToArray();
         }
     }
 }
