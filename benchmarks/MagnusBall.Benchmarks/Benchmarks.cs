@@ -107,7 +107,7 @@ namespace MagnusBall.Benchmarks
             StateDerivative derivative = model.Derivative(state);
             for (int i = 0; i < Steps; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, derivative, 1.0 / 240, out StateDerivative end, out _);
+                state = ((IIntegrator)RungeKutta4.Instance).Step(model, state, derivative, 1.0 / 240, out StateDerivative end, out _);
                 derivative = end;
             }
 

@@ -169,7 +169,7 @@ namespace MagnusBall.Benchmarks
             StateDerivative derivative = model.Derivative(state);
             for (int i = 0; i < ShotSteps; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, derivative, Step, out StateDerivative end, out _);
+                state = ((IIntegrator)RungeKutta4.Instance).Step(model, state, derivative, Step, out StateDerivative end, out _);
                 derivative = end;
             }
 

@@ -11,13 +11,8 @@ namespace MagnusBall.Cli
     /// </summary>
     internal static class StabilityCheck
     {
-        /// <summary>The check for <paramref name="integrator"/>: a StableIntegrator whose limit is its bound; null for stable-rk4.</summary>
-        public static StableIntegrator? For(IIntegrator integrator) => integrator switch
-        {
-            StableIntegrator => null,
-            ExplicitEuler or SemiImplicitEuler or Heun => new StableIntegrator(integrator, 2.0),
-            _ => new StableIntegrator(integrator, 2.5),
-        };
+        /// <summary>The check for <paramref name="integrator"/> (the library's rule): null for stable-rk4.</summary>
+        public static StableIntegrator? For(IIntegrator integrator) => StableIntegrator.AtStabilityBound(integrator);
 
         /// <summary>Throws an <see cref="InputError"/> at <paramref name="path"/> when <paramref name="step"/> from <paramref name="state"/> is beyond the bound.</summary>
         public static void Require(StableIntegrator? bound, IIntegrator integrator, FlightModel model, in FlightState state, double step, string path)

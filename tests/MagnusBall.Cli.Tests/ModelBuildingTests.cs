@@ -42,7 +42,7 @@ namespace MagnusBall.Cli.Tests
             Assert.That(Read(s => s["aero"]!["drag"] = JsonNode.Parse("{\"model\": \"nathan\"}")).Model.Drag, Is.SameAs(NathanBaseballDrag.Instance));
             Assert.That(Read(s => s["aero"]!["lift"] = JsonNode.Parse("{\"model\": \"Nathan\"}")).Model.Lift, Is.SameAs(NathanBaseballLift.Instance), "model names ignore case");
             var drag = (LinearSpinDrag)Read(s => s["aero"]!["drag"] = JsonNode.Parse("{\"model\": \"linear-spin\", \"cd0\": 0.24, \"k\": 0.18}")).Model.Drag!;
-            Assert.That(drag.DragCoefficient(new AeroConditions(10, 0, 0, 0.02, 1.2, 1.8e-5)), Is.EqualTo(0.24));
+            Assert.That(((IDragModel)drag).DragCoefficient(new AeroConditions(10, 0, 0, 0.02, 1.2, 1.8e-5)), Is.EqualTo(0.24));
         }
 
         [Test]
@@ -59,7 +59,7 @@ namespace MagnusBall.Cli.Tests
             var decay = (ExponentialSpinDecay)Read(s => s["spinDecay"] = JsonNode.Parse("{\"model\": \"exponential\", \"tau\": 2.5}")).Model.SpinDecay!;
             Assert.That(decay.TimeConstant, Is.EqualTo(2.5));
             var perMetre = (SpeedProportionalSpinDecay)Read(s => s["spinDecay"] = JsonNode.Parse("{\"model\": \"speed-proportional\", \"k\": 0.003}")).Model.SpinDecay!;
-            Assert.That(perMetre.SpinAcceleration(new Vector3d(0, 100, 0), new AeroConditions(20, 100, 100, 0.033, 1.2, 1.8e-5)).Y, Is.EqualTo(-0.003 * 20 * 100).Within(1e-12));
+            Assert.That(((ISpinDecayModel)perMetre).SpinAcceleration(new Vector3d(0, 100, 0), new AeroConditions(20, 100, 100, 0.033, 1.2, 1.8e-5)).Y, Is.EqualTo(-0.003 * 20 * 100).Within(1e-12));
         }
 
         [Test]

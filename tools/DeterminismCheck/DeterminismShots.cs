@@ -44,7 +44,7 @@ namespace MagnusBall.DeterminismCheck
             }
 
             IReadOnlyList<SportPreset> presets = SportPresets.All;
-            IIntegrator[] integrators = Integrators.All;
+            IIntegrator[] integrators = Array.ConvertAll(Integrators.Names, Integrators.FromName);
             var models = new Dictionary<(int, int, int), FlightModel>();
             Span<Vector3d> noSamples = Span<Vector3d>.Empty;
             int landed = 0, diverged = 0, bounced = 0, aimed = 0, solved = 0;
@@ -66,7 +66,7 @@ namespace MagnusBall.DeterminismCheck
                 if (!models.TryGetValue((p, yUp ? 1 : 0, altitude), out FlightModel? model))
                 {
                     double h = 800.0 * altitude;
-                    double density = Atmosphere.MoistAirDensity(Atmosphere.StandardTemperatureCelsius(h), Atmosphere.StandardPressure(h), 0.5);
+                    double density = Air.AtAltitude(h, null, 0.5).Density; // the standard atmosphere at h, 50 % humidity
                     model = thesis
                         ? FlightModel.Thesis(Ball.Tennis, new Air(density), Gravity.Along(up))
                         : preset.CreateModel(new Air(density), Gravity.Along(up));

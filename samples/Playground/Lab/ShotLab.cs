@@ -53,8 +53,8 @@ namespace MagnusBall.Playground.Lab
 
         /// <summary>
         /// The launch's step against the method's stability bound for the flight's drag: how many steps the method's
-        /// check would split it into (1: within the bound). The check is the CLI's (its StabilityCheck): h sigma at most
-        /// 2 for the Euler methods and Heun, 2.5 for RK4 and Dormand-Prince, sigma the library's stiffness rate.
+        /// check would split it into (1: within the bound). The check is the library's, StableIntegrator.AtStabilityBound (the
+        /// CLI's too): h sigma at most 2 for the Euler methods and Heun, 2.5 for RK4 and Dormand-Prince.
         /// </summary>
         public int StabilityRatio { get; set; } = 1;
 
@@ -177,7 +177,7 @@ namespace MagnusBall.Playground.Lab
                 result.Clearance -= model.Ball.Radius;
             }
 
-            StableIntegrator? bound = StabilityBound(integrator);
+            StableIntegrator? bound = StableIntegrator.AtStabilityBound(integrator);
             result.StabilityRatio = bound is null ? 1 : bound.SubstepCount(model, start, step);
             result.Unreliable = result.StabilityRatio > 1;
             if (withReference && result.Landed)
@@ -191,14 +191,6 @@ namespace MagnusBall.Playground.Lab
 
             return result;
         }
-
-        /// <summary>The method's stability check (the CLI's rule), or null for stable-rk4, which splits its steps itself.</summary>
-        private static StableIntegrator? StabilityBound(IIntegrator integrator) => integrator switch
-        {
-            StableIntegrator => null,
-            ExplicitEuler or SemiImplicitEuler or Heun => new StableIntegrator(integrator, 2.0),
-            _ => new StableIntegrator(integrator, 2.5),
-        };
 
         // The reference landing depends on the launch and the air, not on the integrator or its rate: the last few are
         // kept, keyed by every other setting, so changing the method, its rate or the second shot's does not fly the

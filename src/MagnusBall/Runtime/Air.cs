@@ -13,7 +13,7 @@ namespace MagnusBall
     public sealed class Air
     {
         /// <summary>Density of dry air at 15 degC and 101325 Pa (ISA sea level), 1.225 kg/m^3.</summary>
-        public const double SeaLevelDensity = 1.225;
+        internal const double SeaLevelDensity = 1.225;
 
         /// <summary>
         /// The default dynamic viscosity, 1.81e-5 Pa s (used for Reynolds numbers): air near 20 degC (Sutherland's law gives
@@ -21,7 +21,7 @@ namespace MagnusBall
         /// compute. Kept as the default because the presets' Reynolds-dependent laws were checked and calibrated with it; with
         /// it a Reynolds number is 1.1 % below the ISA's at 15 degC.
         /// </summary>
-        public const double SeaLevelDynamicViscosity = 1.81e-5;
+        internal const double SeaLevelDynamicViscosity = 1.81e-5;
 
         /// <summary>
         /// Creates air of a given density, with an optional uniform wind.

@@ -22,7 +22,7 @@ namespace MagnusBall
     /// <para>Viscosity: Sutherland's law, mu = 1.458e-6 T^1.5 / (T + 110.4) Pa s (the ISA's own formula),
     /// 1.789e-5 Pa s at 15 degC.</para>
     /// </remarks>
-    public static class Atmosphere
+    internal static class Atmosphere
     {
         /// <summary>Specific gas constant of dry air, 287.058 J/(kg K).</summary>
         internal const double DryAirGasConstant = 287.058;

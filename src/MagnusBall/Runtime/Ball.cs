@@ -9,7 +9,7 @@ namespace MagnusBall
     public sealed class Ball
     {
         /// <summary>Moment-of-inertia factor of a uniform solid sphere, 2/5.</summary>
-        public const double SolidSphereInertiaFactor = 0.4;
+        internal const double SolidSphereInertiaFactor = 0.4;
 
         /// <summary>Moment-of-inertia factor of a thin spherical shell, 2/3.</summary>
         public const double ThinShellInertiaFactor = 2.0 / 3.0;
@@ -49,10 +49,10 @@ namespace MagnusBall
         public double InertiaFactor { get; }
 
         /// <summary>Cross-sectional area pi r^2, m^2.</summary>
-        public double CrossSectionalArea => Math.PI * Radius * Radius;
+        internal double CrossSectionalArea => Math.PI * Radius * Radius;
 
         /// <summary>Moment of inertia about a diameter, alpha m r^2, kg m^2.</summary>
-        public double MomentOfInertia => InertiaFactor * Mass * Radius * Radius;
+        internal double MomentOfInertia => InertiaFactor * Mass * Radius * Radius;
 
         /// <summary>
         /// The library's one tennis ball: that of the seed thesis and of Cross (2011), 0.057 kg, 0.033 m, alpha 0.55

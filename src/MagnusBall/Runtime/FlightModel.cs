@@ -31,7 +31,7 @@ namespace MagnusBall
         /// with s^2 (or s|w| for lift linear in spin) and are far below double precision's resolution of
         /// gravity there; the cut-off keeps 1/s from overflowing.
         /// </summary>
-        public const double MinimumAerodynamicSpeed = 1e-150;
+        internal const double MinimumAerodynamicSpeed = 1e-150;
 
         /// <summary>
         /// At or below this spin rate (rad/s) the lift is taken as exactly zero. A lift law whose C_L vanishes like the
@@ -41,7 +41,7 @@ namespace MagnusBall
         /// from a quotient by |w| that overflows near 1e-308 rad/s (1/|w| below 1/double.MaxValue = 5.6e-309 rad/s): such
         /// a law's lift jumps to 0 here. The same cut-off everywhere: the general formula, the kernel, the ball batch.
         /// </summary>
-        public const double MinimumLiftSpinRate = 1e-150;
+        internal const double MinimumLiftSpinRate = 1e-150;
 
         private readonly double _dragFactor; // rho A / (2 m), 1/m
         private readonly double _kinematicRadius;
@@ -124,7 +124,7 @@ namespace MagnusBall
         /// flight diverges at x = 2 (Euler, Heun), 2.45 (RK4), 1.41 (Dormand-Prince), measured in docs/integrators.md;
         /// <see cref="Integration.StableIntegrator"/> substeps to stay well inside.
         /// </summary>
-        public double AerodynamicFactor => _dragFactor;
+        internal double AerodynamicFactor => _dragFactor;
 
         /// <summary>
         /// Test hook: when set, every evaluation of the model (a call of <see cref="Derivative"/> or one inside a kernel step) adds one to it, so tests count real evaluations of
@@ -421,7 +421,7 @@ namespace MagnusBall
         /// does no work. Never NaN for a finite state; finite whenever the energy fits in a double.
         /// </summary>
         /// <param name="state">The state.</param>
-        public double MechanicalEnergy(in FlightState state)
+        internal double MechanicalEnergy(in FlightState state)
         {
             double energy = Ball.Mass * (0.5 * state.Velocity.LengthSquared - Vector3d.Dot(Gravity, state.Position));
             if (double.IsFinite(energy) || !state.IsFinite)
@@ -440,7 +440,7 @@ namespace MagnusBall
 
         /// <summary>Rotational kinetic energy 1/2 I |w|^2, J (never NaN; infinite only beyond double.MaxValue).</summary>
         /// <param name="state">The state.</param>
-        public double RotationalEnergy(in FlightState state)
+        internal double RotationalEnergy(in FlightState state)
         {
             double energy = 0.5 * Ball.MomentOfInertia * state.AngularVelocity.LengthSquared;
             if (double.IsFinite(energy) || !state.AngularVelocity.IsFinite)

@@ -58,7 +58,7 @@ namespace MagnusBall
         /// <param name="angularVelocity">Angular velocity, rad/s (finite).</param>
         /// <param name="time">Time, s (finite).</param>
         /// <exception cref="System.ArgumentException">A component is NaN or infinite; the message names it.</exception>
-        public static FlightState Create(Vector3d position, Vector3d velocity, Vector3d angularVelocity, double time = 0)
+        internal static FlightState Create(Vector3d position, Vector3d velocity, Vector3d angularVelocity, double time = 0)
         {
             Require.Finite(position, nameof(position));
             Require.Finite(velocity, nameof(velocity));
@@ -78,7 +78,7 @@ namespace MagnusBall
         /// <param name="k">The derivative (rate of change of every component).</param>
         /// <param name="h">How far to go, s.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public FlightState Advance(in StateDerivative k, double h) => new FlightState(
+        internal FlightState Advance(in StateDerivative k, double h) => new FlightState(
             new Vector3d(Position.X + h * k.Velocity.X, Position.Y + h * k.Velocity.Y, Position.Z + h * k.Velocity.Z),
             new Vector3d(Velocity.X + h * k.Acceleration.X, Velocity.Y + h * k.Acceleration.Y, Velocity.Z + h * k.Acceleration.Z),
             new Vector3d(
@@ -130,7 +130,7 @@ namespace MagnusBall
             new Vector3d(derivative.AngularAcceleration.X, derivative.AngularAcceleration.Y, derivative.AngularAcceleration.Z));
 
         /// <summary>True when every component is finite.</summary>
-        public bool IsFinite
+        internal bool IsFinite
         {
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             get => Velocity.IsFinite && Acceleration.IsFinite && AngularAcceleration.IsFinite;

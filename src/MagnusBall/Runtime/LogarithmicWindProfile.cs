@@ -22,10 +22,10 @@ namespace MagnusBall
     public sealed class LogarithmicWindProfile
     {
         /// <summary>The WMO's standard anemometer height, 10 m.</summary>
-        public const double StandardReferenceHeight = 10.0;
+        internal const double StandardReferenceHeight = 10.0;
 
         /// <summary>Roughness length of open, flat grassland, 0.03 m (Wieringa 1993; the WMO reference terrain).</summary>
-        public const double OpenGrassRoughnessLength = 0.03;
+        internal const double OpenGrassRoughnessLength = 0.03;
 
         private readonly double _inverseLogReference; // 1 / ln(z_ref / z0)
 
@@ -57,13 +57,13 @@ namespace MagnusBall
         }
 
         /// <summary>Height at which the reference wind is given, m.</summary>
-        public double ReferenceHeight { get; }
+        internal double ReferenceHeight { get; }
 
         /// <summary>Roughness length z0, m.</summary>
-        public double RoughnessLength { get; }
+        internal double RoughnessLength { get; }
 
         /// <summary>A point on the ground plane, m.</summary>
-        public Vector3d GroundPoint { get; }
+        internal Vector3d GroundPoint { get; }
 
         /// <summary>
         /// The wind at <paramref name="height"/> as a fraction of the reference wind: ln(z/z0)/ln(z_ref/z0)
@@ -71,14 +71,14 @@ namespace MagnusBall
         /// </summary>
         /// <param name="height">Height above the ground, m (any finite value).</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double Factor(double height) =>
+        internal double Factor(double height) =>
             height > RoughnessLength ? PortableMath.Log(height / RoughnessLength) * _inverseLogReference : 0.0;
 
         /// <summary>Height of <paramref name="position"/> above the ground along <paramref name="up"/> (a unit vector), m.</summary>
         /// <param name="position">The point, m.</param>
         /// <param name="up">The unit up vector.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double HeightOf(in Vector3d position, in Vector3d up) => Vector3d.Dot(position - GroundPoint, up);
+        internal double HeightOf(in Vector3d position, in Vector3d up) => Vector3d.Dot(position - GroundPoint, up);
 
         /// <inheritdoc />
         public override string ToString() =>

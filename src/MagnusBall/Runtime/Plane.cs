@@ -72,10 +72,10 @@ namespace MagnusBall
         /// <summary>The rate at which a ball moving with <paramref name="velocity"/> moves along the normal, m/s.</summary>
         /// <param name="velocity">A velocity, m/s.</param>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double NormalSpeed(in Vector3d velocity) => Vector3d.Dot(velocity, Normal);
+        internal double NormalSpeed(in Vector3d velocity) => Vector3d.Dot(velocity, Normal);
 
         /// <summary>The same plane with its normal reversed.</summary>
-        public Plane Flipped() => new Plane(Point, -Normal);
+        internal Plane Flipped() => new Plane(Point, -Normal);
 
         /// <summary>
         /// The foot of the perpendicular from <paramref name="position"/> onto the plane. For finite input never NaN: a

@@ -195,13 +195,13 @@ namespace MagnusBall
         /// <summary>The distance between two points.</summary>
         /// <param name="a">First point.</param>
         /// <param name="b">Second point.</param>
-        public static double Distance(in Vector3d a, in Vector3d b) => (a - b).Length;
+        internal static double Distance(in Vector3d a, in Vector3d b) => (a - b).Length;
 
         /// <summary>Linear interpolation a + (b - a) t.</summary>
         /// <param name="a">Value at t = 0.</param>
         /// <param name="b">Value at t = 1.</param>
         /// <param name="t">Interpolation parameter (not clamped).</param>
-        public static Vector3d Lerp(in Vector3d a, in Vector3d b, double t) => a + (b - a) * t;
+        internal static Vector3d Lerp(in Vector3d a, in Vector3d b, double t) => a + (b - a) * t;
 
         /// <summary>Component-wise sum.</summary>
         /// <param name="a">Left operand.</param>

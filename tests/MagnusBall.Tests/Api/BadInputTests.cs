@@ -114,7 +114,7 @@ namespace MagnusBall.Tests.Api
         {
             FlightState state = Good;
             FlightState copy = state;
-            Assert.Throws<ArgumentOutOfRangeException>(() => state = RungeKutta4.Instance.Step(Model, state, double.NaN));
+            Assert.Throws<ArgumentOutOfRangeException>(() => state = ((IIntegrator)RungeKutta4.Instance).Step(Model, state, double.NaN));
             Assert.That(state.Position, Is.EqualTo(copy.Position));
             Assert.That(state.Velocity, Is.EqualTo(copy.Velocity));
             Assert.That(state.AngularVelocity, Is.EqualTo(copy.AngularVelocity));

@@ -22,7 +22,7 @@ namespace MagnusBall.Tests.Integration
             StateDerivative derivative = model.Derivative(state);
             for (int i = 1; i <= 300; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, derivative, step);
+                state = ((IIntegrator)RungeKutta4.Instance).Step(model, state, derivative, step);
                 derivative = model.Derivative(state);
                 double t = i * step;
                 Vector3d exact = P0 + V0 * t + G * (0.5 * t * t);
@@ -41,7 +41,7 @@ namespace MagnusBall.Tests.Integration
             StateDerivative derivative = model.Derivative(state);
             for (int i = 1; i <= 180; i++)
             {
-                state = ExplicitEuler.Instance.Step(model, state, derivative, step);
+                state = ((IIntegrator)ExplicitEuler.Instance).Step(model, state, derivative, step);
                 derivative = model.Derivative(state);
                 double t = i * step;
                 Vector3d exact = P0 + V0 * t + G * (0.5 * t * t);
@@ -70,7 +70,7 @@ namespace MagnusBall.Tests.Integration
             StateDerivative derivative = model.Derivative(state);
             for (int i = 1; i <= 5000; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, derivative, step);
+                state = ((IIntegrator)RungeKutta4.Instance).Step(model, state, derivative, step);
                 derivative = model.Derivative(state);
                 if (i % 100 != 0)
                 {

@@ -279,23 +279,23 @@ namespace MagnusBall.Tests.Integration
             {
                 case "euler":
                     expected = state.Advance(k1, h);
-                    actual = ExplicitEuler.Instance.Step(model, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)ExplicitEuler.Instance).Step(model, state, k1, h, out actualEnd, out _);
                     break;
                 case "semi-implicit-euler":
                 {
                     Vector3d v = state.Velocity + k1.Acceleration * h;
                     expected = new FlightState(state.Position + v * h, v, state.AngularVelocity + k1.AngularAcceleration * h, state.Time + h);
-                    actual = SemiImplicitEuler.Instance.Step(model, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)SemiImplicitEuler.Instance).Step(model, state, k1, h, out actualEnd, out _);
                     break;
                 }
 
                 case "heun":
                     expected = SpecHeun(model, state, k1, h);
-                    actual = Heun.Instance.Step(model, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)Heun.Instance).Step(model, state, k1, h, out actualEnd, out _);
                     break;
                 case "rk4":
                     expected = SpecRk4(model, state, k1, h);
-                    actual = RungeKutta4.Instance.Step(model, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, h, out actualEnd, out _);
                     break;
                 case "rk4-general-shapes":
                 {
@@ -305,7 +305,7 @@ namespace MagnusBall.Tests.Integration
                         CountedEvaluations = new EvaluationCount(),
                     };
                     expected = SpecRk4(model, state, k1, h);
-                    actual = RungeKutta4.Instance.Step(counted, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)RungeKutta4.Instance).Step(counted, state, k1, h, out actualEnd, out _);
                     break;
                 }
 
@@ -341,7 +341,7 @@ namespace MagnusBall.Tests.Integration
                         return 0;
                     }
 
-                    actual = StableIntegrator.RungeKutta4.Step(model, state, k1, h, out actualEnd, out _);
+                    actual = ((IIntegrator)StableIntegrator.RungeKutta4).Step(model, state, k1, h, out actualEnd, out _);
                     break;
                 case "flight-core-rk4":
                 {
@@ -428,10 +428,10 @@ namespace MagnusBall.Tests.Integration
             }
 
             StateDerivative k = fromKernelRates ? model.Derivative(state) : model.GeneralDerivative(state);
-            FlightState kernel = RungeKutta4.Instance.Step(model, state, k, h, out StateDerivative kernelEnd, out _);
+            FlightState kernel = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k, h, out StateDerivative kernelEnd, out _);
             if (form == "rk4-advance")
             {
-                kernel = RungeKutta4.Instance.Step(model, kernel, kernelEnd, h, out kernelEnd, out _);
+                kernel = ((IIntegrator)RungeKutta4.Instance).Step(model, kernel, kernelEnd, h, out kernelEnd, out _);
             }
 
             if (!(SameBits(actual, kernel) && Difference(actualEnd.Acceleration, kernelEnd.Acceleration, 1) == 0 &&
@@ -470,7 +470,7 @@ namespace MagnusBall.Tests.Integration
             return Math.Max(Math.Max(position, velocity), Math.Max(spin, endRates));
         }
 
-        private static double ForceScale(FlightModel model, in FlightState state) => Textbook.ForceScale(model, state);
+        private static double ForceScale(FlightModel model, in FlightState state) => Rounding.ForceScale(model, state);
 
         // The largest component difference over the unit; 0 where every component has the same bits (NaN matching NaN).
         private static double Difference(in Vector3d actual, in Vector3d expected, double unit)
@@ -496,7 +496,7 @@ namespace MagnusBall.Tests.Integration
         private static bool Same(double a, double b) =>
             BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b) || (double.IsNaN(a) && double.IsNaN(b));
 
-        private static double Ulp(double value) => Textbook.Ulp(value);
+        private static double Ulp(double value) => Rounding.Ulp(value);
 
         // The spec's methods on the general formula (Textbook.cs).
         private static FlightState SpecHeun(FlightModel model, in FlightState y, in StateDerivative k1, double h) =>

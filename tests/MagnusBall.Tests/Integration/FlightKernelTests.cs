@@ -121,7 +121,7 @@ namespace MagnusBall.Tests.Integration
                 {
                     // The folded forms: to rounding, within 1e-15 (about 4.5 ulp) of the largest terms (see the two tests
                     // below; ConformanceTests holds every law and form to its bound in ulp).
-                    Assert.That((fast.Acceleration - general.Acceleration).Length, Is.LessThanOrEqualTo(1e-15 * Textbook.ForceScale(model, state)), $"{state}");
+                    Assert.That((fast.Acceleration - general.Acceleration).Length, Is.LessThanOrEqualTo(1e-15 * Rounding.ForceScale(model, state)), $"{state}");
                 }
                 else
                 {
@@ -235,8 +235,8 @@ namespace MagnusBall.Tests.Integration
                 foreach (double step in new[] { 1.0 / 240, 0.03 })
                 {
                     StateDerivative k1 = spec(state);
-                    FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative rk4End, out int rk4Evaluations);
-                    FlightState heun = Heun.Instance.Step(model, state, k1, step, out StateDerivative heunEnd, out int heunEvaluations);
+                    FlightState rk4 = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out StateDerivative rk4End, out int rk4Evaluations);
+                    FlightState heun = ((IIntegrator)Heun.Instance).Step(model, state, k1, step, out StateDerivative heunEnd, out int heunEvaluations);
                     FlightState rk4Reference = ReferenceRk4(model, state, k1, step, spec);
                     FlightState heunReference = ReferenceHeun(model, state, k1, step, spec);
                     double spinRate = state.AngularVelocity.Length;
@@ -360,7 +360,7 @@ namespace MagnusBall.Tests.Integration
                             }
                         }
 
-                        FlightState fixedEnd = method.Step(model, state, k1, step, out StateDerivative fixedDerivative, out int evaluations);
+                        FlightState fixedEnd = ((IIntegrator)method).Step(model, state, k1, step, out StateDerivative fixedDerivative, out int evaluations);
                         AssertSame(fixedEnd, slow.End, state);
                         AssertSame(fixedDerivative.Acceleration, slow.EndDerivative.Acceleration, state);
                         Assert.That(evaluations, Is.EqualTo(6));
@@ -473,8 +473,8 @@ namespace MagnusBall.Tests.Integration
                     foreach (double step in new[] { 1.0 / 240, 0.03 })
                     {
                         StateDerivative k1 = model.Derivative(state);
-                        FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative rk4End, out _);
-                        FlightState heun = Heun.Instance.Step(model, state, k1, step, out StateDerivative heunEnd, out _);
+                        FlightState rk4 = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out StateDerivative rk4End, out _);
+                        FlightState heun = ((IIntegrator)Heun.Instance).Step(model, state, k1, step, out StateDerivative heunEnd, out _);
                         FlightState rk4Reference = ReferenceRk4(model, state, k1, step, s => model.Derivative(s));
                         FlightState heunReference = ReferenceHeun(model, state, k1, step, s => model.Derivative(s));
                         double spinRate = state.AngularVelocity.Length;
@@ -533,7 +533,7 @@ namespace MagnusBall.Tests.Integration
                 var state = new FlightState(Vector3d.Zero, velocity, axis * (rate / axis.Length));
                 double step = 0.5 + 1.5 * random.NextDouble();
                 StateDerivative k1 = model.Derivative(state);
-                FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out _, out _);
+                FlightState rk4 = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out _, out _);
                 AssertSame(rk4, ReferenceRk4(model, state, k1, step, s => model.Derivative(s)), state);
                 compared++;
             }
@@ -608,7 +608,7 @@ namespace MagnusBall.Tests.Integration
                     foreach (double step in new[] { 1.0 / 240, 0.03, Math.Min(tau, 0.05), 0.99 * Math.Min(tau, 0.05) })
                     {
                         StateDerivative k1 = model.Derivative(state);
-                        FlightState rk4 = RungeKutta4.Instance.Step(model, state, k1, step, out _, out _);
+                        FlightState rk4 = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out _, out _);
                         FlightState reference = ReferenceRk4(model, state, k1, step, s => model.Derivative(s));
                         if (!reference.IsFinite)
                         {
@@ -630,7 +630,7 @@ namespace MagnusBall.Tests.Integration
             TestContext.WriteLine($"worst velocity difference {worst:F3} of its bound");
         }
 
-        private static double Ulp(double value) => Textbook.Ulp(value);
+        private static double Ulp(double value) => Rounding.Ulp(value);
 
         [Test]
         public void StraightLineRk4_OfTheThesisModel_IsTheGeneralStep_BitForBit()
@@ -649,7 +649,7 @@ namespace MagnusBall.Tests.Integration
                     foreach (double step in new[] { 1.0 / 240, 0.03, 1e-9 })
                     {
                         StateDerivative k1 = model.Derivative(state);
-                        FlightState general = RungeKutta4.Instance.Step(model, state, k1, step, out StateDerivative generalEnd, out _);
+                        FlightState general = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out StateDerivative generalEnd, out _);
                         if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                         {
                             declined++;
@@ -726,7 +726,7 @@ namespace MagnusBall.Tests.Integration
 
                     double step = steps[i % steps.Length];
                     compared++;
-                    FlightState expected = RungeKutta4.Instance.Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
+                    FlightState expected = ((IIntegrator)RungeKutta4.Instance).Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
                     if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                     {
                         continue;
@@ -799,7 +799,7 @@ namespace MagnusBall.Tests.Integration
                     StateDerivative k1 = general.Derivative(state);
                     compared++;
                     realistic += isRealistic ? 1 : 0;
-                    FlightState expected = RungeKutta4.Instance.Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
+                    FlightState expected = ((IIntegrator)RungeKutta4.Instance).Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
                     if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                     {
                         continue;
@@ -839,8 +839,8 @@ namespace MagnusBall.Tests.Integration
                 // as the start and end derivative (StableStepping does): the same step as with two variables. (Under Mono,
                 // where RK4 tries the straight form first, an early version zeroed it and the step lost its first slope.)
                 StateDerivative separate = model.Derivative(state), shared = separate;
-                FlightState apart = RungeKutta4.Instance.Step(model, state, separate, 1.0 / 240, out StateDerivative end, out _);
-                FlightState together = RungeKutta4.Instance.Step(model, state, shared, 1.0 / 240, out shared, out _);
+                FlightState apart = ((IIntegrator)RungeKutta4.Instance).Step(model, state, separate, 1.0 / 240, out StateDerivative end, out _);
+                FlightState together = ((IIntegrator)RungeKutta4.Instance).Step(model, state, shared, 1.0 / 240, out shared, out _);
                 AssertBits(together.Velocity, apart.Velocity, state, 1.0 / 240);
                 AssertBits(shared.Acceleration, end.Acceleration, state, 1.0 / 240);
             }
@@ -893,7 +893,7 @@ namespace MagnusBall.Tests.Integration
             StateDerivative k = model.Derivative(start);
             for (int i = 0; i < count; i++)
             {
-                one = RungeKutta4.Instance.Step(model, one, k, 1.0 / 240, out k, out _);
+                one = ((IIntegrator)RungeKutta4.Instance).Step(model, one, k, 1.0 / 240, out k, out _);
             }
 
             AssertSame(many, one, start);
@@ -975,7 +975,7 @@ namespace MagnusBall.Tests.Integration
             var rates = new List<StateDerivative> { model.Derivative(start) };
             while (true)
             {
-                FlightState next = RungeKutta4.Instance.Step(model, states[^1], rates[^1], 0.5, out StateDerivative end, out _);
+                FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, states[^1], rates[^1], 0.5, out StateDerivative end, out _);
                 if (!(next.IsFinite && end.IsFinite))
                 {
                     break;
@@ -1015,7 +1015,7 @@ namespace MagnusBall.Tests.Integration
             int evaluations = 1;
             for (int i = 0; i < 100; i++)
             {
-                state = RungeKutta4.Instance.Step(model, state, k, 1.0 / 240, out k, out int used);
+                state = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k, 1.0 / 240, out k, out int used);
                 evaluations += used;
             }
 

@@ -219,7 +219,7 @@ namespace MagnusBall.Tests.Presets
             StateDerivative d = model.Derivative(state);
             while (state.Time < 10)
             {
-                FlightState next = RungeKutta4.Instance.Step(model, state, d, ShotFlight.Step);
+                FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, state, d, ShotFlight.Step);
                 if (next.Velocity.Z < 0 && state.Position.Z >= height && next.Position.Z < height)
                 {
                     double t = (state.Position.Z - height) / (state.Position.Z - next.Position.Z);
@@ -239,7 +239,7 @@ namespace MagnusBall.Tests.Presets
             StateDerivative d = model.Derivative(state);
             while (state.Time < 10)
             {
-                FlightState next = RungeKutta4.Instance.Step(model, state, d, ShotFlight.Step);
+                FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, state, d, ShotFlight.Step);
                 double a = Vector3d.Dot(state.Position, normal) - distance;
                 double b = Vector3d.Dot(next.Position, normal) - distance;
                 if (a < 0 && b >= 0)

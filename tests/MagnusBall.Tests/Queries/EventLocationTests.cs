@@ -43,7 +43,7 @@ namespace MagnusBall.Tests.Queries
             var model = Shots.StepanekTennis(Gravity.ZUp);
             FlightState s0 = TennisDrive(Vector3d.UnitZ);
             StateDerivative d0 = model.Derivative(s0);
-            FlightState s1 = RungeKutta4.Instance.Step(model, s0, d0, 1.0 / 60);
+            FlightState s1 = ((IIntegrator)RungeKutta4.Instance).Step(model, s0, d0, 1.0 / 60);
             var segment = new HermiteSegment(s0, d0, s1, model.Derivative(s1));
 
             Assert.That(segment.PositionAt(s0.Time), Is.EqualTo(s0.Position));
@@ -158,7 +158,7 @@ namespace MagnusBall.Tests.Queries
             var model = FlightModel.Vacuum(Ball.Tennis, Gravity.ZUp);
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(10, 0, 0), default);
             StateDerivative d0 = model.Derivative(start);
-            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 0.1);
+            FlightState end = ((IIntegrator)RungeKutta4.Instance).Step(model, start, d0, 0.1);
             var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
 
             var net = new Plane(new Vector3d(0.5, 0, 0), Vector3d.UnitX);
@@ -180,7 +180,7 @@ namespace MagnusBall.Tests.Queries
             var model = FlightModel.Vacuum(Ball.Tennis, new Vector3d(0, 0, -10));
             var start = new FlightState(default, new Vector3d(1, 0, 10), default);
             StateDerivative d0 = model.Derivative(start);
-            FlightState end = RungeKutta4.Instance.Step(model, start, d0, 2.0);
+            FlightState end = ((IIntegrator)RungeKutta4.Instance).Step(model, start, d0, 2.0);
             var segment = new HermiteSegment(start, d0, end, model.Derivative(end));
 
             var ceiling = new Plane(new Vector3d(0, 0, 1), Vector3d.UnitZ);
@@ -462,7 +462,7 @@ namespace MagnusBall.Tests.Queries
                 double h = shot % 2 == 0 ? 1.0 / 240 : 1.0 / 30;
                 for (int i = 0; i < 1000 && state.Position.Z > -2; i++)
                 {
-                    FlightState next = RungeKutta4.Instance.Step(model, state, k1, h, out StateDerivative k2, out _);
+                    FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, h, out StateDerivative k2, out _);
                     var segment = new HermiteSegment(state, k1, next, k2);
                     FlightState middle = segment.StateAt(state.Time + 0.5 * h);
                     double top = Math.Max(state.Position.Z, next.Position.Z);

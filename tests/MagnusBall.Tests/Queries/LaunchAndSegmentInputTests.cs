@@ -61,7 +61,7 @@ namespace MagnusBall.Tests.Queries
             model = Shots.StepanekTennis(Gravity.ZUp);
             start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(20, 0, 3), Vector3d.Zero);
             d0 = model.Derivative(start);
-            end = RungeKutta4.Instance.Step(model, start, d0, 0.01);
+            end = ((IIntegrator)RungeKutta4.Instance).Step(model, start, d0, 0.01);
             d1 = model.Derivative(end);
         }
 

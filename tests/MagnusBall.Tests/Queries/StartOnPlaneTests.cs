@@ -23,7 +23,7 @@ namespace MagnusBall.Tests.Queries
         private static HermiteSegment FirstStep(in FlightState start)
         {
             StateDerivative d0 = Model.Derivative(start);
-            FlightState end = RungeKutta4.Instance.Step(Model, start, d0, Step);
+            FlightState end = ((IIntegrator)RungeKutta4.Instance).Step(Model, start, d0, Step);
             return new HermiteSegment(start, d0, end, Model.Derivative(end));
         }
 

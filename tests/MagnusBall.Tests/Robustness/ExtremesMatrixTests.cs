@@ -81,7 +81,7 @@ namespace MagnusBall.Tests.Robustness
             (string _, FlightModel model) = ExtremeCases.Balls[5];
             FlightState launch = ExtremeCases.Launch(100, 0, "along");
             StateDerivative k1 = model.Derivative(launch);
-            FlightState raw = RungeKutta4.Instance.Step(model, launch, k1, 0.25);
+            FlightState raw = ((IIntegrator)RungeKutta4.Instance).Step(model, launch, k1, 0.25);
             FlightState safe = StableStepping.Step(RungeKutta4.Instance, model, launch, k1, 0.25, out _, out int substeps);
 
             Assert.That(raw.Velocity.Length, Is.GreaterThan(100), "raw RK4 gains speed from drag: unstable");

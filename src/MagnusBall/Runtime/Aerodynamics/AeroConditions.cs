@@ -111,7 +111,7 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>Spin rate in revolutions per minute, |w| 60 / (2 pi).</summary>
-        public double SpinRpm => SpinRate * (60.0 / (2.0 * System.Math.PI));
+        internal double SpinRpm => SpinRate * (60.0 / (2.0 * System.Math.PI));
     }
 
     /// <summary>A drag-coefficient law C_D(conditions). Implementations are immutable and thread-safe.</summary>

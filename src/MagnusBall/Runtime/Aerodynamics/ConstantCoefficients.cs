@@ -15,7 +15,7 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>The constant C_D.</summary>
-        public double Value { get; }
+        internal double Value { get; }
 
         /// <summary>The seed thesis's reverse-engineered tennis drag coefficient, c_d = 0.55 (Agrawal 2023).</summary>
         public static ConstantDrag ThesisTennis { get; } = new ConstantDrag(0.55);
@@ -27,7 +27,7 @@ namespace MagnusBall.Aerodynamics
         public static ConstantDrag CrossLindseyTennis { get; } = new ConstantDrag(0.507);
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) => Value;
+        double IDragModel.DragCoefficient(in AeroConditions conditions) => Value;
 
         /// <inheritdoc />
         public override string ToString() => $"ConstantDrag({Value:R})";
@@ -49,13 +49,13 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>The constant C_L.</summary>
-        public double Value { get; }
+        internal double Value { get; }
 
         /// <summary>The seed thesis's reverse-engineered tennis Magnus coefficient, c_m = 0.175 (Agrawal 2023).</summary>
         public static ConstantLift ThesisTennis { get; } = new ConstantLift(0.175);
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Value;
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Value;
 
         /// <inheritdoc />
         public override string ToString() => $"ConstantLift({Value:R})";
@@ -76,13 +76,13 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>The slope k in C_L = k S_perp.</summary>
-        public double Slope { get; }
+        internal double Slope { get; }
 
         /// <summary>Cross (2020)'s tennis groundstroke law, C_L = 0.6 S.</summary>
         public static LinearSpinLift Cross2020Tennis { get; } = new LinearSpinLift(0.6);
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Overflow.Multiply(Slope, conditions.TransverseSpinParameter);
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Overflow.Multiply(Slope, conditions.TransverseSpinParameter);
 
         /// <inheritdoc />
         public override string ToString() => $"LinearSpinLift(k={Slope:R})";

@@ -18,10 +18,10 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>The time constant tau, s.</summary>
-        public double TimeConstant { get; }
+        internal double TimeConstant { get; }
 
         /// <inheritdoc />
-        public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions)
+        Vector3d ISpinDecayModel.SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions)
         {
             Vector3d rate = angularVelocity * (-1.0 / TimeConstant);
             if (rate.IsFinite || !angularVelocity.IsFinite)

@@ -27,22 +27,22 @@ namespace MagnusBall.Aerodynamics
         /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
         /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
         /// </summary>
-        public GoffCarreSoccerDrag()
+        internal GoffCarreSoccerDrag()
         {
         }
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.Speed, conditions.SpinParameter);
+        double IDragModel.DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.Speed, conditions.SpinParameter);
 
         /// <summary>C_D at air-relative speed <paramref name="speed"/> and spin parameter <paramref name="spinParameter"/>.</summary>
         /// <param name="speed">Air-relative speed s, m/s.</param>
         /// <param name="spinParameter">S = r|w|/s.</param>
-        public static double Evaluate(double speed, double spinParameter) =>
+        internal static double Evaluate(double speed, double spinParameter) =>
             Math.Max(NonSpinning(speed), Spinning(spinParameter));
 
         /// <summary>The non-spinning drag crisis, 0.155 + 0.346 / (1 + exp((s - 12.19) / 1.309)).</summary>
         /// <param name="speed">Air-relative speed s, m/s.</param>
-        public static double NonSpinning(double speed)
+        internal static double NonSpinning(double speed)
         {
             // exp overflows to +inf only far above the crisis (s > about 940 m/s), where 0.346/inf = 0 gives the
             // correct supercritical limit 0.155; at s = 0 it is exp(-12.19/1.309) = 9e-5. No NaN for any s >= 0.
@@ -51,7 +51,7 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>The spinning-ball law 0.4127 S^0.3056 (0 for S &lt;= 0).</summary>
         /// <param name="spinParameter">S = r|w|/s.</param>
-        public static double Spinning(double spinParameter) =>
+        internal static double Spinning(double spinParameter) =>
             spinParameter > 0 ? 0.4127 * PortableMath.Pow(spinParameter, 0.3056) : 0.0;
 
         /// <inheritdoc />

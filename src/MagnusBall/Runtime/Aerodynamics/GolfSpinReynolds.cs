@@ -36,19 +36,19 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>a, C_D above the crisis at zero spin.</summary>
-        public double Floor { get; }
+        internal double Floor { get; }
 
         /// <summary>b, the rise of C_D per unit spin parameter.</summary>
-        public double SpinSlope { get; }
+        internal double SpinSlope { get; }
 
         /// <summary>c, the extra drag far below the crisis.</summary>
-        public double CrisisRise { get; }
+        internal double CrisisRise { get; }
 
         /// <summary>Re_c, the Reynolds number in the middle of the crisis.</summary>
-        public double CrisisReynolds { get; }
+        internal double CrisisReynolds { get; }
 
         /// <summary>w, the crisis' width in Reynolds number.</summary>
-        public double CrisisWidth { get; }
+        internal double CrisisWidth { get; }
 
         /// <summary>
         /// Fitted here (least squares, all 210 points) to Bearman &amp; Harvey's (1976) wind-tunnel grid for a
@@ -66,17 +66,19 @@ namespace MagnusBall.Aerodynamics
         public static GolfSpinReynoldsDrag TrackManCalibrated { get; } = new GolfSpinReynoldsDrag(0.2240, 0.2839, 0.0399, 97237, 10160);
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinParameter, conditions.ReynoldsNumber);
+        double IDragModel.DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinParameter, conditions.ReynoldsNumber);
 
         /// <summary>C_D at spin parameter <paramref name="spinParameter"/> and Reynolds number <paramref name="reynoldsNumber"/>.</summary>
         /// <param name="spinParameter">S = r|w|/s (negative or NaN counts as 0).</param>
         /// <param name="reynoldsNumber">Re = rho s 2r / mu (&gt;= 0).</param>
-        public double Evaluate(double spinParameter, double reynoldsNumber)
+        internal double Evaluate(double spinParameter, double reynoldsNumber)
         {
             double s = spinParameter > 0 ? spinParameter : 0.0;
             // exp overflows to +inf far above the crisis, where c/inf = 0 is the right limit; no NaN for Re >= 0.
             return Floor + Overflow.Multiply(SpinSlope, s) + CrisisRise / (1.0 + PortableMath.Exp((reynoldsNumber - CrisisReynolds) / CrisisWidth));
         }
+
+        double ISpinLinearDrag.SpinSlope => SpinSlope;
 
         double ISpinLinearDrag.CoefficientWithoutSpin(in AeroConditions conditions) =>
             Floor + CrisisRise / (1.0 + PortableMath.Exp((conditions.ReynoldsNumber - CrisisReynolds) / CrisisWidth));
@@ -131,19 +133,19 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>m, the lift at S = 1 and Re = 1e5 (far above the onset).</summary>
-        public double Scale { get; }
+        internal double Scale { get; }
 
         /// <summary>p, the exponent of the spin parameter.</summary>
-        public double SpinExponent { get; }
+        internal double SpinExponent { get; }
 
         /// <summary>q, the Reynolds-number exponent.</summary>
-        public double ReynoldsExponent { get; }
+        internal double ReynoldsExponent { get; }
 
         /// <summary>Re_o, the middle of the low-speed onset.</summary>
-        public double OnsetReynolds { get; }
+        internal double OnsetReynolds { get; }
 
         /// <summary>w_o, the onset's width.</summary>
-        public double OnsetWidth { get; }
+        internal double OnsetWidth { get; }
 
         /// <summary>
         /// Fitted here (least squares, all 210 points, equal weights) to Bearman &amp; Harvey's (1976) lift grid
@@ -154,12 +156,12 @@ namespace MagnusBall.Aerodynamics
         public static GolfSpinReynoldsLift BearmanHarvey { get; } = new GolfSpinReynoldsLift(0.5959, 0.4882, 0.2097, 26160, 19420);
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter, conditions.ReynoldsNumber);
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter, conditions.ReynoldsNumber);
 
         /// <summary>C_L at transverse spin parameter <paramref name="spinParameter"/> and Reynolds number <paramref name="reynoldsNumber"/>.</summary>
         /// <param name="spinParameter">S_perp (0 or less, or NaN, gives 0).</param>
         /// <param name="reynoldsNumber">Re (0 or less gives 0: no flow, no lift).</param>
-        public double Evaluate(double spinParameter, double reynoldsNumber)
+        internal double Evaluate(double spinParameter, double reynoldsNumber)
         {
             if (!(spinParameter > 0) || !(reynoldsNumber > 0))
             {

@@ -21,10 +21,10 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>a, C_D at zero spin.</summary>
-        public double Intercept { get; }
+        internal double Intercept { get; }
 
         /// <summary>b, the rise of C_D per unit spin parameter.</summary>
-        public double Slope { get; }
+        internal double Slope { get; }
 
         /// <summary>Smits &amp; Smith's golf-ball drag, C_D = 0.24 + 0.18 S.</summary>
         public static LinearSpinDrag GolfSmitsSmith { get; } = new LinearSpinDrag(0.24, 0.18);
@@ -39,7 +39,7 @@ namespace MagnusBall.Aerodynamics
         public static LinearSpinDrag GolfTrackManCalibrated { get; } = new LinearSpinDrag(0.1845, 0.3533);
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) =>
+        double IDragModel.DragCoefficient(in AeroConditions conditions) =>
             Intercept + Overflow.Multiply(Slope, conditions.SpinParameter);
 
         /// <inheritdoc />

@@ -17,16 +17,16 @@ namespace MagnusBall.Aerodynamics
         /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
         /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
         /// </summary>
-        public NathanBaseballDrag()
+        internal NathanBaseballDrag()
         {
         }
 
         /// <inheritdoc />
-        public double DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinRpm);
+        double IDragModel.DragCoefficient(in AeroConditions conditions) => Evaluate(conditions.SpinRpm);
 
         /// <summary>C_D at <paramref name="spinRpm"/> revolutions per minute.</summary>
         /// <param name="spinRpm">Spin rate |w|, rpm (&gt;= 0).</param>
-        public static double Evaluate(double spinRpm) => 0.3008 + 0.0292 * (spinRpm / 1000.0);
+        internal static double Evaluate(double spinRpm) => 0.3008 + 0.0292 * (spinRpm / 1000.0);
 
         /// <inheritdoc />
         public override string ToString() => "NathanBaseballDrag";
@@ -48,16 +48,16 @@ namespace MagnusBall.Aerodynamics
         /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
         /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
         /// </summary>
-        public NathanBaseballLift()
+        internal NathanBaseballLift()
         {
         }
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
 
         /// <summary>C_L at <paramref name="spinParameter"/> (0 for S &lt;= 0).</summary>
         /// <param name="spinParameter">S_perp.</param>
-        public static double Evaluate(double spinParameter) =>
+        internal static double Evaluate(double spinParameter) =>
             !(spinParameter > 0) ? 0.0
             : spinParameter < 1e300 ? 1.120 * spinParameter / (0.583 + 2.333 * spinParameter)
             : 1.120 / (0.583 / spinParameter + 2.333); // the same, without 2.333 S overflowing

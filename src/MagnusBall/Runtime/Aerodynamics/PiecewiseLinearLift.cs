@@ -76,10 +76,10 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>The table's S_perp values, increasing.</summary>
-        public IReadOnlyList<double> SpinParameters => _sView;
+        internal IReadOnlyList<double> SpinParameters => _sView;
 
         /// <summary>The table's C_L values.</summary>
-        public IReadOnlyList<double> LiftCoefficients => _cView;
+        internal IReadOnlyList<double> LiftCoefficients => _cView;
 
         /// <summary>
         /// Soccer (Goff &amp; Carre; secondary transcription): (0, 0) assumed here (no spin, no lift), the Adidas
@@ -103,11 +103,11 @@ namespace MagnusBall.Aerodynamics
             new[] { 0.0, 0.10, 0.16, 0.23, 0.33 });
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
 
         /// <summary>C_L at <paramref name="spinParameter"/> (linear inside the table, the end value outside; NaN gives the first value).</summary>
         /// <param name="spinParameter">S_perp.</param>
-        public double Evaluate(double spinParameter)
+        internal double Evaluate(double spinParameter)
         {
             double[] s = _s;
             double[] c = _c;

@@ -28,7 +28,7 @@ namespace MagnusBall.Aerodynamics
         }
 
         /// <summary>k, 1/m: the spin falls by a factor exp(-k) per metre of air travelled.</summary>
-        public double RatePerMetre { get; }
+        internal double RatePerMetre { get; }
 
         /// <summary>
         /// The law that loses <paramref name="fraction"/> of the spin over <paramref name="distanceMetres"/> of
@@ -57,7 +57,7 @@ namespace MagnusBall.Aerodynamics
         public static SpeedProportionalSpinDecay BaseballNathan { get; } = new SpeedProportionalSpinDecay(1.0 / (5.0 * 44.704));
 
         /// <inheritdoc />
-        public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
+        Vector3d ISpinDecayModel.SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             Overflow.Multiply(angularVelocity, Overflow.Multiply(-RatePerMetre, conditions.Speed));
 
         /// <inheritdoc />

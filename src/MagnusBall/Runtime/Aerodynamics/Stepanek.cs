@@ -19,7 +19,7 @@ namespace MagnusBall.Aerodynamics
         /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
         /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
         /// </summary>
-        public StepanekDrag()
+        internal StepanekDrag()
         {
         }
 
@@ -34,9 +34,9 @@ namespace MagnusBall.Aerodynamics
         /// (<see cref="TryTable"/>), from <see cref="PowMinusTwoFifths"/> elsewhere; within 4.25 ulp of the exact law.
         /// S &lt;= 0 gives the no-spin value 0.508, as there.
         /// </remarks>
-        public double DragCoefficient(in AeroConditions conditions) => FromConditions(conditions);
+        double IDragModel.DragCoefficient(in AeroConditions conditions) => FromConditions(conditions);
 
-        /// <summary><see cref="DragCoefficient"/>'s arithmetic, shared with the flight kernel and (lane by lane) the ball batch.</summary>
+        /// <summary><see cref="IDragModel.DragCoefficient"/>'s arithmetic, shared with the flight kernel and (lane by lane) the ball batch.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         internal static double FromConditions(in AeroConditions conditions) =>
             0.508 + SpinPart(conditions.Speed, conditions.SpinRate, conditions.Radius, conditions.SpinParameter); // S <= 0: 0.508 + 0
@@ -153,7 +153,7 @@ namespace MagnusBall.Aerodynamics
 
         /// <summary>C_D at spin parameter <paramref name="spinParameter"/> (S &lt;= 0 gives the no-spin value 0.508).</summary>
         /// <param name="spinParameter">S = r|w|/s.</param>
-        public static double Evaluate(double spinParameter)
+        internal static double Evaluate(double spinParameter)
         {
             if (!(spinParameter > 0))
             {
@@ -273,16 +273,16 @@ namespace MagnusBall.Aerodynamics
         /// Creates the law. It holds no state, so every instance gives the same numbers as <see cref="Instance"/>
         /// (which the presets and the flight kernel use; the kernel specialises on the type, not the instance).
         /// </summary>
-        public StepanekLift()
+        internal StepanekLift()
         {
         }
 
         /// <inheritdoc />
-        public double LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
+        double ILiftModel.LiftCoefficient(in AeroConditions conditions) => Evaluate(conditions.TransverseSpinParameter);
 
         /// <summary>C_L at transverse spin parameter <paramref name="spinParameter"/> (0 for S &lt;= 0).</summary>
         /// <param name="spinParameter">S_perp = r|w x v_hat|/s.</param>
-        public static double Evaluate(double spinParameter)
+        internal static double Evaluate(double spinParameter)
         {
             if (!(spinParameter > 0))
             {

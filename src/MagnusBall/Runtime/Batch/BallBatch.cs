@@ -97,13 +97,13 @@ namespace MagnusBall.Batch
         }
 
         /// <summary>The flight model.</summary>
-        public FlightModel Model { get; }
+        internal FlightModel Model { get; }
 
         /// <summary>The plane the balls land on.</summary>
-        public Plane Ground { get; }
+        internal Plane Ground { get; }
 
         /// <summary>The most balls the batch holds.</summary>
-        public int Capacity { get; }
+        internal int Capacity { get; }
 
         /// <summary>The balls in the batch.</summary>
         public int Count => _count;
@@ -113,7 +113,7 @@ namespace MagnusBall.Batch
         /// <see cref="Vector{T}"/> and the model's laws have vector forms); false when it steps ball by ball. The results
         /// are the same either way.
         /// </summary>
-        public bool IsVectorized { get; }
+        internal bool IsVectorized { get; }
 
         /// <summary>Adds a ball; it flies from <paramref name="state"/> (evaluates its derivative once).</summary>
         /// <param name="state">The start state; every component finite.</param>

@@ -55,7 +55,7 @@ namespace MagnusBall.Contact
 
         /// <summary>The normal COR e0 - k theta for a relative incoming angle, clamped to [0, 1].</summary>
         /// <param name="incomingAngleDegrees">theta: the relative incoming velocity's angle from the face, degrees, in [0, 90].</param>
-        public double NormalRestitutionAt(double incomingAngleDegrees)
+        internal double NormalRestitutionAt(double incomingAngleDegrees)
         {
             double e = NormalRestitution - NormalRestitutionPerDegree * incomingAngleDegrees;
             return e < 0 ? 0 : e > 1 ? 1 : e;
@@ -63,7 +63,7 @@ namespace MagnusBall.Contact
 
         /// <summary>The normal-force offset D0 + D1 v for a relative incoming speed, m.</summary>
         /// <param name="incomingSpeed">v: the ball's speed relative to the face before the impact, m/s.</param>
-        public double ForceOffsetAt(double incomingSpeed) => ForceOffset + ForceOffsetPerSpeed * incomingSpeed;
+        internal double ForceOffsetAt(double incomingSpeed) => ForceOffset + ForceOffsetPerSpeed * incomingSpeed;
 
         /// <inheritdoc />
         public override string ToString() =>

@@ -68,7 +68,7 @@ namespace MagnusBall.Contact
 
         /// <summary>The velocity of the body's surface at <paramref name="contactPoint"/>: V + Omega x (contact - point), m/s.</summary>
         /// <param name="contactPoint">A point of the body, m.</param>
-        public Vector3d SurfaceVelocityAt(in Vector3d contactPoint) => Velocity + Vector3d.Cross(AngularVelocity, contactPoint - Point);
+        internal Vector3d SurfaceVelocityAt(in Vector3d contactPoint) => Velocity + Vector3d.Cross(AngularVelocity, contactPoint - Point);
 
         /// <inheritdoc />
         public override string ToString() => $"ImpactBody(point={Point}, v={Velocity}, w={AngularVelocity}, n={Normal}, M={EffectiveMass:R} kg)";
@@ -124,10 +124,10 @@ namespace MagnusBall.Contact
         }
 
         /// <summary>The ball's speed after the impact, m/s.</summary>
-        public double Speed => Velocity.Length;
+        internal double Speed => Velocity.Length;
 
         /// <summary>The ball's spin rate after the impact, rad/s.</summary>
-        public double SpinRate => AngularVelocity.Length;
+        internal double SpinRate => AngularVelocity.Length;
 
         /// <summary>The ball's state after the impact at <paramref name="position"/> and <paramref name="time"/>.</summary>
         /// <param name="position">The ball's centre, m.</param>

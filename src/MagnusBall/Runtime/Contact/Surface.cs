@@ -82,10 +82,10 @@ namespace MagnusBall.Contact
         public static Surface Frictionless { get; } = new Surface("frictionless", 1, 0, 0, 0, 0, 0);
 
         /// <summary>The three court presets: hard, clay, grass.</summary>
-        public static Surface[] Courts => new[] { Hard, Clay, Grass };
+        internal static Surface[] Courts => new[] { Hard, Clay, Grass };
 
         /// <summary>Every preset, the courts and <see cref="Frictionless"/>.</summary>
-        public static Surface[] All => new[] { Hard, Clay, Grass, Frictionless };
+        internal static Surface[] All => new[] { Hard, Clay, Grass, Frictionless };
 
         /// <summary>The preset called <paramref name="name"/> (case-insensitive; surrounding spaces ignored): hard, clay, grass or frictionless.</summary>
         /// <param name="name">A preset name.</param>

@@ -163,7 +163,7 @@ namespace MagnusBall.Flight
             new FlightEventSet(Require.NotNull(model, nameof(model)).Up, Plane.Ground(model), planes);
 
         /// <summary>The unit up direction used for the apex (zero: no apex events).</summary>
-        public Vector3d Up { get; }
+        internal Vector3d Up { get; }
 
         /// <summary>The ground plane, or null.</summary>
         public Plane? Ground { get; }

@@ -1,4 +1,4 @@
-// FlightStepper, part: rolling on a contact surface (StartRolling, Roll): Heun's steps of the rolling ball under slope,
+// FlightStepper, part: rolling on a contact surface (StartRolling, Roll): steps of the rolling ball (Integration/RollingHeun) under slope,
 // rolling resistance and the air, and the stop where it comes to rest (StopWithin). Reached from the general step
 // (Advance, FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
 using MagnusBall.Integration;
@@ -21,7 +21,7 @@ namespace MagnusBall.Flight
             _now.Derivative = new StateDerivative(state.Velocity, RollingAcceleration(state), Vector3d.Zero);
         }
 
-        // The roll to endTime: Heun's method (exact for a constant acceleration, so exact on level ground in still air),
+        // The roll to endTime: one step of RollingHeun (exact for a constant acceleration, so exact on level ground in still air),
         // with the stop located inside the step where the speed along the motion reaches zero. False, with nothing
         // committed to the segments, when a state or derivative of the roll would not be finite (the caller refuses the step).
         private bool Roll(double endTime)
@@ -41,27 +41,26 @@ namespace MagnusBall.Flight
                 return false;
             }
 
-            Vector3d vPredicted = v0 + a0 * h;
+            RollingHeun.Predict(s0.Position, v0, a0, h, out Vector3d pPredicted, out Vector3d vPredicted);
             if (_canRest && (v0.LengthSquared == 0 || Vector3d.Dot(vPredicted, v0) <= 0))
             {
                 return StopWithin(s0, a0, vPredicted, h, spinNormal);
             }
 
-            var predicted = new FlightState(s0.Position + v0 * h, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
+            var predicted = new FlightState(pPredicted, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
             if (!predicted.IsFinite)
             {
                 return false;
             }
 
             Vector3d a1 = RollingAcceleration(predicted);
-            Vector3d average = (a0 + a1) * 0.5;
-            Vector3d v1 = v0 + average * h;
+            RollingHeun.Correct(s0.Position, v0, a0, a1, h, out Vector3d average, out Vector3d p1, out Vector3d v1);
             if (_canRest && Vector3d.Dot(v1, v0) <= 0)
             {
                 return StopWithin(s0, average, v1, h, spinNormal);
             }
 
-            var next = new FlightState(_contactPlane.Project(s0.Position + (v0 + v1) * (0.5 * h)), v1, RollingSpin(v1, spinNormal), endTime);
+            var next = new FlightState(_contactPlane.Project(p1), v1, RollingSpin(v1, spinNormal), endTime);
             if (!next.IsFinite)
             {
                 return false;

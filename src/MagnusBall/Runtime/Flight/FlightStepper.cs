@@ -76,10 +76,10 @@ namespace MagnusBall.Flight
     public sealed partial class FlightStepper
     {
         /// <summary>The most pieces of flight (between bounces) one step holds; the last puts the ball to rolling.</summary>
-        public const int MaxPiecesPerStep = 16;
+        internal const int MaxPiecesPerStep = 16;
 
         /// <summary>The most attempts <see cref="TryStepAdaptive"/> makes before it accepts the smallest step it tried.</summary>
-        public const int MaxAdaptiveAttempts = 64;
+        internal const int MaxAdaptiveAttempts = 64;
 
         // Two of each: a step writes its events and pieces into the pending arrays and swaps them in when it is taken,
         // so a refused step leaves the last step's Events and segments exactly as they were.
@@ -150,16 +150,16 @@ namespace MagnusBall.Flight
         }
 
         /// <summary>The flight model.</summary>
-        public FlightModel Model { get; }
+        internal FlightModel Model { get; }
 
         /// <summary>The integration method.</summary>
-        public IIntegrator Integrator { get; }
+        internal IIntegrator Integrator { get; }
 
         /// <summary>The events looked for in each step, or null.</summary>
-        public FlightEventSet? EventSet { get; }
+        internal FlightEventSet? EventSet { get; }
 
         /// <summary>The surface the ball bounces and rolls on, or null.</summary>
-        public GroundContact? Contact { get; }
+        internal GroundContact? Contact { get; }
 
         /// <summary>The current state (the end of the last step, or the stop).</summary>
         public FlightState State => _now.State;
@@ -194,7 +194,7 @@ namespace MagnusBall.Flight
         /// The most events one step can report: every piece between bounces (at most <see cref="MaxPiecesPerStep"/> + 1) with
         /// each of its events, and the rest. A buffer this long holds any step's <see cref="Events"/>.
         /// </summary>
-        public int MaximumEventsPerStep => _events.Length;
+        internal int MaximumEventsPerStep => _events.Length;
 
         /// <summary>
         /// The events of the last step taken, in time order, up to its stop event (nothing after a stop happens). A refused
@@ -209,7 +209,7 @@ namespace MagnusBall.Flight
         public FlightEvent StopEvent => _stopEvent;
 
         /// <summary>Steps taken since the last <see cref="Reset"/>.</summary>
-        public long StepCount => _now.Steps;
+        internal long StepCount => _now.Steps;
 
         /// <summary>Bounces since the last <see cref="Reset"/>.</summary>
         public int BounceCount => _now.Bounces;
@@ -471,7 +471,7 @@ namespace MagnusBall.Flight
         /// <param name="kinds">The kinds to look for.</param>
         /// <param name="found">The event; default when none.</param>
         /// <returns>True when one was found.</returns>
-        public bool TryGetEvent(FlightEventKinds kinds, out FlightEvent found)
+        internal bool TryGetEvent(FlightEventKinds kinds, out FlightEvent found)
         {
             for (int i = 0; i < _eventCount; i++)
             {

@@ -12,13 +12,13 @@ namespace MagnusBall.Flight
     public sealed class GroundContact
     {
         /// <summary>Default outgoing normal speed, m/s, below which the ball rolls instead of bouncing again (0.1 m/s).</summary>
-        public const double DefaultRestNormalSpeed = 0.1;
+        internal const double DefaultRestNormalSpeed = 0.1;
 
         /// <summary>
         /// Default rolling-resistance coefficient c_rr (0.03): a game value with no published source, in the range of
         /// a tennis ball on a hard court. The rolling ball decelerates at c_rr times the gravity along the normal.
         /// </summary>
-        public const double DefaultRollingResistance = 0.03;
+        internal const double DefaultRollingResistance = 0.03;
 
         /// <summary>Creates a contact surface.</summary>
         /// <param name="bounce">The bounce law (for example <see cref="CrossBounce.Hard"/>).</param>
@@ -40,15 +40,15 @@ namespace MagnusBall.Flight
         }
 
         /// <summary>The bounce law.</summary>
-        public IBounceModel Bounce { get; }
+        internal IBounceModel Bounce { get; }
 
         /// <summary>The surface plane (its normal points out of the surface, toward the ball).</summary>
-        public Plane Plane { get; }
+        internal Plane Plane { get; }
 
         /// <summary>Outgoing normal speed below which the ball rolls, m/s.</summary>
-        public double RestNormalSpeed { get; }
+        internal double RestNormalSpeed { get; }
 
         /// <summary>Rolling-resistance coefficient c_rr: the rolling ball decelerates at c_rr times the gravity along the normal.</summary>
-        public double RollingResistance { get; }
+        internal double RollingResistance { get; }
     }
 }

@@ -14,7 +14,7 @@ namespace MagnusBall.Integration
     /// heuristic and the dense output of DOPRI5, whose coefficients are Shampine's (1986)).</para>
     /// <para>Two ways to use it:</para>
     /// <list type="bullet">
-    /// <item>As a fixed-step <see cref="IIntegrator"/>: <see cref="Step"/> takes the fifth-order solution
+    /// <item>As a fixed-step <see cref="IIntegrator"/>: <see cref="IIntegrator.Step"/> takes the fifth-order solution
     /// of one step and ignores the error estimate. Six evaluations per step (k2..k6 and the FSAL stage
     /// k7 = f(y1), returned as the end derivative: the caller's next k1, as for every integrator here).</item>
     /// <item>Adaptively: <see cref="TryStep"/> attempts one step and reports whether its estimated error is
@@ -47,10 +47,10 @@ namespace MagnusBall.Integration
         private const double MaximumFactor = 5.0;
 
         /// <summary>The default relative tolerance, 1e-6.</summary>
-        public const double DefaultRelativeTolerance = 1e-6;
+        internal const double DefaultRelativeTolerance = 1e-6;
 
         /// <summary>The default absolute tolerance, 1e-9 (in each component's own unit: m, m/s, rad/s).</summary>
-        public const double DefaultAbsoluteTolerance = 1e-9;
+        internal const double DefaultAbsoluteTolerance = 1e-9;
 
         /// <summary>
         /// Creates the method with the given tolerances.
@@ -68,26 +68,26 @@ namespace MagnusBall.Integration
         public static DormandPrince54 Instance { get; } = new DormandPrince54();
 
         /// <summary>The relative tolerance rtol.</summary>
-        public double RelativeTolerance { get; }
+        internal double RelativeTolerance { get; }
 
         /// <summary>The absolute tolerance atol (m, m/s, rad/s per component).</summary>
-        public double AbsoluteTolerance { get; }
+        internal double AbsoluteTolerance { get; }
 
         /// <inheritdoc />
-        public string Name => "dp54";
+        string IIntegrator.Name => "dp54";
 
         /// <inheritdoc />
-        public int Order => 5;
+        int IIntegrator.Order => 5;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => 6;
+        int IIntegrator.DerivativeEvaluationsPerStep => 6;
 
         /// <summary>
         /// Takes one fixed step with the fifth-order solution (no error control). Six evaluations: k2..k6 and
         /// the end derivative k7 (k1 is passed in).
         /// </summary>
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations)
         {

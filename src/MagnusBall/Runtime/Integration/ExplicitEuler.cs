@@ -13,21 +13,21 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
         /// </summary>
-        public ExplicitEuler()
+        internal ExplicitEuler()
         {
         }
 
         /// <inheritdoc />
-        public string Name => "euler";
+        string IIntegrator.Name => "euler";
 
         /// <inheritdoc />
-        public int Order => 1;
+        int IIntegrator.Order => 1;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => 1;
+        int IIntegrator.DerivativeEvaluationsPerStep => 1;
 
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations)
         {
@@ -52,21 +52,21 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
         /// </summary>
-        public SemiImplicitEuler()
+        internal SemiImplicitEuler()
         {
         }
 
         /// <inheritdoc />
-        public string Name => "semi-implicit-euler";
+        string IIntegrator.Name => "semi-implicit-euler";
 
         /// <inheritdoc />
-        public int Order => 1;
+        int IIntegrator.Order => 1;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => 1;
+        int IIntegrator.DerivativeEvaluationsPerStep => 1;
 
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations)
         {

@@ -6,7 +6,7 @@ using System.Runtime.CompilerServices;
 
 namespace MagnusBall.Integration
 {
-    public readonly partial struct HermiteSegment
+    internal readonly partial struct HermiteSegment
     {
         /// <summary>
         /// Finds the first time inside a step that continues a flight at which the ball crosses

@@ -7,7 +7,7 @@ using System.Runtime.CompilerServices;
 namespace MagnusBall.Integration
 {
     /// <summary>Which way a crossing of a <see cref="Plane"/> goes.</summary>
-    public enum CrossingDirection
+    internal enum CrossingDirection
     {
         /// <summary>From the negative side to the positive side (along the normal): passing a net or goal line.</summary>
         AlongNormal = 0,
@@ -34,7 +34,7 @@ namespace MagnusBall.Integration
     /// is found by safeguarded Newton-bisection to <see cref="TimeTolerance"/>. So the first crossing inside
     /// the step is found even when both ends of the step are on the same side.</para>
     /// </remarks>
-    public readonly partial struct HermiteSegment : IDenseOutput
+    internal readonly partial struct HermiteSegment : IDenseOutput
     {
         /// <summary>Events are located to this time tolerance, s (1e-12 s).</summary>
         public const double TimeTolerance = 1e-12;

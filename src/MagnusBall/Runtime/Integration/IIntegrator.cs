@@ -93,7 +93,7 @@ namespace MagnusBall.Integration
         /// 5(4) at a fixed step ("dp54", its fifth-order solution) and the safe default
         /// <see cref="StableIntegrator.RungeKutta4"/> ("stable-rk4"). A new array on each call.
         /// </summary>
-        public static IIntegrator[] All => new IIntegrator[]
+        internal static IIntegrator[] All => new IIntegrator[]
         {
             ExplicitEuler.Instance, SemiImplicitEuler.Instance, Heun.Instance, RungeKutta4.Instance,
             DormandPrince54.Instance, StableIntegrator.RungeKutta4,

@@ -14,21 +14,21 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
         /// </summary>
-        public Heun()
+        internal Heun()
         {
         }
 
         /// <inheritdoc />
-        public string Name => "heun";
+        string IIntegrator.Name => "heun";
 
         /// <inheritdoc />
-        public int Order => 2;
+        int IIntegrator.Order => 2;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => 2;
+        int IIntegrator.DerivativeEvaluationsPerStep => 2;
 
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations)
         {
@@ -50,24 +50,24 @@ namespace MagnusBall.Integration
         /// <summary>
         /// Creates the method. It holds no state, so every instance steps exactly as <see cref="Instance"/> does.
         /// </summary>
-        public RungeKutta4()
+        internal RungeKutta4()
         {
         }
 
         /// <inheritdoc />
-        public string Name => "rk4";
+        string IIntegrator.Name => "rk4";
 
         /// <inheritdoc />
-        public int Order => 4;
+        int IIntegrator.Order => 4;
 
         /// <inheritdoc />
-        public int DerivativeEvaluationsPerStep => Evaluations;
+        int IIntegrator.DerivativeEvaluationsPerStep => Evaluations;
 
         // The model evaluations of one step.
         internal const int Evaluations = 4;
 
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations)
         {
@@ -81,15 +81,15 @@ namespace MagnusBall.Integration
         /// prediction (<c>TrajectoryPredictor.MaxEvaluationsPerPrediction</c>): 17 minutes of flight at 1/240 s,
         /// about 11 ms of work on the thesis model and 60 ms on the full tennis model on the machine of docs/performance.md.
         /// </summary>
-        public const int MaximumAdvanceSteps = 250_000;
+        internal const int MaximumAdvanceSteps = 250_000;
 
         /// <summary>
         /// Takes <paramref name="count"/> steps of <paramref name="step"/> seconds in one call, in place: the same bits as
-        /// <paramref name="count"/> calls of <see cref="Step"/>, each passing its end derivative on, with the arguments
+        /// <paramref name="count"/> calls of <see cref="IIntegrator.Step"/>, each passing its end derivative on, with the arguments
         /// checked once and no call per step (docs/performance.md: 480 steps on the thesis model in 0.54x the time of the
-        /// thesis-style code, against 0.65x for a loop of <see cref="Step"/> calls on .NET). For one step a frame, a count of
+        /// thesis-style code, against 0.65x for a loop of <see cref="IIntegrator.Step"/> calls on .NET). For one step a frame, a count of
         /// 1 is the cheaper call on .NET (0.57x: the state and derivative are updated in place, so the caller copies no end
-        /// derivative) and <see cref="Step"/> under Mono (0.58x against 0.77x). No events: for landings, bounces and samples use the flight core
+        /// derivative) and <see cref="IIntegrator.Step"/> under Mono (0.58x against 0.77x). No events: for landings, bounces and samples use the flight core
         /// (<c>FlightStepper</c>, <c>FixedStepDriver</c>, <c>TrajectoryPredictor</c>).
         /// </summary>
         /// <remarks>
@@ -113,7 +113,7 @@ namespace MagnusBall.Integration
         /// <paramref name="count"/> is outside 0 to <see cref="MaximumAdvanceSteps"/>.</exception>
         /// <exception cref="System.ArgumentException"><paramref name="state"/> is not finite. Every argument is checked before
         /// any work: when one is refused, <paramref name="state"/> and <paramref name="derivative"/> are unchanged.</exception>
-        public int Advance(FlightModel model, ref FlightState state, ref StateDerivative derivative, double step, int count)
+        internal int Advance(FlightModel model, ref FlightState state, ref StateDerivative derivative, double step, int count)
         {
             StepArguments.Check(model, state, step);
             if (count < 0 || count > MaximumAdvanceSteps)
@@ -126,7 +126,7 @@ namespace MagnusBall.Integration
         }
 
         /// <summary>
-        /// <see cref="Step"/> without its argument check, for the flight core, whose state is finite (it takes no other)
+        /// <see cref="IIntegrator.Step"/> without its argument check, for the flight core, whose state is finite (it takes no other)
         /// and whose step it has checked itself: four evaluations, no interface call, and the end written straight into
         /// <paramref name="next"/> and <paramref name="endDerivative"/> (the core's fields; <paramref name="next"/> must
         /// not be a part of <paramref name="state"/>, see <see cref="FlightKernel.RungeKutta4Into"/>).

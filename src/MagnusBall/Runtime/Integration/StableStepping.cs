@@ -210,38 +210,56 @@ namespace MagnusBall.Integration
             }
 
             StiffnessLimit = stiffnessLimit;
-            Name = "stable-" + inner.Name;
+            _name = "stable-" + inner.Name;
         }
 
         /// <summary>The default bound on h_sub sigma (see the remarks): 1.</summary>
-        public const double DefaultStiffnessLimit = 1.0;
+        internal const double DefaultStiffnessLimit = 1.0;
 
         /// <summary>The most substeps one step takes before it gives up subdividing (a guard, never reached by physical
         /// input): such a step may come out non-finite, and the flight core then refuses it as diverged.</summary>
-        public const int MaximumSubsteps = 10_000;
+        internal const int MaximumSubsteps = 10_000;
+
+        /// <summary>
+        /// <paramref name="method"/> substepped only past its own stability bound on the real axis: h sigma at most 2 for the
+        /// Euler methods and Heun, and 2.5 (the most this class takes; RK4's bound is 2.785, Dormand-Prince's 3.3) for the
+        /// others. Its <see cref="SubstepCount"/> is 1 exactly when a fixed step of <paramref name="method"/> is within the
+        /// bound for the flight's drag, so a caller can refuse or flag an unstable step before taking it (the CLI refuses it,
+        /// the playground marks the flight unreliable). Null for a <see cref="StableIntegrator"/>, which splits its steps itself.
+        /// </summary>
+        /// <param name="method">The method a fixed step is taken with.</param>
+        /// <exception cref="ArgumentNullException"><paramref name="method"/> is null.</exception>
+        public static StableIntegrator? AtStabilityBound(IIntegrator method) => Require.NotNull(method, nameof(method)) switch
+        {
+            StableIntegrator => null,
+            ExplicitEuler or SemiImplicitEuler or Heun => new StableIntegrator(method, 2.0),
+            _ => new StableIntegrator(method, 2.5),
+        };
 
         /// <summary>RK4 made stability-safe: the recommended default for a game's fixed step.</summary>
         public static StableIntegrator RungeKutta4 { get; } = new StableIntegrator(Integration.RungeKutta4.Instance);
 
         /// <summary>The wrapped method.</summary>
-        public IIntegrator Inner { get; }
+        internal IIntegrator Inner { get; }
 
         /// <summary>The bound on h_sub sigma.</summary>
-        public double StiffnessLimit { get; }
+        internal double StiffnessLimit { get; }
 
         /// <summary>"stable-" followed by the inner method's name, e.g. "stable-rk4".</summary>
-        public string Name { get; }
+        string IIntegrator.Name => _name;
+
+        private readonly string _name;
 
         /// <inheritdoc />
-        public int Order => Inner.Order;
+        int IIntegrator.Order => Inner.Order;
 
         /// <summary>The inner method's count: the cost of a step that needs no substeps (each substep costs as much).</summary>
-        public int DerivativeEvaluationsPerStep => Inner.DerivativeEvaluationsPerStep;
+        int IIntegrator.DerivativeEvaluationsPerStep => Inner.DerivativeEvaluationsPerStep;
 
         /// <summary>
         /// The number of equal substeps that keeps h_sub sigma within <see cref="StiffnessLimit"/> over a step of
         /// <paramref name="step"/> seconds from <paramref name="state"/>, judged at the start of the step:
-        /// ceil(step sigma / limit), at least 1, at most <see cref="MaximumSubsteps"/>. <see cref="Step"/> re-judges at
+        /// ceil(step sigma / limit), at least 1, at most <see cref="MaximumSubsteps"/>. <see cref="IIntegrator.Step"/> re-judges at
         /// every substep and may take fewer. Costs no derivative evaluation (one or two evaluations of each coefficient law).
         /// </summary>
         /// <param name="model">The flight model.</param>
@@ -252,7 +270,7 @@ namespace MagnusBall.Integration
             StableStepping.SubstepCount(model, state, step, StiffnessLimit);
 
         /// <inheritdoc />
-        public FlightState Step(
+        FlightState IIntegrator.Step(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step,
             out StateDerivative endDerivative, out int evaluations) =>
             StableStepping.Step(Inner, model, state, derivative, step, out endDerivative, out _, out evaluations, StiffnessLimit);

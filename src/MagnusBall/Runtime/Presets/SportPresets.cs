@@ -171,7 +171,7 @@ namespace MagnusBall.Presets
             "Assumptions: C_L from Stepanek's tennis curve; constant spin.");
 
         /// <summary>Golf spin-decay time constant, s: 4 %/s, tau = -1/ln(0.96) = 24.5 s.</summary>
-        public const double GolfSpinDecayTimeConstant = 24.496;
+        internal const double GolfSpinDecayTimeConstant = 24.496;
 
         /// <summary>Every preset, in the order of <see cref="Names"/>.</summary>
         public static IReadOnlyList<SportPreset> All { get; } = Array.AsReadOnly(new[]

@@ -35,7 +35,7 @@ namespace MagnusBall.Queries
         /// <param name="arrival">The solved shot's state where it crosses the target or obstacle plane.</param>
         /// <param name="miss">See <see cref="Miss"/>.</param>
         /// <param name="simulations">Flights simulated.</param>
-        public AimSolution(
+        internal AimSolution(
             AimStatus status, double speed, double elevationRadians, double azimuthRadians, in Vector3d velocity, in Vector3d angularVelocity,
             in FlightState arrival, double miss, int simulations)
         {

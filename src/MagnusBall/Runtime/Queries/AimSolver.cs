@@ -49,13 +49,13 @@ namespace MagnusBall.Queries
     public sealed partial class AimSolver
     {
         /// <summary>Elevation and azimuth are refined to this tolerance, rad (1e-8 rad = 5.7e-7 degree).</summary>
-        public const double AngleTolerance = 1e-8;
+        internal const double AngleTolerance = 1e-8;
 
         /// <summary>The most trial flights one elevation scan may take (the constructor refuses a finer scan).</summary>
-        public const int MaximumScanTrials = 10_000;
+        internal const int MaximumScanTrials = 10_000;
 
         /// <summary>Speed is refined to this tolerance, m/s.</summary>
-        public const double SpeedTolerance = 1e-8;
+        internal const double SpeedTolerance = 1e-8;
 
         /// <summary>
         /// The work cap of one solve: 1,000,000 model evaluations plus steps over all its trial flights (a step's own work,
@@ -64,14 +64,14 @@ namespace MagnusBall.Queries
         /// solve returns <see cref="AimStatus.WorkLimitReached"/>: it bounds a huge maximumFlightTime against a small step,
         /// the finest scans and trials that <see cref="StableIntegrator"/> splits into thousands of substeps.
         /// </summary>
-        public const long MaxEvaluationsPerSolve = 1_000_000;
+        internal const long MaxEvaluationsPerSolve = 1_000_000;
 
         /// <summary>
         /// The relative and absolute tolerance (m, m/s, rad/s per component) of adaptive trials' Dormand-Prince steps: a 24 m
         /// tennis shot's arrival is then within about 1e-8 m of RK4 at 1/240 s, which moves an elevation root by less than
         /// 1e-9 rad and a speed root by about 5e-8 m/s (the arrival height changes by only 0.2 m per m/s there).
         /// </summary>
-        public const double TrialTolerance = 1e-8;
+        internal const double TrialTolerance = 1e-8;
 
         /// <summary>The most passes of <see cref="SpeedToReach"/>'s fallback scan (1 % steps up to the maximum speed take 99).</summary>
         private const int MaximumSpeedScanPasses = 101;
@@ -217,28 +217,28 @@ namespace MagnusBall.Queries
         public IIntegrator Integrator { get; }
 
         /// <summary>True when the trials fly adaptive Dormand-Prince steps (the solver was built without an integrator).</summary>
-        public bool IsAdaptive => _trials.IsAdaptive;
+        internal bool IsAdaptive => _trials.IsAdaptive;
 
         /// <summary>The fixed step of the trial flights, s (for adaptive trials, the longest step, 0.5 s).</summary>
-        public double Step { get; }
+        internal double Step { get; }
 
         /// <summary>The ground plane.</summary>
-        public Plane Ground { get; }
+        internal Plane Ground { get; }
 
         /// <summary>The longest trial flight, s.</summary>
-        public double MaximumFlightTime { get; }
+        internal double MaximumFlightTime { get; }
 
         /// <summary>Lowest elevation tried, rad.</summary>
-        public double MinimumElevationRadians { get; }
+        internal double MinimumElevationRadians { get; }
 
         /// <summary>Highest elevation tried, rad.</summary>
-        public double MaximumElevationRadians { get; }
+        internal double MaximumElevationRadians { get; }
 
         /// <summary>Elevation scan step, rad.</summary>
-        public double ElevationScanRadians { get; }
+        internal double ElevationScanRadians { get; }
 
         /// <summary>Highest speed tried, m/s.</summary>
-        public double MaximumSpeed { get; }
+        internal double MaximumSpeed { get; }
 
         /// <summary>
         /// (a) The lowest elevation at which a ball launched from <paramref name="position"/> at

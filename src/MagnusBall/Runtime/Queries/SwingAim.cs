@@ -18,7 +18,7 @@ namespace MagnusBall.Queries
         /// <param name="launch">Its launch.</param>
         /// <param name="aim">The aim solver's launch for that swing's speed and spin.</param>
         /// <param name="iterations">Outer iterations used.</param>
-        public SwingSolution(AimStatus status, in TSwing swing, in SwingLaunch launch, in AimSolution aim, int iterations)
+        internal SwingSolution(AimStatus status, in TSwing swing, in SwingLaunch launch, in AimSolution aim, int iterations)
         {
             Status = status;
             Swing = swing;
@@ -70,10 +70,10 @@ namespace MagnusBall.Queries
     public sealed class SwingAim
     {
         /// <summary>The launch direction agrees with the aim solver's to this, rad.</summary>
-        public const double AngleTolerance = 1e-9;
+        internal const double AngleTolerance = 1e-9;
 
         /// <summary>The most outer iterations (aim solves) of one solve.</summary>
-        public const int MaximumIterations = 40;
+        internal const int MaximumIterations = 40;
 
         /// <summary>
         /// The aim solver's solution counts only when it passes this close to the target, m (its angle tolerance gives
@@ -82,7 +82,7 @@ namespace MagnusBall.Queries
         /// answers with the launch that comes down over it, the distance is measured along the ground: from the landing to
         /// the point over the target.
         /// </summary>
-        public const double MissTolerance = 1e-4;
+        internal const double MissTolerance = 1e-4;
 
         private const double DifferenceDegrees = 1e-4;
         private const int MaximumHalvings = 12;
@@ -118,10 +118,10 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>The aim solver.</summary>
-        public AimSolver Solver { get; }
+        internal AimSolver Solver { get; }
 
         /// <summary>The ball.</summary>
-        public Ball Ball { get; }
+        internal Ball Ball { get; }
 
         /// <summary>
         /// The face tilt and azimuth with which <paramref name="swing"/> (its speed, path, impact point and face turn kept)

@@ -109,7 +109,7 @@ namespace MagnusBall.Queries
         /// <see cref="Prediction.WorkLimitReached"/>. It bounds a huge maxDuration against a small step, and a step that
         /// <see cref="StableIntegrator"/> splits into thousands of substeps.
         /// </summary>
-        public const long MaxEvaluationsPerPrediction = 1_000_000;
+        internal const long MaxEvaluationsPerPrediction = 1_000_000;
 
         private readonly FlightStepper _stepper;
 

@@ -53,7 +53,7 @@ namespace MagnusBall.Stepping
         /// exceed it by one step's work (at most <see cref="FlightStepper.MaxPiecesPerStep"/> pieces of
         /// <see cref="StableStepping.MaximumSubsteps"/> substeps).
         /// </summary>
-        public const long MaxEvaluationsPerAdvance = 250_000;
+        internal const long MaxEvaluationsPerAdvance = 250_000;
 
         private readonly FlightStepper _stepper;
         private readonly FlightEventKinds _stopAt;
@@ -158,25 +158,25 @@ namespace MagnusBall.Stepping
         }
 
         /// <summary>The flight model being stepped.</summary>
-        public FlightModel Model => _stepper.Model;
+        internal FlightModel Model => _stepper.Model;
 
         /// <summary>The integrator.</summary>
-        public IIntegrator Integrator => _stepper.Integrator;
+        internal IIntegrator Integrator => _stepper.Integrator;
 
         /// <summary>The fixed step, s.</summary>
         public double FixedStep { get; }
 
         /// <summary>The frame-time clamp, s.</summary>
-        public double MaxFrameDeltaSeconds { get; }
+        internal double MaxFrameDeltaSeconds { get; }
 
         /// <summary>The most fixed steps one Advance call takes.</summary>
         public int MaxStepsPerAdvance { get; }
 
         /// <summary>What the driver looks for in each step (null: nothing).</summary>
-        public FlightEventSet? Events => _stepper.EventSet;
+        internal FlightEventSet? Events => _stepper.EventSet;
 
         /// <summary>The bounce model, or null when the flight ends at the first landing.</summary>
-        public IBounceModel? BounceModel => _stepper.Contact?.Bounce;
+        internal IBounceModel? BounceModel => _stepper.Contact?.Bounce;
 
         /// <summary>Flying, rolling or stopped.</summary>
         public FlightPhase Phase => _stepper.Phase;
@@ -191,7 +191,7 @@ namespace MagnusBall.Stepping
         /// Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying, except after a call that deferred steps
         /// (<see cref="AdvanceResult.StepsDeferred"/>), which leaves the deferred time here until a later call takes it.
         /// </summary>
-        public double Accumulator => _accumulator;
+        internal double Accumulator => _accumulator;
 
         /// <summary>
         /// accumulator / step, in [0, 1]: how far the render state is through the last step while it was a whole one (a step
@@ -219,7 +219,7 @@ namespace MagnusBall.Stepping
         public int Bounces => _stepper.BounceCount;
 
         /// <summary>Model evaluations since the last reset (counted by the flight core: each is one call of the model).</summary>
-        public long DerivativeEvaluations => _stepper.DerivativeEvaluations;
+        internal long DerivativeEvaluations => _stepper.DerivativeEvaluations;
 
         /// <summary>
         /// The simulation time the renderer should show, s: one fixed step behind the simulation,

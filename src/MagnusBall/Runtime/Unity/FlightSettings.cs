@@ -224,7 +224,7 @@ namespace MagnusBall.Components
         /// <summary>Air density, kg/m^3 (sea level 1.225; Cross's tennis measurements 1.21).</summary>
         [UnityEngine.Tooltip("kg/m^3 (sea level: 1.225)")]
         [UnityEngine.Min(0f)]
-        public float airDensity = (float)Air.SeaLevelDensity;
+        public float airDensity = (float)Air.SeaLevel.Density;
 
         /// <summary>What the ball bounces on.</summary>
         [UnityEngine.Tooltip("The bounce: the preset's, none, or Cross's model on a hard, clay or grass court.")]

@@ -23,10 +23,10 @@ namespace MagnusBall.Contact.Swings
     public readonly struct BatSwing
     {
         /// <summary>Collision efficiency of a wood bat at its sweet spot, about 0.2 (Nathan 2003).</summary>
-        public const double WoodCollisionEfficiency = 0.2;
+        internal const double WoodCollisionEfficiency = 0.2;
 
         /// <summary>A barrel radius, m: 2.625 in diameter (0.0333 m radius).</summary>
-        public const double BarrelRadius = 0.0333375;
+        internal const double BarrelRadius = 0.0333375;
 
         /// <summary>Creates a bat swing.</summary>
         /// <param name="speed">Bat speed at the impact point, m/s; finite and &gt; 0.</param>
@@ -75,17 +75,17 @@ namespace MagnusBall.Contact.Swings
         public double AzimuthDegrees { get; }
 
         /// <summary>Collision efficiency q.</summary>
-        public double CollisionEfficiency { get; }
+        internal double CollisionEfficiency { get; }
 
         /// <summary>Ball-bat normal COR.</summary>
-        public double Restitution { get; }
+        internal double Restitution { get; }
 
         /// <summary>Ball-bat sliding friction.</summary>
-        public double Friction { get; }
+        internal double Friction { get; }
 
         /// <summary>The bat's effective mass at the impact point, m (1 + q)/(e - q), kg.</summary>
         /// <param name="ball">The ball; not null.</param>
-        public double EffectiveMass(Ball ball)
+        internal double EffectiveMass(Ball ball)
         {
             Require.NotNull(ball, nameof(ball));
             return ball.Mass * (1 + CollisionEfficiency) / (Restitution - CollisionEfficiency);

@@ -75,22 +75,22 @@ namespace MagnusBall.Contact.Swings
         public double Mass { get; }
 
         /// <summary>The CG's distance behind the impact point along the face normal, m.</summary>
-        public double CenterOfGravityDepth { get; }
+        internal double CenterOfGravityDepth { get; }
 
         /// <summary>The impact point's distance up the face above the CG's projection on the face, m.</summary>
-        public double ImpactHeight { get; }
+        internal double ImpactHeight { get; }
 
         /// <summary>The moment of inertia about the heel-toe axis through the CG, kg m^2 (positive infinity: does not rotate).</summary>
-        public double HeelToeInertia { get; }
+        internal double HeelToeInertia { get; }
 
         /// <summary>The moment of inertia about the axis up the face through the CG, kg m^2.</summary>
-        public double VerticalInertia { get; }
+        internal double VerticalInertia { get; }
 
         /// <summary>The moment of inertia about the face-normal axis through the CG, kg m^2.</summary>
-        public double FaceNormalInertia { get; }
+        internal double FaceNormalInertia { get; }
 
         /// <summary>True when the head cannot rotate under the impact (zero lever, or infinite moments): the point-mass law applies.</summary>
-        public bool IsPointMass =>
+        internal bool IsPointMass =>
             (CenterOfGravityDepth == 0 && ImpactHeight == 0)
             || (double.IsPositiveInfinity(HeelToeInertia) && double.IsPositiveInfinity(VerticalInertia) && double.IsPositiveInfinity(FaceNormalInertia));
 

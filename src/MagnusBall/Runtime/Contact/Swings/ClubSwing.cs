@@ -27,10 +27,10 @@ namespace MagnusBall.Contact.Swings
     public readonly struct ClubSwing
     {
         /// <summary>The face's COR: 0.83, the USGA's limit 0.822 plus its 0.008 test tolerance.</summary>
-        public const double UsgaLimitRestitution = 0.83;
+        internal const double UsgaLimitRestitution = 0.83;
 
         /// <summary>A driver head's mass, kg (200 g).</summary>
-        public const double DriverHeadMass = 0.200;
+        internal const double DriverHeadMass = 0.200;
 
         /// <summary>Creates a club delivery.</summary>
         /// <param name="speed">Club head speed, m/s; finite and &gt; 0.</param>
@@ -98,16 +98,16 @@ namespace MagnusBall.Contact.Swings
         public double ClubPathDegrees { get; }
 
         /// <summary>Head mass, kg.</summary>
-        public double HeadMass => Head.Mass;
+        internal double HeadMass => Head.Mass;
 
         /// <summary>The face's COR.</summary>
-        public double Restitution { get; }
+        internal double Restitution { get; }
 
         /// <summary>Friction ball-face.</summary>
-        public double Friction { get; }
+        internal double Friction { get; }
 
         /// <summary>The spin loft: the 3D angle between the head's path and the face normal, degrees (dynamic loft - attack angle when face and path agree).</summary>
-        public double SpinLoftDegrees
+        internal double SpinLoftDegrees
         {
             get
             {
@@ -124,7 +124,7 @@ namespace MagnusBall.Contact.Swings
         /// the CG's projection, <see cref="ClubHead.ImpactHeight"/> = 0, where the normal force passes through the CG).
         /// </summary>
         /// <param name="ball">The ball; not null.</param>
-        public double SmashFactorBound(Ball ball)
+        internal double SmashFactorBound(Ball ball)
         {
             Require.NotNull(ball, nameof(ball));
             return (1 + Restitution) / (1 + ball.Mass / HeadMass);
@@ -132,12 +132,12 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>The head's unit velocity direction in <paramref name="frame"/>.</summary>
         /// <param name="frame">The launch frame.</param>
-        public Vector3d PathDirection(in LaunchFrame frame) =>
+        internal Vector3d PathDirection(in LaunchFrame frame) =>
             frame.Direction(AttackAngleDegrees * SwingGeometry.Degree, ClubPathDegrees * SwingGeometry.Degree);
 
         /// <summary>The face's unit normal in <paramref name="frame"/>.</summary>
         /// <param name="frame">The launch frame.</param>
-        public Vector3d FaceNormal(in LaunchFrame frame) =>
+        internal Vector3d FaceNormal(in LaunchFrame frame) =>
             frame.Direction(DynamicLoftDegrees * SwingGeometry.Degree, FaceAngleDegrees * SwingGeometry.Degree);
 
         /// <summary>The launch of a ball at rest at <paramref name="position"/> (on a tee or the turf).</summary>

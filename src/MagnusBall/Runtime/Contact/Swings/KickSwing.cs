@@ -55,7 +55,7 @@ namespace MagnusBall.Contact.Swings
         public double Offset { get; }
 
         /// <summary>Foot-ball sliding friction.</summary>
-        public double Friction { get; }
+        internal double Friction { get; }
 
         /// <summary>The foot's path above the horizontal, degrees.</summary>
         public double ElevationDegrees { get; }
@@ -64,10 +64,10 @@ namespace MagnusBall.Contact.Swings
         public double AzimuthDegrees { get; }
 
         /// <summary>The foot's effective mass, kg.</summary>
-        public double FootMass { get; }
+        internal double FootMass { get; }
 
         /// <summary>Ball-foot normal COR.</summary>
-        public double Restitution { get; }
+        internal double Restitution { get; }
 
         /// <summary>The launch of a ball at rest at <paramref name="position"/>.</summary>
         /// <param name="ball">The ball; not null.</param>

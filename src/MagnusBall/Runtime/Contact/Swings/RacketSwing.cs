@@ -48,10 +48,10 @@ namespace MagnusBall.Contact.Swings
         public const double ThroatRestitution = 0.50;
 
         /// <summary>The ball's normal COR on the string bed of a rigidly held racket: 0.85, an assumption (not traced to a measurement).</summary>
-        public const double StringBedRestitution = 0.85;
+        internal const double StringBedRestitution = 0.85;
 
         /// <summary>Sliding friction between ball and strings: 0.4, an assumption (see the remarks).</summary>
-        public const double StringFriction = 0.4;
+        internal const double StringFriction = 0.4;
 
         /// <summary>Creates a swing.</summary>
         /// <param name="speed">Racket speed at the impact point, m/s; finite and &gt; 0.</param>
@@ -101,7 +101,7 @@ namespace MagnusBall.Contact.Swings
         public double FaceTurnDegrees { get; }
 
         /// <summary>True for a head-clamped racket (infinite effective mass).</summary>
-        public bool Clamped { get; }
+        internal bool Clamped { get; }
 
         /// <summary>A copy with another face tilt and azimuth (used by <c>Queries.SwingAim</c>).</summary>
         /// <param name="faceTiltDegrees">Face tilt, degrees, in [-80, 80].</param>
@@ -111,23 +111,23 @@ namespace MagnusBall.Contact.Swings
 
         /// <summary>The racket's effective mass at the impact point for <paramref name="ball"/>: m (1 + ACOR)/(e - ACOR), kg (infinite when clamped).</summary>
         /// <param name="ball">The ball; not null.</param>
-        public double EffectiveMass(Ball ball)
+        internal double EffectiveMass(Ball ball)
         {
             Require.NotNull(ball, nameof(ball));
             return Clamped ? double.PositiveInfinity : ball.Mass * (1 + ApparentRestitution) / (StringBedRestitution - ApparentRestitution);
         }
 
         /// <summary>The contact parameters of ball on strings: e <see cref="StringBedRestitution"/>, mu <see cref="StringFriction"/>, e_x 0, no offset.</summary>
-        public static ContactProperties Strings => new ContactProperties(StringBedRestitution, StringFriction);
+        internal static ContactProperties Strings => new ContactProperties(StringBedRestitution, StringFriction);
 
         /// <summary>The head's unit velocity direction in <paramref name="frame"/>.</summary>
         /// <param name="frame">The launch frame.</param>
-        public Vector3d PathDirection(in LaunchFrame frame) =>
+        internal Vector3d PathDirection(in LaunchFrame frame) =>
             frame.Direction(PathElevationDegrees * SwingGeometry.Degree, AzimuthDegrees * SwingGeometry.Degree);
 
         /// <summary>The face's unit normal (toward the ball) in <paramref name="frame"/>.</summary>
         /// <param name="frame">The launch frame.</param>
-        public Vector3d FaceNormal(in LaunchFrame frame) =>
+        internal Vector3d FaceNormal(in LaunchFrame frame) =>
             frame.Direction(FaceTiltDegrees * SwingGeometry.Degree, (AzimuthDegrees + FaceTurnDegrees) * SwingGeometry.Degree);
 
         /// <summary>

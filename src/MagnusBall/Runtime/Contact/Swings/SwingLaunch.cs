@@ -12,7 +12,7 @@ namespace MagnusBall.Contact.Swings
         /// <param name="impact">The impact.</param>
         /// <param name="frame">The launch frame (up, forward, side); not the default frame.</param>
         /// <exception cref="ArgumentException">The frame is the default value (no up or forward); the message names it.</exception>
-        public SwingLaunch(in ImpactOutcome impact, in LaunchFrame frame)
+        internal SwingLaunch(in ImpactOutcome impact, in LaunchFrame frame)
         {
             SwingGeometry.RequireFrame(frame, nameof(frame));
             Impact = impact;
@@ -23,7 +23,7 @@ namespace MagnusBall.Contact.Swings
         public ImpactOutcome Impact { get; }
 
         /// <summary>The frame the angles and spins are measured in.</summary>
-        public LaunchFrame Frame { get; }
+        internal LaunchFrame Frame { get; }
 
         /// <summary>True when the body and the ball met (the ball was approaching the face in the body's frame).</summary>
         public bool IsHit => Impact.Regime != BounceRegime.None;
@@ -38,7 +38,7 @@ namespace MagnusBall.Contact.Swings
         public double Speed => Impact.Velocity.Length;
 
         /// <summary>Launch elevation above the frame's horizontal, rad.</summary>
-        public double ElevationRadians
+        internal double ElevationRadians
         {
             get
             {
@@ -50,7 +50,7 @@ namespace MagnusBall.Contact.Swings
         }
 
         /// <summary>Launch azimuth from the frame's forward toward its side, rad.</summary>
-        public double AzimuthRadians => PortableMath.Atan2(Vector3d.Dot(Impact.Velocity, Frame.Side), Vector3d.Dot(Impact.Velocity, Frame.Forward));
+        internal double AzimuthRadians => PortableMath.Atan2(Vector3d.Dot(Impact.Velocity, Frame.Side), Vector3d.Dot(Impact.Velocity, Frame.Forward));
 
         /// <summary>Launch elevation, degrees.</summary>
         public double ElevationDegrees => ElevationRadians * (180 / Math.PI);
@@ -59,7 +59,7 @@ namespace MagnusBall.Contact.Swings
         public double AzimuthDegrees => AzimuthRadians * (180 / Math.PI);
 
         /// <summary>Spin rate, rad/s.</summary>
-        public double SpinRate => Impact.AngularVelocity.Length;
+        internal double SpinRate => Impact.AngularVelocity.Length;
 
         /// <summary>Spin rate, rev/min.</summary>
         public double SpinRpm => Spin.ToRpm(SpinRate);

@@ -48,7 +48,7 @@ namespace MagnusBall.Samples.TennisScene
             MagnusCoefficient = magnusCoefficient;
             // "stable-rk4": RK4 with the library's stability-safe substeps (worth it at a large fixed step, e.g.
             // FixedUpdate's 0.02 s, with light fast balls); otherwise one of Integrators.Names.
-            Integrator = string.Equals(integrator, StableIntegrator.RungeKutta4.Name, StringComparison.OrdinalIgnoreCase)
+            Integrator = string.Equals(integrator, ((IIntegrator)StableIntegrator.RungeKutta4).Name, StringComparison.OrdinalIgnoreCase)
                 ? StableIntegrator.RungeKutta4
                 : Integrators.FromName(integrator);
             if (!(fixedStep > 0) || double.IsInfinity(fixedStep))

@@ -1,12 +1,14 @@
 using System;
 using MagnusBall.Aerodynamics;
 
-namespace MagnusBall.Tests.Integration
+namespace MagnusBall.Integration
 {
     /// <summary>
-    /// The spec's methods: each textbook combination, written out, on a given right-hand side (the general formula,
-    /// FlightModel.GeneralDerivative, for the spec itself). The conformance test and FlightKernelTests hold the library's
-    /// fast forms to these.
+    /// The spec of the integration layer: each method's textbook combination, written out once, on a given right-hand side
+    /// (for the spec itself, the physics layer's general formula, FlightModel.GeneralDerivative). The library's own steps run
+    /// through the flight kernel (Integration/Kernels); the conformance test (tests/MagnusBall.Tests/Integration/ConformanceTests.cs)
+    /// holds every one of them to these. Euler's y + h k1 and semi-implicit Euler's v + h a, p + h v' are written as such in
+    /// ExplicitEuler.cs, which is their spec. Not for flights: these allocate and are slow on purpose, to stay readable.
     /// </summary>
     internal static class Textbook
     {
@@ -56,33 +58,6 @@ namespace MagnusBall.Tests.Integration
             StateDerivative k7 = f(end);
             k = new[] { k2, k3, k4, k5, k6, k7 };
             return end;
-        }
-
-        /// <summary>
-        /// |g| + k s^2 (|C_D| + |C_L|) at the state, with the laws' own coefficients at the general formula's conditions:
-        /// the largest terms of the acceleration, the scale a folded form's rounding is measured against.
-        /// </summary>
-        internal static double ForceScale(FlightModel model, in FlightState state)
-        {
-            double g = model.Gravity.Length;
-            Vector3d relative = state.Velocity - model.Air.WindAt(state.Position, model.Up);
-            double speed = relative.Length;
-            if (!(model.Air.Density > 0 && speed > FlightModel.MinimumAerodynamicSpeed))
-            {
-                return g;
-            }
-
-            double transverse = Vector3d.Cross(state.AngularVelocity, relative / speed).Length;
-            var conditions = new AeroConditions(speed, state.AngularVelocity.Length, transverse, model.Ball.Radius, model.Air.Density, model.Air.DynamicViscosity);
-            double c = Math.Abs(model.Drag?.DragCoefficient(conditions) ?? 0) + Math.Abs(model.Lift?.LiftCoefficient(conditions) ?? 0);
-            return g + model.AerodynamicFactor * speed * speed * c;
-        }
-
-        /// <summary>The gap to the next double up from |value| (infinity where it is not finite; Math.BitIncrement is not in .NET Framework, which the Mono run compiles against).</summary>
-        internal static double Ulp(double value)
-        {
-            double x = Math.Abs(value);
-            return !double.IsInfinity(x) && !double.IsNaN(x) ? BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(x) + 1) - x : double.PositiveInfinity;
         }
 
         private static FlightState Sum(in FlightState y, double h, StateDerivative[] k, double[] a)
