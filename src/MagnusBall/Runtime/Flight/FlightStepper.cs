@@ -174,10 +174,10 @@ namespace MagnusBall.Flight
         /// The derivative at the current state (the next step's start derivative). After a stop at an event, the slope of
         /// the step's dense output there (the flight is over; no evaluation is spent on it); at rest, zero.
         /// </summary>
-        public StateDerivative Derivative => _now.Derivative;
+        internal StateDerivative Derivative => _now.Derivative;
 
         /// <summary>The state at the start of the last step.</summary>
-        public FlightState PreviousState => _now.Previous;
+        internal FlightState PreviousState => _now.Previous;
 
         /// <summary>Flying, rolling or stopped.</summary>
         public FlightPhase Phase => _now.Phase;

@@ -185,7 +185,7 @@ namespace MagnusBall.Stepping
         public FlightState State => _stepper.State;
 
         /// <summary>The start of the latest step (equal to <see cref="State"/> before the first step).</summary>
-        public FlightState PreviousState => _stepper.PreviousState;
+        internal FlightState PreviousState => _stepper.PreviousState;
 
         /// <summary>
         /// Frame time not yet simulated, s: in [0, <see cref="FixedStep"/>) while flying, except after a call that deferred steps
@@ -225,7 +225,7 @@ namespace MagnusBall.Stepping
         /// The simulation time the renderer should show, s: one fixed step behind the simulation,
         /// State.Time - step + accumulator, never past <see cref="State"/> and never before the start.
         /// </summary>
-        public double RenderTime => RenderState.Time;
+        internal double RenderTime => RenderState.Time;
 
         /// <summary>
         /// The state to draw this frame, at <see cref="RenderTime"/>: on the cubic Hermite of the step it falls
