@@ -28,8 +28,8 @@ namespace MagnusBall
         /// True under Mono and Unity's IL2CPP: take RK4's straight-line forms, for the thesis model's common case (see
         /// Rk4Straight) and for Stepanek's tennis laws folded in still air (Rk4StraightStepanek). RyuJIT keeps the chain in
         /// registers across the branches anyway, and measured the straight-line form 3-5 % slower; it folds this constant
-        /// away. Both forms give the same bits. The flight core's event quick test, the dense output and the copy of RK4's
-        /// end (FlightKernel's Deliver) pick their forms by it too (HermiteSegment.CannotFall, DormandPrince54Step). Compiled by Unity
+        /// away. Both forms give the same bits. The copy of RK4's end (FlightKernel's Deliver) picks its form by it too.
+        /// Compiled by Unity
         /// from the package's sources, it is Unity's own scripting-backend symbols (ENABLE_MONO, ENABLE_IL2CPP), fixed at
         /// compile time; the DLL built here asks the runtime for Mono's marker type instead, a reflection lookup that
         /// Unity's managed code stripping can break (Mono.Runtime is internal to the class library), which is why the
