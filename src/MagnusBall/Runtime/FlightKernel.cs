@@ -51,30 +51,6 @@ namespace MagnusBall
         // loses to zero. Outside the range the general formula, as before. The ball batch's lanes take the same range.
         internal const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
 
-        /// <summary>
-        /// Where dw/dt = c w (<paramref name="factor"/> c, a constant), the magnitudes of RK4's stage spins over the step's
-        /// spin w: the stage spins are w + h/2 c w = g2 w, w + h/2 c (g2 w) = g3 w and w + h c (g3 w) = g4 w, so f = |g| with
-        /// g2 = 1 + h/2 c, g3 = 1 + h/2 (c g2), g4 = 1 + h (c g3). The ball batch forms the same.
-        /// </summary>
-        internal static void StageSpinFactors(double factor, double step, out double f2, out double f3, out double f4)
-        {
-            double half = 0.5 * step;
-            double g2 = 1 + half * factor;
-            double g3 = 1 + half * (factor * g2);
-            double g4 = 1 + step * (factor * g3);
-            f2 = System.Math.Abs(g2);
-            f3 = System.Math.Abs(g3);
-            f4 = System.Math.Abs(g4);
-        }
-
-        /// <summary>
-        /// Whether a step is at most one time constant of dw/dt = c w (h |c| &lt;= 1), where every factor of
-        /// <see cref="StageSpinFactors"/> is at least 1/4: the step-size half of the kernel's choice to scale RK4's stage spin
-        /// rates (Rk4Loop), which the ball batch makes too.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool WithinOneTimeConstant(double factor, double step) => step * System.Math.Abs(factor) <= 1;
-
         /// <summary>True where a model's k and r are within the fold's range (so its balls may take the folded lift).</summary>
         internal static bool FoldsLiftAtScale(double factor, double radius) =>
             factor >= FoldMinimum && factor <= FoldMaximum && radius >= FoldMinimum && radius <= FoldMaximum;
@@ -159,7 +135,6 @@ namespace MagnusBall
         private readonly bool _windVaries;
         private readonly bool _stillAir; // every wind component +0: v - wind is v itself
         private readonly bool _foldsLift; // k and r in the folded lift's range (FoldsStepanekLift)
-        private readonly bool _scalesStageSpinRates; // Rk4Loop's stage spin rates may be scaled (still or uniform air, the fold's scale)
         private readonly double _kappaOverRadiusSquared; // StepanekTable.Kappa / r^2: z = Kappa s^2 / (r |w|)^2
 
         internal FlightKernel(FlightModel model, TDrag drag, TLift lift, TDecay decay)
@@ -179,7 +154,6 @@ namespace MagnusBall
             _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
             _foldsLift = FoldsLiftAtScale(_factor, _radius);
             _kappaOverRadiusSquared = StepanekTable.Kappa / (_radius * _radius);
-            _scalesStageSpinRates = _foldsLift && !_windVaries;
         }
 
         private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
@@ -296,9 +270,7 @@ namespace MagnusBall
         {
             if (StepanekStraightCase)
             {
-                bool answers = ScalesStageSpins(step)
-                    ? Rk4StraightStepanek<ScaledStageSpinRates>(state, k1, step, out end, out Vector3d a, out Vector3d s)
-                    : Rk4StraightStepanek<OwnStageSpinRates>(state, k1, step, out end, out a, out s);
+                bool answers = Rk4StraightStepanek(state, k1, step, out end, out Vector3d a, out Vector3d s);
                 endRates = new StateDerivative(end.Velocity, a, s);
                 return answers;
             }
