@@ -594,9 +594,8 @@ namespace MagnusBall.Tests.Integration
             // Mono takes a straight-line form of RK4 for Stepanek's drag and lift folded in still air (any spin decay):
             // FlightKernel.Rk4StraightStepanek. It must be Rk4Loop's step bit for bit (signed zeros too) wherever it answers,
             // on every runtime: a counter on the general model makes RK4 take Rk4Loop (the straight form is skipped where a
-            // counter is attached). Both of Rk4Loop's shapes: an exponential decay with steps up to one time constant (the
-            // stage spin rates scaled) and beyond it, the presets' speed-proportional decay and no decay (each stage's own
-            // rate). States: realistic flights (speeds 0.5-70 m/s, spins to 600 rad/s in any direction, some with signed-zero
+            // counter is attached). Exponential decays with steps within and beyond one time constant, the presets'
+            // speed-proportional decay and no decay. States: realistic flights (speeds 0.5-70 m/s, spins to 600 rad/s in any direction, some with signed-zero
             // components, steps from 1e-9 to 0.07 s), adversarial ones (components from subnormal to 1e308, steps to 30 s),
             // and the two ends of the fold's |w x v|^2 range.
             double[] magnitudes = { 0, 5e-324, 1e-310, 1e-160, 1e-60, 1e-30, 1e-5, 0.3, 5, 30, 150, 1e30, 1e60, 1e154, 1e200, 1.7e308 };
@@ -612,7 +611,7 @@ namespace MagnusBall.Tests.Integration
                 new FlightModel(Ball.Tennis, new Air(1.18), Gravity.YUp, StepanekDrag.Instance, StepanekLift.Instance, SpeedProportionalSpinDecay.TennisCrossLindsey),
                 new FlightModel(Ball.Tennis, new Air(1.21), Gravity.Along(new Vector3d(1, -2, 3)), StepanekDrag.Instance, StepanekLift.Instance),
             };
-            double[] steps = { 1e-9, 1.0 / 240, 0.03, 0.07, 1, 30 }; // 0.07 s: 1.4 time constants of the second model (its own stage rates)
+            double[] steps = { 1e-9, 1.0 / 240, 0.03, 0.07, 1, 30 }; // 0.07 s: 1.4 time constants of the second model
             int taken = 0, compared = 0, realisticTaken = 0, realistic = 0;
             foreach (FlightModel model in models)
             {
