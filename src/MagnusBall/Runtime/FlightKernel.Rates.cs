@@ -32,13 +32,8 @@ namespace MagnusBall
                 }
 
                 // Through copies: a caller's variable passed by reference to a call that is not inlined would live in memory
-                // on every path, the folded one too (a store and a load on RK4's dependent chain). The spin's own rates: an
-                // RK4 stage may pass its rate scaled from the step's (Rk4Loop), which the general formula must not see.
+                // on every path, the folded one too (a store and a load on RK4's dependent chain).
                 Vector3d at = position, around = spin;
-                if (_decay.SpinOnly && _scalesStageSpinRates)
-                {
-                    SpinRates(spin.X, spin.Y, spin.Z, out spinRate, out inverseSpinRate);
-                }
 
                 OutOfLineRates(at, vx, vy, vz, around, spinRate, inverseSpinRate, out Vector3d generalAcceleration, out Vector3d generalSpinAcceleration);
                 acceleration = generalAcceleration;

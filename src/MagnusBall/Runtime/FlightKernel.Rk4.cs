@@ -1,5 +1,5 @@
 // FlightKernel, part: RK4's step (Rk4), which picks the shape: the unrolled form (Rk4Unrolled), the loop over the stages
-// (Rk4Loop, with its stage spin rates own or scaled), or a straight-line form (FlightKernel.Rk4Straight.cs). Each shape
+// (Rk4Loop), or a straight-line form (FlightKernel.Rk4Straight.cs). Each shape
 // gives the same bits. The kernel's entry points (RungeKutta4, RungeKutta4Advance) are in FlightKernel.cs; the rates in
 // FlightKernel.Rates.cs.
 using System.Runtime.CompilerServices;
@@ -9,9 +9,8 @@ namespace MagnusBall
 {
     internal sealed partial class FlightKernel<TDrag, TLift, TDecay>
     {
-        // One RK4 step, RungeKutta4.Step's arithmetic term by term (except the inner stages' spin rates under an exponential
-        // decay with Stepanek's lift folded, scaled from the step's in Rk4Loop, to rounding), plus the end rates, in one of two
-        // shapes with the same arithmetic. The stage positions are formed only when the wind depends on the height (no law reads the position
+        // One RK4 step, RungeKutta4.Step's arithmetic term by term, plus the end rates, in one of two shapes with the same
+        // arithmetic. The stage positions are formed only when the wind depends on the height (no law reads the position
         // otherwise), the stage spins only when the spin decays (otherwise its rate is zero and every stage spin equals the
         // start spin). The velocities, on the dependent chain from one stage's slope to the next, are kept component by
         // component so that the chain stays in registers.
@@ -31,30 +30,14 @@ namespace MagnusBall
         {
             if ((_drag.Reads | _lift.Reads | _decay.Reads) != AeroInputs.None)
             {
-                // The stage spin rates scaled where they may be (see Rk4Loop), as a type argument: each instantiation's
-                // branches fold away (a run-time flag left them in the loop: about 4 % of the full tennis model's step).
-                bool scales = ScalesStageSpins(step);
-                if (PreferStraightLine && StepanekStraightCase && Counter is null)
+                if (PreferStraightLine && StepanekStraightCase && Counter is null &&
+                    Rk4StraightStepanek(state, k1, step, out next, out Vector3d straightAcceleration, out Vector3d straightSpinAcceleration))
                 {
-                    Vector3d straightAcceleration, straightSpinAcceleration;
-                    if (scales
-                        ? Rk4StraightStepanek<ScaledStageSpinRates>(state, k1, step, out next, out straightAcceleration, out straightSpinAcceleration)
-                        : Rk4StraightStepanek<OwnStageSpinRates>(state, k1, step, out next, out straightAcceleration, out straightSpinAcceleration))
-                    {
-                        end = new StateDerivative(next.Velocity, straightAcceleration, straightSpinAcceleration);
-                        return;
-                    }
+                    end = new StateDerivative(next.Velocity, straightAcceleration, straightSpinAcceleration);
+                    return;
                 }
 
-                if (scales)
-                {
-                    Rk4Loop<ScaledStageSpinRates>(state, k1, step, out next, out end);
-                }
-                else
-                {
-                    Rk4Loop<OwnStageSpinRates>(state, k1, step, out next, out end);
-                }
-
+                Rk4Loop(state, k1, step, out next, out end);
                 return;
             }
 
@@ -110,24 +93,6 @@ namespace MagnusBall
             end = new StateDerivative(ve, endAcceleration, endSpinAcceleration);
         }
 
-        // Under an exponential decay, what Rk4Loop<ScaledStageSpinRates> (and its straight-line form) forms ahead of the
-        // velocity's stages: the stage spin factors, the end spin (the loop's expression: s23 = s2 + s3, sk = s4, the same
-        // bits) and its own rates.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private void ScaledStageSpins(
-            in Vector3d w, in Vector3d s1, double step, out double f2, out double f3, out double f4, out Vector3d endSpin,
-            out double endRate, out double endInverse)
-        {
-            double half = 0.5 * step;
-            double sixth = step / 6.0;
-            StageSpinFactors(_decay.SpinFactor, step, out f2, out f3, out f4);
-            Vector3d s2 = _decay.SpinAcceleration(Add(w, s1, half), NoConditions);
-            Vector3d s3 = _decay.SpinAcceleration(Add(w, s2, half), NoConditions);
-            Vector3d s4 = _decay.SpinAcceleration(Add(w, s3, step), NoConditions);
-            endSpin = w + (s1 + 2.0 * (s2 + s3) + s4) * sixth;
-            SpinRates(endSpin.X, endSpin.Y, endSpin.Z, out endRate, out endInverse);
-        }
-
         // The end position y + (k1 + 2 (k2 + k3) + k4) h/6 from the stage velocities, grouped as RungeKutta4 groups it (the
         // written-out steps' common tail: Rk4Unrolled, Rk4Straight, Rk4StraightStepanek).
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -139,14 +104,8 @@ namespace MagnusBall
                 p.Y + (k1v.Y + (v2y + v3y) * 2.0 + v4y) * sixth,
                 p.Z + (k1v.Z + (v2z + v3z) * 2.0 + v4z) * sixth);
 
-        // Whether an RK4 step of this size takes its inner stages' spin rates scaled from the step's (see Rk4Loop).
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private bool ScalesStageSpins(double step) =>
-            FoldsStepanekLift && _decay.SpinOnly && _scalesStageSpinRates && WithinOneTimeConstant(_decay.SpinFactor, step);
-
         // k2 + k3 is summed as soon as k3 is known (the same sum RungeKutta4 forms, fewer numbers live across the loop).
-        private void Rk4Loop<TStages>(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
-            where TStages : struct, IStageSpinRates
+        private void Rk4Loop(in FlightState state, in StateDerivative k1, double step, out FlightState next, out StateDerivative end)
         {
             double half = 0.5 * step;
             double sixth = step / 6.0;
@@ -164,24 +123,6 @@ namespace MagnusBall
             double vsx, vsy, vsz;
             double time = state.Time + step;
             SpinRates(w.X, w.Y, w.Z, out double spinRate, out double inverseSpinRate); // the whole step's, when the spin is constant
-
-            // Where the spin decays exponentially (dw/dt = c w, c constant) and Stepanek's lift is folded, the stages' spins
-            // are the step's spin times constants of the step (StageSpinFactors): their rates are the step's rate times those,
-            // to rounding, instead of three more square roots on the divider the fold's square roots and divisions share
-            // (docs/performance.md). The end state's rate is its own (the end rates are the derivative there, bit for bit),
-            // formed here with the loop's expressions (the same bits), ahead of the velocity's stages: formed at the end, its
-            // square root and the fold's division lay on the chain into the end rates, which the next step starts from.
-            // Only for steps of at most one time constant (h |c| <= 1), where every factor is at least 1/4 (g4 falls to 1/4 at
-            // h |c| = 1, and g2 to 0 at 2): the rounding of 1 + h c (...) is then amplified at most four-fold, and the rates
-            // stay within 2e-15 of the stage spins' own (tested). Longer steps take every stage's own rate, as before. Rk4
-            // decides, and passes the answer as TStages.
-            bool scaled = default(TStages).Scaled;
-            double startRate = spinRate, f2 = 0, f3 = 0, f4 = 0, endRate = 0, endInverse = 0;
-            Vector3d endSpin = default;
-            if (scaled)
-            {
-                ScaledStageSpins(w, k1.AngularAcceleration, step, out f2, out f3, out f4, out endSpin, out endRate, out endInverse);
-            }
 
             for (int stage = 0; ; stage++)
             {
@@ -216,20 +157,7 @@ namespace MagnusBall
                     ws = spins ? w + (k1.AngularAcceleration + 2.0 * s23 + sk) * sixth : w + k1.AngularAcceleration * sixth;
                 }
 
-                if (scaled)
-                {
-                    if (stage < 3)
-                    {
-                        spinRate = startRate * (stage == 0 ? f2 : stage == 1 ? f3 : f4);
-                    }
-                    else
-                    {
-                        ws = endSpin; // the same expression as the loop's ws above, the same bits, formed before the stages
-                        spinRate = endRate;
-                        inverseSpinRate = endInverse;
-                    }
-                }
-                else if (spins)
+                if (spins)
                 {
                     SpinRates(ws.X, ws.Y, ws.Z, out spinRate, out inverseSpinRate);
                 }
@@ -272,22 +200,6 @@ namespace MagnusBall
                 akz = a.Z;
                 sk = s;
             }
-        }
-
-        /// <summary>Whether an RK4 step takes its inner stages' spin rates scaled from the step's (Rk4Loop's type argument).</summary>
-        private interface IStageSpinRates
-        {
-            bool Scaled { get; }
-        }
-
-        private readonly struct ScaledStageSpinRates : IStageSpinRates
-        {
-            public bool Scaled => true;
-        }
-
-        private readonly struct OwnStageSpinRates : IStageSpinRates
-        {
-            public bool Scaled => false;
         }
 
         // One evaluation of an RK4 stage: the spin rates at the stage's spin where the spin changes, then the rates.

@@ -121,12 +121,10 @@ namespace MagnusBall
         // Like Rk4Straight it hands back the end rates as two vectors, and the caller forms the end derivative only where it
         // answers: the caller's end derivative may be its k1 (IIntegrator.Step's callers pass one variable for both), which
         // a declined step must leave as it was for the general step.
-        private bool Rk4StraightStepanek<TStages>(
+        private bool Rk4StraightStepanek(
             in FlightState state, in StateDerivative k1, double step, out FlightState next, out Vector3d endAcceleration,
             out Vector3d endSpinAcceleration)
-            where TStages : struct, IStageSpinRates
         {
-            bool scaled = default(TStages).Scaled;
             bool spins = _decay.IsPresent;
             Vector3d p = state.Position, w = state.AngularVelocity;
             double startRate = Vector3d.LengthOf(w.X, w.Y, w.Z); // SpinRates' |w| (the lift is present)
@@ -140,12 +138,6 @@ namespace MagnusBall
 
             double half = 0.5 * step;
             double sixth = step / 6.0;
-            double f2 = 0, f3 = 0, f4 = 0, endRate = 0;
-            Vector3d endSpin = default;
-            if (scaled)
-            {
-                ScaledStageSpins(w, k1.AngularAcceleration, step, out f2, out f3, out f4, out endSpin, out endRate, out _);
-            }
 
             double vx = state.Velocity.X, vy = state.Velocity.Y, vz = state.Velocity.Z;
             Vector3d k1a = k1.Acceleration, k1s = k1.AngularAcceleration;
@@ -154,19 +146,19 @@ namespace MagnusBall
             // k2 at y + h/2 k1
             double v2x = vx + half * k1a.X, v2y = vy + half * k1a.Y, v2z = vz + half * k1a.Z;
             Vector3d w2 = spins ? Add(w, k1s, half) : w;
-            double rate2 = scaled ? startRate * f2 : spins ? StraightLength(w2) : startRate;
+            double rate2 = spins ? StraightLength(w2) : startRate;
             StraightStepanekRates(v2x, v2y, v2z, w2, rate2, ref common, out double a2x, out double a2y, out double a2z, out Vector3d s2);
 
             // k3 at y + h/2 k2
             double v3x = vx + half * a2x, v3y = vy + half * a2y, v3z = vz + half * a2z;
             Vector3d w3 = spins ? Add(w, s2, half) : w;
-            double rate3 = scaled ? startRate * f3 : spins ? StraightLength(w3) : startRate;
+            double rate3 = spins ? StraightLength(w3) : startRate;
             StraightStepanekRates(v3x, v3y, v3z, w3, rate3, ref common, out double a3x, out double a3y, out double a3z, out Vector3d s3);
 
             // k4 at y + h k3
             double v4x = vx + step * a3x, v4y = vy + step * a3y, v4z = vz + step * a3z;
             Vector3d w4 = spins ? Add(w, s3, step) : w;
-            double rate4 = scaled ? startRate * f4 : spins ? StraightLength(w4) : startRate;
+            double rate4 = spins ? StraightLength(w4) : startRate;
             StraightStepanekRates(v4x, v4y, v4z, w4, rate4, ref common, out double a4x, out double a4y, out double a4z, out Vector3d s4);
 
             // y + (k1 + 2 (k2 + k3) + k4) h/6, grouped as Rk4Loop groups it, and the end rates
@@ -175,8 +167,8 @@ namespace MagnusBall
             double vex = vx + (k1a.X + (a2x + a3x) * 2.0 + a4x) * sixth;
             double vey = vy + (k1a.Y + (a2y + a3y) * 2.0 + a4y) * sixth;
             double vez = vz + (k1a.Z + (a2z + a3z) * 2.0 + a4z) * sixth;
-            Vector3d we = scaled ? endSpin : spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
-            double rateEnd = scaled ? endRate : spins ? StraightLength(we) : startRate;
+            Vector3d we = spins ? w + (k1s + 2.0 * (s2 + s3) + s4) * sixth : w + k1s * sixth;
+            double rateEnd = spins ? StraightLength(we) : startRate;
             StraightStepanekRates(vex, vey, vez, we, rateEnd, ref common, out double aex, out double aey, out double aez, out endSpinAcceleration);
             next = new FlightState(pe, new Vector3d(vex, vey, vez), we, state.Time + step);
             endAcceleration = new Vector3d(aex, aey, aez);

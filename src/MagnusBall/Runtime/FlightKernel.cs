@@ -28,8 +28,8 @@ namespace MagnusBall
         /// True under Mono and Unity's IL2CPP: take RK4's straight-line forms, for the thesis model's common case (see
         /// Rk4Straight) and for Stepanek's tennis laws folded in still air (Rk4StraightStepanek). RyuJIT keeps the chain in
         /// registers across the branches anyway, and measured the straight-line form 3-5 % slower; it folds this constant
-        /// away. Both forms give the same bits. The flight core's event quick test, the dense output and the copy of RK4's
-        /// end (FlightKernel's Deliver) pick their forms by it too (HermiteSegment.CannotFall, DormandPrince54Step). Compiled by Unity
+        /// away. Both forms give the same bits. The copy of RK4's end (FlightKernel's Deliver) picks its form by it too.
+        /// Compiled by Unity
         /// from the package's sources, it is Unity's own scripting-backend symbols (ENABLE_MONO, ENABLE_IL2CPP), fixed at
         /// compile time; the DLL built here asks the runtime for Mono's marker type instead, a reflection lookup that
         /// Unity's managed code stripping can break (Mono.Runtime is internal to the class library), which is why the
@@ -50,30 +50,6 @@ namespace MagnusBall
         // so (C_L of an extreme ratio of |w x v_rel| to s^2): the fold then keeps the tiny value the general formula's k C_L
         // loses to zero. Outside the range the general formula, as before. The ball batch's lanes take the same range.
         internal const double FoldMinimum = 1e-50, FoldMaximum = 1e50, FoldMinimumSquare = 1e-200, FoldMaximumSquare = 1e200;
-
-        /// <summary>
-        /// Where dw/dt = c w (<paramref name="factor"/> c, a constant), the magnitudes of RK4's stage spins over the step's
-        /// spin w: the stage spins are w + h/2 c w = g2 w, w + h/2 c (g2 w) = g3 w and w + h c (g3 w) = g4 w, so f = |g| with
-        /// g2 = 1 + h/2 c, g3 = 1 + h/2 (c g2), g4 = 1 + h (c g3). The ball batch forms the same.
-        /// </summary>
-        internal static void StageSpinFactors(double factor, double step, out double f2, out double f3, out double f4)
-        {
-            double half = 0.5 * step;
-            double g2 = 1 + half * factor;
-            double g3 = 1 + half * (factor * g2);
-            double g4 = 1 + step * (factor * g3);
-            f2 = System.Math.Abs(g2);
-            f3 = System.Math.Abs(g3);
-            f4 = System.Math.Abs(g4);
-        }
-
-        /// <summary>
-        /// Whether a step is at most one time constant of dw/dt = c w (h |c| &lt;= 1), where every factor of
-        /// <see cref="StageSpinFactors"/> is at least 1/4: the step-size half of the kernel's choice to scale RK4's stage spin
-        /// rates (Rk4Loop), which the ball batch makes too.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool WithinOneTimeConstant(double factor, double step) => step * System.Math.Abs(factor) <= 1;
 
         /// <summary>True where a model's k and r are within the fold's range (so its balls may take the folded lift).</summary>
         internal static bool FoldsLiftAtScale(double factor, double radius) =>
@@ -159,7 +135,6 @@ namespace MagnusBall
         private readonly bool _windVaries;
         private readonly bool _stillAir; // every wind component +0: v - wind is v itself
         private readonly bool _foldsLift; // k and r in the folded lift's range (FoldsStepanekLift)
-        private readonly bool _scalesStageSpinRates; // Rk4Loop's stage spin rates may be scaled (still or uniform air, the fold's scale)
         private readonly double _kappaOverRadiusSquared; // StepanekTable.Kappa / r^2: z = Kappa s^2 / (r |w|)^2
 
         internal FlightKernel(FlightModel model, TDrag drag, TLift lift, TDecay decay)
@@ -179,7 +154,6 @@ namespace MagnusBall
             _stillAir = !_windVaries && IsPositiveZero(_wind.X) && IsPositiveZero(_wind.Y) && IsPositiveZero(_wind.Z);
             _foldsLift = FoldsLiftAtScale(_factor, _radius);
             _kappaOverRadiusSquared = StepanekTable.Kappa / (_radius * _radius);
-            _scalesStageSpinRates = _foldsLift && !_windVaries;
         }
 
         private static bool IsPositiveZero(double x) => System.BitConverter.DoubleToInt64Bits(x) == 0;
@@ -198,12 +172,7 @@ namespace MagnusBall
         internal override FlightState RungeKutta4(in FlightState state, in StateDerivative k1, double step, out StateDerivative end)
         {
             RungeKutta4Into(state, k1, step, out FlightState next, out end);
-            if (PreferStraightLine)
-            {
-                return next; // Mono: its plain copy is the faster (see Deliver)
-            }
-
-            return FlightState.CopyOf(next);
+            return next;
         }
 
         internal override bool RunsUserCode =>
@@ -275,8 +244,8 @@ namespace MagnusBall
         }
 
         // The caller's pair from a step's end, just written number by number by the step. Under RyuJIT copied number by number
-        // (FlightState.CopyOf: a plain copy's wide load waits for the step's stores to reach memory; with AdvanceOne, one
-        // step a call went from 66 to 55 ns on the thesis model, docs/performance.md); under Mono the plain copy, which its
+        // (FlightState.CopyOf: a plain copy's wide load waits for the step's stores to reach memory; with the plain copy, 480
+        // steps of one a call on the thesis model took 30.0-30.6 us against 25.2-26.1, docs/performance.md); under Mono the plain copy, which its
         // JIT makes faster (the copy by numbers measured about 10 ns a call slower there). The same bits either way.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void Deliver(in FlightState end, in StateDerivative endDerivative, ref FlightState state, ref StateDerivative derivative)
@@ -301,9 +270,7 @@ namespace MagnusBall
         {
             if (StepanekStraightCase)
             {
-                bool answers = ScalesStageSpins(step)
-                    ? Rk4StraightStepanek<ScaledStageSpinRates>(state, k1, step, out end, out Vector3d a, out Vector3d s)
-                    : Rk4StraightStepanek<OwnStageSpinRates>(state, k1, step, out end, out a, out s);
+                bool answers = Rk4StraightStepanek(state, k1, step, out end, out Vector3d a, out Vector3d s);
                 endRates = new StateDerivative(end.Velocity, a, s);
                 return answers;
             }

@@ -40,8 +40,8 @@ namespace MagnusBall
         /// A copy of <paramref name="state"/> read and written one number at a time, for a state the kernel has just written
         /// number by number. A plain struct copy reads it with wide loads (CoreCLR copies 80 bytes with a 64-byte register on
         /// AVX-512 hardware, 32-byte ones on AVX2), and a load wider than the stores it reads cannot take their values on
-        /// the way to memory: it waits until they are written, on the flight's dependent chain (RungeKutta4.Step on the
-        /// thesis model: 65.5 to 62-63 ns a step, docs/performance.md). Same bits.
+        /// the way to memory: it waits until they are written, on the flight's dependent chain (RungeKutta4.Advance with a
+        /// count of 1 on the thesis model: 18 % slower with the plain copy, docs/performance.md). Same bits.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static FlightState CopyOf(in FlightState state) => new FlightState(

@@ -343,13 +343,12 @@ namespace MagnusBall.Tests.Integration
         }
 
         [Test]
-        public void ScaledStageSpinRatesOutsideTheFold_FlyAsTheSingleBallPath_BitForBit()
+        public void DecayingSpinsAcrossTheFoldsEdges_FlyAsTheSingleBallPath_BitForBit()
         {
-            // With Stepanek's lift and an exponential decay the kernel scales RK4's inner stage spin rates from the step's
-            // (steps up to one time constant); a stage whose scaled rate lies outside the fold's range takes the general
-            // formula with the stage spin's own rate, so the batch must send that ball to the per-ball step even where its
-            // end rate lies inside. Here h = tau/5: the inner factors are 0.9, 0.91 and 0.818 and the end's about 0.819, so a
-            // spin of 1.15e50 rad/s puts the first two stages above 1e50 and the last and the end below it; its neighbours
+            // With Stepanek's lift and an exponential decay, a stage whose spin rate lies outside the fold's range takes the
+            // general formula, so the batch must send that ball to the per-ball step even where its end rate lies inside.
+            // Here h = tau/5: the inner stage spins are about 0.9, 0.91 and 0.818 of the step's and the end's about 0.819, so
+            // a spin of 1.15e50 rad/s puts the first two stages above 1e50 and the last and the end below it; its neighbours
             // fly ordinary spins. The same for a spin just above the fold's lower edge (its inner stages cross 1e-50).
             var ground = new Plane(new Vector3d(0, 0, -1e300), Vector3d.UnitZ);
             foreach (Vector3d gravity in new[] { Vector3d.Zero, Gravity.ZUp })
@@ -364,31 +363,6 @@ namespace MagnusBall.Tests.Integration
                 };
                 (BallBatch batch, FlightStepper[] steppers) = BatchAndSteppers(model, ground, starts);
                 AssertFlyAlike(batch, steppers, 0.02, 6, gravity.ToString());
-            }
-        }
-
-        [Test]
-        public void GivenAStageSpinRate_LanesOutsideTheFold_AreMarkedForTheKernel()
-        {
-            // A given (scaled) stage rate below the fold's range marks the lane whether or not it flies with lift: the kernel
-            // computes such a stage with the stage spin's own rate, which the lane does not have. A lane in range is not marked.
-            var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
-            VectorLaws laws = VectorLaws.For(model);
-            Assert.That(laws.ScalesStageSpinRates, Is.True);
-            int width = Vector<double>.Count;
-            var rates = new double[width];
-            for (int lane = 0; lane < width; lane++)
-            {
-                rates[lane] = lane % 2 == 0 ? 1e-160 : 100; // no lift (at or below 1e-150) / an ordinary spin
-            }
-
-            var v = new Vector<double>(30.0);
-            var wy = new Vector<double>(rates);
-            laws.Rates(v, Vector<double>.Zero, Vector<double>.Zero, Vector<double>.Zero, wy, Vector<double>.Zero, wy, true,
-                out _, out _, out _, out _, out _, out _, out Vector<long> unfolded);
-            for (int lane = 0; lane < width; lane++)
-            {
-                Assert.That(unfolded[lane] != 0, Is.EqualTo(lane % 2 == 0), $"lane {lane}");
             }
         }
 

@@ -57,7 +57,7 @@ namespace MagnusBall.Tests.Integration
             new Form("euler", 8, "y + h k1 on the spec's k1 is the spec's sum; the end derivative is the fold's (measured 4.0)"),
             new Form("semi-implicit-euler", 8, "as Euler (measured 4.0)"),
             new Form("heun", 8, "the fold in k2, weighted h/2, then the end sum's rounding (measured 2.5)"),
-            new Form("rk4", 16, "the fold in k2..k4 (weights h/3, h/3, h/6) and, for Stepanek's lift with an exponential decay, the stage spin rates scaled from the step's (2e-15 relative), then the end sum's rounding (measured 4.0)"),
+            new Form("rk4", 16, "the fold in k2..k4 (weights h/3, h/3, h/6), then the end sum's rounding (measured 4.0)"),
             new Form("rk4-general-shapes", 16, "rk4's unrolled and loop shapes (a counter attached: never the straight-line form), as rk4; and rk4's bits (measured 4.0)"),
             new Form("rk4-straight-line", 16, "Mono's straight-line forms, where they answer, as rk4; and rk4's bits (measured 2.0)"),
             new Form("rk4-advance", 16, "two rk4 steps in one call: the first step's difference carried into the second; and two rk4 steps' bits (measured 3.0)"),

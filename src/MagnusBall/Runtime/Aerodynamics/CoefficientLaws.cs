@@ -74,15 +74,6 @@ namespace MagnusBall.Aerodynamics
         Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions);
 
         /// <summary>
-        /// True when dw/dt = c w with a constant c (<see cref="SpinFactor"/>; the exponential decay): RK4's stage spins are
-        /// then the step's spin times constants of the step, and so are their rates, and each is known before its velocity.
-        /// </summary>
-        bool SpinOnly { get; }
-
-        /// <summary>The constant c of dw/dt = c w where <see cref="SpinOnly"/> (the expression SpinAcceleration multiplies by); 0 otherwise.</summary>
-        double SpinFactor { get; }
-
-        /// <summary>
         /// True when dw/dt depends on the spin and the air speed alone (the exponential and the speed-proportional decay):
         /// <see cref="SpinAccelerationAtSpeed"/> then gives <see cref="SpinAcceleration"/>'s bits without the conditions (Mono
         /// builds a 64-byte struct in memory for them; RK4's straight-line form for the tennis laws does without).
@@ -116,10 +107,6 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => false;
 
         public AeroInputs Reads => AeroInputs.None;
-
-        public bool SpinOnly => false;
-
-        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) => default;
 
@@ -166,10 +153,6 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => true;
 
         public AeroInputs Reads => AeroInputs.All;
-
-        public bool SpinOnly => false;
-
-        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             _law.SpinAcceleration(angularVelocity, conditions);
@@ -304,10 +287,6 @@ namespace MagnusBall.Aerodynamics
 
         public AeroInputs Reads => AeroInputs.None;
 
-        public bool SpinOnly => true;
-
-        public double SpinFactor => _factor;
-
         // The same expression as ExponentialSpinDecay, its -1.0 / tau formed once (no division per evaluation or step).
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * _factor;
@@ -326,10 +305,6 @@ namespace MagnusBall.Aerodynamics
         public bool IsPresent => true;
 
         public AeroInputs Reads => AeroInputs.None;
-
-        public bool SpinOnly => false;
-
-        public double SpinFactor => 0;
 
         public Vector3d SpinAcceleration(in Vector3d angularVelocity, in AeroConditions conditions) =>
             angularVelocity * (-_rate * conditions.Speed);

@@ -40,20 +40,6 @@ namespace MagnusBall.Batch
 
             bool spins = laws.Decay != Aerodynamics.LaneForm.Off;
 
-            // The kernel's inner-stage spin rates where it scales them from the step's (FlightKernel.StageSpinFactors).
-            bool scaled = laws.ScalesStageSpinRates && FlightKernel.WithinOneTimeConstant(laws.DecayFactor, step); // the kernel's condition
-            Vector<double> startRate = default;
-            double f2 = 0, f3 = 0, f4 = 0;
-            if (scaled)
-            {
-                // The kernel's step rate is Vector3d.LengthOf, which scales where |w|^2 is not a normal double (|w| below
-                // about 1.5e-154 rad/s; above 1.3e154 the step went ball by ball above). Such a lane's plain square root may
-                // differ, but its scaled rates (|g| between 1/4 and 1) then lie below the fold's 1e-50, so the lane is marked
-                // for the per-ball step (VectorLaws.Rates), where the kernel's own numbers are used.
-                startRate = Vector.SquareRoot(wx * wx + wy * wy + wz * wz);
-                FlightKernel.StageSpinFactors(laws.DecayFactor, step, out f2, out f3, out f4);
-            }
-
             // k2, k3, k4 and the end rates from one evaluation site (the laws inlined once), RungeKutta4's grouping.
             Vector<double> v2x = default, v2y = default, v2z = default, v3x = default, v3y = default, v3z = default;
             Vector<double> a2x = default, a2y = default, a2z = default, a3x = default, a3y = default, a3z = default;
@@ -108,9 +94,7 @@ namespace MagnusBall.Batch
                     perBall |= Vector.GreaterThan(nwx * nwx + nwy * nwy + nwz * nwz, new Vector<double>(double.MaxValue));
                 }
 
-                bool stageRate = scaled && stage < 3;
-                Vector<double> rate = stageRate ? startRate * new Vector<double>(stage == 0 ? f2 : stage == 1 ? f3 : f4) : default;
-                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, rate, stageRate, out nax, out nay, out naz, out nsx, out nsy, out nsz, out Vector<long> unfolded);
+                laws.Rates(nvx, nvy, nvz, nwx, nwy, nwz, out nax, out nay, out naz, out nsx, out nsy, out nsz, out Vector<long> unfolded);
                 perBall |= unfolded;
                 if (stage == 3)
                 {

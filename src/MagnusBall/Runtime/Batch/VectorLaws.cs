@@ -72,30 +72,8 @@ namespace MagnusBall.Batch
         /// lift instead of its folded form (values out of the fold's range): their numbers here are not the kernel's,
         /// and the caller steps those balls one by one.
         /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal void Rates(
             Vector<double> vx, Vector<double> vy, Vector<double> vz, Vector<double> wx, Vector<double> wy, Vector<double> wz,
-            out Vector<double> ax, out Vector<double> ay, out Vector<double> az,
-            out Vector<double> sx, out Vector<double> sy, out Vector<double> sz, out Vector<long> unfolded) =>
-            Rates(vx, vy, vz, wx, wy, wz, default, false, out ax, out ay, out az, out sx, out sy, out sz, out unfolded);
-
-        /// <summary>The exponential decay's -1 / tau (0 without it): the kernel's ExponentialSpinDecayLaw.SpinFactor.</summary>
-        internal double DecayFactor => _decayFactor;
-
-        /// <summary>
-        /// True when the kernel's RK4 takes its inner stages' spin rates scaled from the step's (FlightKernel's Rk4Loop:
-        /// Stepanek's lift folded, exponential decay); the batch then passes the same rates to Rates.
-        /// </summary>
-        internal bool ScalesStageSpinRates => Lift == LaneForm.Stepanek && _foldsLift && Decay == LaneForm.Exponential;
-
-        /// <summary>
-        /// The rates, with the spin rate given (<paramref name="hasStageSpinRate"/>: an RK4 inner stage's rate scaled from the
-        /// step's, as the kernel takes it) rather than formed from the spin. Lanes outside the fold's range are then marked
-        /// for the per-ball step, as the kernel forms their spin rate anew.
-        /// </summary>
-        internal void Rates(
-            Vector<double> vx, Vector<double> vy, Vector<double> vz, Vector<double> wx, Vector<double> wy, Vector<double> wz,
-            Vector<double> stageSpinRate, bool hasStageSpinRate,
             out Vector<double> ax, out Vector<double> ay, out Vector<double> az,
             out Vector<double> sx, out Vector<double> sy, out Vector<double> sz, out Vector<long> unfolded)
         {
@@ -129,7 +107,7 @@ namespace MagnusBall.Batch
             Vector<double> speed = Vector.SquareRoot(rx * rx + ry * ry + rz * rz);
             Vector<long> aero = Vector.GreaterThan(speed, new Vector<double>(FlightModel.MinimumAerodynamicSpeed));
             bool needsSpinRate = Lift != LaneForm.Off || Drag == LaneForm.Stepanek;
-            Vector<double> spinRate = hasStageSpinRate ? stageSpinRate : needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
+            Vector<double> spinRate = needsSpinRate ? Vector.SquareRoot(wx * wx + wy * wy + wz * wz) : Vector<double>.Zero;
             // r / s: for Stepanek's drag outside the fold (the folded drag forms it per lane where its table declines), the
             // linear lift and Stepanek's lift outside the fold.
             bool needsRadiusOverSpeed = (Drag == LaneForm.Stepanek && !(Lift == LaneForm.Stepanek && _foldsLift)) ||
@@ -180,7 +158,7 @@ namespace MagnusBall.Batch
                     Vector.GreaterThanOrEqual(squared, low) & Vector.LessThanOrEqual(squared, high) &
                     (Vector.Equals(transverseSquared, Vector<double>.Zero) |
                         (Vector.GreaterThanOrEqual(transverseSquared, low) & Vector.LessThanOrEqual(transverseSquared, high)));
-                unfolded = (hasStageSpinRate ? aero : lifts) & ~inRange;
+                unfolded = lifts & ~inRange;
                 Vector<double> fx, fy, fz;
                 if (Drag == LaneForm.Stepanek)
                 {

@@ -34,24 +34,12 @@ namespace MagnusBall.Integration
             ErrorNorm = errorNorm;
             NextStep = nextStep;
             Accepted = accepted;
-
-            if (FlightKernel.PreferStraightLine)
-            {
-                DenseRowsAsScalars(step);
-            }
-            else
-            {
-                DenseRowsAsVectors(step);
-            }
+            DenseRows(step);
         }
 
-        // The dense output's rows h k1 - dy, dy - h k7 - (h k1 - dy) and the fifth-order row, in two forms with the same
-        // operations in the same order (test DenseRows_AreAlikeInBothForms): Vector3d expressions under RyuJIT, which
-        // keeps them in registers (the scalar form measured 4-5 % slower aim solves there), and scalars under Mono
-        // (FlightKernel.PreferStraightLine), whose JIT zeroes, stores and copies every vector temporary (the scalar form:
-        // 8-10 % faster aim solves there, docs/performance.md).
+        // The dense output's rows h k1 - dy, dy - h k7 - (h k1 - dy) and the fifth-order row.
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private void DenseRowsAsVectors(double step)
+        private void DenseRows(double step)
         {
             ref readonly FlightState start = ref Start;
             ref readonly FlightState end = ref Stages.End;
@@ -72,48 +60,6 @@ namespace MagnusBall.Integration
                     Stages.K6.AngularAcceleration, k7.AngularAcceleration, step));
         }
 
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private void DenseRowsAsScalars(double step)
-        {
-            ref readonly StateDerivative k1 = ref StartDerivative;
-            ref readonly DormandPrince54Stages k = ref Stages;
-            Rows(Start.Position, k.End.Position, k1.Velocity, k.K3.Velocity, k.K4.Velocity, k.K5.Velocity, k.K6.Velocity, k.K7.Velocity, step,
-                out _slopeDefect.Velocity, out _r4.Velocity, out _r5.Velocity);
-            Rows(Start.Velocity, k.End.Velocity, k1.Acceleration, k.K3.Acceleration, k.K4.Acceleration, k.K5.Acceleration, k.K6.Acceleration,
-                k.K7.Acceleration, step, out _slopeDefect.Acceleration, out _r4.Acceleration, out _r5.Acceleration);
-            Rows(Start.AngularVelocity, k.End.AngularVelocity, k1.AngularAcceleration, k.K3.AngularAcceleration, k.K4.AngularAcceleration,
-                k.K5.AngularAcceleration, k.K6.AngularAcceleration, k.K7.AngularAcceleration, step, out _slopeDefect.AngularAcceleration,
-                out _r4.AngularAcceleration, out _r5.AngularAcceleration);
-        }
-
-        // DenseRowsAsVectors' three rows for one part of the state (y0 to y1, rates k1..k7), operation for operation.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Rows(
-            in Vector3d y0, in Vector3d y1, in Vector3d k1, in Vector3d k3, in Vector3d k4, in Vector3d k5, in Vector3d k6, in Vector3d k7, double h,
-            out Vector3d defect, out Vector3d r4, out Vector3d r5)
-        {
-            double dx = y1.X - y0.X, dy = y1.Y - y0.Y, dz = y1.Z - y0.Z;
-            double sx = k1.X * h - dx, sy = k1.Y * h - dy, sz = k1.Z * h - dz;
-            defect = new Vector3d(sx, sy, sz);
-            r4 = new Vector3d(dx - k7.X * h - sx, dy - k7.Y * h - sy, dz - k7.Z * h - sz);
-            r5 = new Vector3d(
-                (k1.X * D1 + k3.X * D3 + k4.X * D4 + k5.X * D5 + k6.X * D6 + k7.X * D7) * h,
-                (k1.Y * D1 + k3.Y * D3 + k4.Y * D4 + k5.Y * D5 + k6.Y * D6 + k7.Y * D7) * h,
-                (k1.Z * D1 + k3.Z * D3 + k4.Z * D4 + k5.Z * D5 + k6.Z * D6 + k7.Z * D7) * h);
-        }
-
-        /// <summary>
-        /// Test hook: this step's dense rows formed both ways (<see cref="DenseRowsAsVectors"/> and
-        /// <see cref="DenseRowsAsScalars"/>) are the same bits, signed zeros and NaN payloads included.
-        /// </summary>
-        internal readonly bool DenseRowsAlikeInBothForms()
-        {
-            DormandPrince54Step vectors = this, scalars = this;
-            vectors.DenseRowsAsVectors(Step);
-            scalars.DenseRowsAsScalars(Step);
-            return Same(vectors._slopeDefect, scalars._slopeDefect) && Same(vectors._r4, scalars._r4) && Same(vectors._r5, scalars._r5);
-        }
-
         /// <summary>
         /// Test hook: <see cref="InterpolateFraction"/> at <paramref name="theta"/> in [0, 1] is the Vector3d expression
         /// y0 + ((y1 - y0) + (D + (r4 + r5 (1 - theta)) theta) (1 - theta)) theta that Blend writes out component by
@@ -131,9 +77,6 @@ namespace MagnusBall.Integration
             Vector3d VectorForm(in Vector3d y0, in Vector3d y1, in Vector3d defect, in Vector3d r4, in Vector3d r5) =>
                 y0 + ((y1 - y0) + (defect + (r4 + r5 * rest) * theta) * rest) * theta;
         }
-
-        private static bool Same(in StageRates a, in StageRates b) =>
-            Same(a.Velocity, b.Velocity) && Same(a.Acceleration, b.Acceleration) && Same(a.AngularAcceleration, b.AngularAcceleration);
 
         private static bool Same(in Vector3d a, in Vector3d b) =>
             BitConverter.DoubleToInt64Bits(a.X) == BitConverter.DoubleToInt64Bits(b.X) &&

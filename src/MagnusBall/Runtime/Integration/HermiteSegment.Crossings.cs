@@ -138,24 +138,18 @@ namespace MagnusBall.Integration
 
         /// <summary>
         /// True when the scalar Hermite cubic (values f0, f1, slopes times h m0, m1) surely has no fall from &gt; 0 to
-        /// &lt;= 0 on [0, 1]: <see cref="FirstFall"/>'s quick exits, which decide most steps (no event). Two forms that
-        /// decide alike (test <c>QuickBounds_DecideAlikeInBothForms</c>): branching under RyuJIT, which predicts the early
-        /// exit well (the form without branches measured 2-3 % slower on a predicted shot), and in one basic block under
-        /// Mono (<see cref="FlightKernel.PreferStraightLine"/>), whose JIT stored and reloaded the four numbers at every
-        /// branch (about 7 % of a predicted shot there).
+        /// &lt;= 0 on [0, 1]: <see cref="FirstFall"/>'s quick exits, which decide most steps (no event).
         /// </summary>
+        /// <remarks>
+        /// On [0, 1] the Hermite basis functions h00 + h01 = 1 (both in [0, 1]), h10 in [0, 4/27] and h11 in [-4/27, 0]
+        /// bound f(s) &gt;= min(f0, f1) - 4/27 (max(-m0, 0) + max(m1, 0)). When that is clearly positive there is no root; the
+        /// margin (1e-9 of the data, far above the rounding of the polynomial form FirstFall evaluates) keeps the answer the
+        /// full search would give. Nor can a cubic that stays clearly below 0 fall from above it (the apex test on the way
+        /// down): by the same bounds f(s) &lt;= max(f0, f1) + 4/27 (max(m0, 0) + max(-m1, 0)). With the margin every value the
+        /// full search evaluates is negative too, so it finds no start above 0. (f0 = 0 never passes: the bound is then &gt;= 0.)
+        /// </remarks>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool CannotFall(double f0, double m0, double f1, double m1) =>
-            FlightKernel.PreferStraightLine ? CannotFallInOneBlock(f0, m0, f1, m1) : CannotFallBranching(f0, m0, f1, m1);
-
-        // On [0, 1] the Hermite basis functions h00 + h01 = 1 (both in [0, 1]), h10 in [0, 4/27] and h11 in [-4/27, 0]
-        // bound f(s) >= min(f0, f1) - 4/27 (max(-m0, 0) + max(m1, 0)). When that is clearly positive there is no root; the
-        // margin (1e-9 of the data, far above the rounding of the polynomial form FirstFall evaluates) keeps the answer the
-        // full search would give. Nor can a cubic that stays clearly below 0 fall from above it (the apex test on the way
-        // down): by the same bounds f(s) <= max(f0, f1) + 4/27 (max(m0, 0) + max(-m1, 0)). With the margin every value the
-        // full search evaluates is negative too, so it finds no start above 0. (f0 = 0 never passes: the bound is then >= 0.)
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool CannotFallBranching(double f0, double m0, double f1, double m1)
+        internal static bool CannotFall(double f0, double m0, double f1, double m1)
         {
             // A finite sum means four finite numbers (the common case, one test). Otherwise: not sure. Four finite numbers near
             // 1e308 (a plane that far away) must go on to the search, and so must a non-finite one, which from finite states
@@ -177,27 +171,6 @@ namespace MagnusBall.Integration
 
             double high = (f0 > f1 ? f0 : f1) + (4.0 / 27.0) * ((m0 > 0 ? m0 : 0) + (m1 < 0 ? -m1 : 0));
             return high < -scale;
-        }
-
-        // CannotFallBranching's bounds without a branch, deciding exactly as it does:
-        // - a finite sum means four finite numbers (otherwise not sure, as there);
-        // - (|m| - m) / 2 and (|m| + m) / 2 are max(-m, 0) and max(m, 0) exactly (doubling and halving are exact), but
-        //   where the doubled sum 2 (max(-m0, 0) + max(m1, 0)) (or the other bound's) overflows, as slopes from about
-        //   4.5e307 each can make it, a bound is infinite: not sure (never a "clear" the branching form does not give),
-        //   the search decides;
-        // - min(f0, f1) - b > scale exactly when both f0 - b and f1 - b are (rounding is monotonic), and likewise for the
-        //   maximum, so no minimum or maximum is formed.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static bool CannotFallInOneBlock(double f0, double m0, double f1, double m1)
-        {
-            double sum = f0 + m0 + f1 + m1;
-            double a0 = Math.Abs(m0), a1 = Math.Abs(m1);
-            double scale = 1e-9 * (Math.Abs(f0) + Math.Abs(f1) + a0 + a1);
-            double below = (4.0 / 27.0) * (0.5 * ((a0 - m0) + (a1 + m1)));
-            double above = (4.0 / 27.0) * (0.5 * ((a0 + m0) + (a1 - m1)));
-            bool clearAbove = (f0 - below > scale) & (f1 - below > scale);
-            bool clearBelow = (f0 + above < -scale) & (f1 + above < -scale);
-            return double.IsFinite(sum) & (clearAbove | clearBelow);
         }
 
         /// <summary>
