@@ -3,6 +3,8 @@ using System.Diagnostics;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Benchmarks
 {
     /// <summary>
@@ -32,7 +34,7 @@ namespace MagnusBall.Benchmarks
                     DormandPrince54Stages stages = default; // reused, as the stepper reuses its step's stages
                     for (int i = 0; i < Repeats; i++)
                     {
-                        model.Kernel.DormandPrince54(launch, k1, 0.01, ref stages);
+                        FlightKernel.Of(model).DormandPrince54(launch, k1, 0.01, ref stages);
                         x += stages.End.Position.X;
                     }
 
@@ -76,7 +78,7 @@ namespace MagnusBall.Benchmarks
                     double x = 0;
                     for (int i = 0; i < Repeats; i++)
                     {
-                        x += model.Kernel.RungeKutta4(launch, k1, 0.01, out _).Position.X;
+                        x += FlightKernel.Of(model).RungeKutta4(launch, k1, 0.01, out _).Position.X;
                     }
 
                     return x;

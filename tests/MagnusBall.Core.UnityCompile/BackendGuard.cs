@@ -1,3 +1,5 @@
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall
 {
     // Compiled only into MagnusBall.Core.UnityCompile (ENABLE_MONO defined, as Unity defines it for its Mono backend, and

@@ -52,7 +52,7 @@ namespace MagnusBall
         private readonly double _gravityLength;
         private readonly double _coefficientBound; // >= |C_D| + |C_L| for every input, or -1 when a law has no known bound
         private readonly double _decayRateBound;   // >= |dw/dt| / |w| for every input (with _coefficientBound >= 0)
-        private readonly FlightKernel _kernel; // the ODE specialised for these laws (picked once, here)
+        private EvaluationCount? _counted; // the test hook (CountedEvaluations)
 
         /// <summary>Creates a flight model.</summary>
         /// <param name="ball">The ball (mass, radius, inertia).</param>
@@ -94,7 +94,6 @@ namespace MagnusBall
             // The laws' bounds from the one list of built-in laws (LawCatalogue): a law it does not bound has none.
             _coefficientBound = !_hasAero ? 0 : LawCatalogue.TraitsOf(drag).Bound is double d && LawCatalogue.TraitsOf(lift).Bound is double l ? d + l : -1;
             _decayRateBound = LawCatalogue.TraitsOf(spinDecay).Bound ?? double.PositiveInfinity;
-            _kernel = FlightKernelFactory.Create(this);
         }
 
         /// <summary>The ball.</summary>
@@ -122,7 +121,7 @@ namespace MagnusBall
         /// The aerodynamic factor k = rho A / (2 m), 1/m: drag deceleration is k C_D s^2. With x = h k C_D s
         /// (the step in units of the drag time scale), explicit Euler's speed starts to oscillate at x = 1, and the
         /// flight diverges at x = 2 (Euler, Heun), 2.45 (RK4), 1.41 (Dormand-Prince), measured in docs/integrators.md;
-        /// <see cref="Integration.StableIntegrator"/> substeps to stay well inside.
+        /// StableIntegrator substeps to stay well inside.
         /// </summary>
         internal double AerodynamicFactor => _dragFactor;
 
@@ -132,9 +131,19 @@ namespace MagnusBall
         /// </summary>
         internal EvaluationCount? CountedEvaluations
         {
-            get => _kernel.Counter;
-            set => _kernel.Counter = value; // the kernel counts: every evaluation, through Derivative or a kernel step
+            get => _counted;
+            set
+            {
+                _counted = value;
+                Specialised = null; // the kernel takes the hook when it is next built (Integration/Kernels/FlightKernel.Of)
+            }
         }
+
+        /// <summary>
+        /// The integration layer's kernel for this model (Integration/Kernels: FlightKernel.Of builds it on first use and
+        /// keeps it here). Typed as object: the physics layer holds it without knowing the integration layer.
+        /// </summary>
+        internal object? Specialised;
 
         /// <summary>True when the air exerts a force (density &gt; 0 and a drag or lift law): the one place this is decided.</summary>
         internal bool HasAerodynamics => _hasAero;
@@ -189,27 +198,18 @@ namespace MagnusBall
         /// </remarks>
         /// <param name="state">The state (not validated here: the integrators validate what they are given).</param>
         /// <remarks>
-        /// Runs through a kernel specialised for this model's laws when the model is built: each built-in law is a
-        /// struct the JIT inlines, and only the inputs some law reads are computed (no Reynolds number unless a law
-        /// reads it). Laws of your own (any <see cref="IDragModel"/>, <see cref="ILiftModel"/> or
-        /// <see cref="ISpinDecayModel"/>) are called through their interface, with every input of
-        /// <see cref="AeroConditions"/> computed. Either way the result is the formula above, bit for bit, except in two
-        /// folded forms, equal to the formula to rounding (within about 4 ulp of the largest term), which compute the same
-        /// force with fewer operations after the speed's square root: a lift law that reads no spin parameter (a constant
-        /// C_L, as in <see cref="Thesis"/>), and <see cref="StepanekLift"/> (with <see cref="StepanekDrag"/> beside it, in
-        /// still air or a uniform wind, for speeds and spins within 1e100 and 1e50 of 1: the tennis presets). Where the
-        /// formula's own products underflow (a lift below about 1e-300 m/s^2, far from any game), the folded form keeps the
-        /// tiny value the formula rounds to zero.
+        /// This is the spec: the textbook formula term by term, every law called through its public interface (see
+        /// docs/architecture.md, "The spec"). The library's integrators and flights evaluate the same right-hand side
+        /// through a kernel specialised for the model's laws (each built-in law a struct the JIT inlines, only the inputs
+        /// some law reads computed), which gives these bits except in its folded form, equal to them to rounding (within
+        /// a few ulp of the largest term): <see cref="StepanekLift"/> beside <see cref="StepanekDrag"/> in still air or a
+        /// uniform wind (the tennis presets). A conformance test holds every fast form to this method.
         /// </remarks>
         public StateDerivative Derivative(in FlightState state)
         {
-            StateDerivative d = _kernel.Derivative(state);
-            // The plain formula overflows only for absurd states (speeds beyond ~1e150 m/s): then the scaled one.
-            return d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite ? d : ScaledDerivative(state);
+            _counted?.Add();
+            return GeneralDerivative(state); // which takes the scaled formula where the plain one overflows (speeds past ~1e150 m/s)
         }
-
-        /// <summary>The kernel this model's evaluations and the built-in fixed steps run through.</summary>
-        internal FlightKernel Kernel => _kernel;
 
         /// <summary>
         /// The general formula, every law called through its interface: what <see cref="Derivative"/> computes, bit for
@@ -275,7 +275,7 @@ namespace MagnusBall
         // The same forces without spurious overflow: directions are unit vectors and magnitudes k s^2 C are products
         // of finite factors, infinite only when the true value exceeds double.MaxValue; a zero factor gives zero.
         [MethodImpl(MethodImplOptions.NoInlining)]
-        private StateDerivative ScaledDerivative(in FlightState state)
+        internal StateDerivative ScaledDerivative(in FlightState state)
         {
             Vector3d w = state.AngularVelocity;
             Vector3d wind = _windVaries ? Air.WindAt(state.Position, Up) : _wind;
@@ -371,7 +371,7 @@ namespace MagnusBall
         }
 
         /// <summary>
-        /// The stiffness rate sigma, 1/s, that <see cref="Integration.StableStepping"/> keeps h sigma under: the largest
+        /// The stiffness rate sigma, 1/s, that StableStepping keeps h sigma under: the largest
         /// drag eigenvalue 2 k C_D s plus the Magnus rotation bound 2 k |C_L| s and the spin-decay rate, from this
         /// model's own laws and its own wind at the ball (a wind profile included), over the speeds the ball can reach
         /// within <paramref name="step"/> (s to s + |g| step). See StableStepping's remarks for the derivation.

@@ -7,6 +7,8 @@ using MagnusBall.Integration;
 using MagnusBall.Flight;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Integration
 {
     /// <summary>
@@ -296,7 +298,7 @@ namespace MagnusBall.Tests.Integration
                                 continue;
                             }
 
-                            StateDerivative expected = model.Derivative(states[lane]);
+                            StateDerivative expected = FlightKernel.DerivativeOf(model, states[lane]);
                             string where = $"{model}, v {states[lane].Velocity}, w {states[lane].AngularVelocity}";
                             Assert.That(new Vector3d(ax[lane], ay[lane], az[lane]), Is.EqualTo(expected.Acceleration), where);
                             Assert.That(new Vector3d(sx[lane], sy[lane], sz[lane]), Is.EqualTo(expected.AngularAcceleration), where);

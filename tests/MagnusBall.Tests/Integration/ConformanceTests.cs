@@ -6,6 +6,8 @@ using MagnusBall.Flight;
 using MagnusBall.Integration;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Integration
 {
     /// <summary>
@@ -202,7 +204,7 @@ namespace MagnusBall.Tests.Integration
             {
                 var model = new FlightModel(
                     Ball.Tennis, new Air(1.21), Gravity.ZUp, law as IDragModel, law as ILiftModel, law as ISpinDecayModel);
-                string kernel = $"{model.Kernel}";
+                string kernel = $"{FlightKernel.Of(model)}";
                 bool golf = law is GolfSpinReynoldsDrag || law is GolfSpinReynoldsLift;
                 Assert.That(kernel.Contains("Interface"), Is.EqualTo(golf), $"{law}: {kernel}");
             }
@@ -311,7 +313,7 @@ namespace MagnusBall.Tests.Integration
 
                 case "rk4-straight-line":
                     expected = SpecRk4(model, state, k1, h);
-                    if (!model.Kernel.TryRk4StraightLine(state, k1, h, out actual, out actualEnd))
+                    if (!FlightKernel.Of(model).TryRk4StraightLine(state, k1, h, out actual, out actualEnd))
                     {
                         ran = false;
                         return 0;
@@ -363,7 +365,7 @@ namespace MagnusBall.Tests.Integration
                 {
                     expected = SpecDp54(model, state, k1, h, out StateDerivative[] k);
                     var stages = new DormandPrince54Stages();
-                    if (!model.Kernel.DormandPrince54(state, k1, h, ref stages) || !expected.IsFinite)
+                    if (!FlightKernel.Of(model).DormandPrince54(state, k1, h, ref stages) || !expected.IsFinite)
                     {
                         ran = false;
                         return 0;
@@ -398,7 +400,7 @@ namespace MagnusBall.Tests.Integration
                     }
 
                     actual = batch.GetState(0);
-                    actualEnd = model.Derivative(actual); // the batch keeps the kernel's end derivative, as the kernel's step
+                    actualEnd = FlightKernel.DerivativeOf(model, actual); // the batch keeps the kernel's end derivative, as the kernel's step
                     break;
                 }
 
@@ -418,7 +420,7 @@ namespace MagnusBall.Tests.Integration
 
         // The RK4 forms promise more than the spec's bound: the same bits as the kernel's RK4 step (RungeKutta4.Step, which
         // the flight's determinism rests on: a runtime may take any of them). The flight core and the batch start from the
-        // kernel's derivative (model.Derivative), the others from the spec's k1, as their call was given.
+        // kernel's derivative (FlightKernel.DerivativeOf), the others from the spec's k1, as their call was given.
         private static void AssertTheKernelsRk4(string form, FlightModel model, in FlightState state, double h, in FlightState actual, in StateDerivative actualEnd)
         {
             bool fromKernelRates = form == "flight-core-rk4" || form == "batch-lanes";
@@ -427,7 +429,7 @@ namespace MagnusBall.Tests.Integration
                 return;
             }
 
-            StateDerivative k = fromKernelRates ? model.Derivative(state) : model.GeneralDerivative(state);
+            StateDerivative k = fromKernelRates ? FlightKernel.DerivativeOf(model, state) : model.GeneralDerivative(state);
             FlightState kernel = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k, h, out StateDerivative kernelEnd, out _);
             if (form == "rk4-advance")
             {

@@ -4,6 +4,8 @@ using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Integration
 {
     /// <summary>The Dormand-Prince 5(4) pair: order, error control, dense output, FSAL, no allocation, bad input.</summary>
@@ -61,7 +63,7 @@ namespace MagnusBall.Tests.Integration
             {
                 FlightModel model = models[n % models.Length];
                 var state = new FlightState(Vector(), Vector(), Vector(), random.NextDouble());
-                StateDerivative k1 = model.Derivative(state);
+                StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                 double h = Math.Pow(10, 301 * random.NextDouble() - 300);
                 if (!k1.IsFinite)
                 {
@@ -141,7 +143,7 @@ namespace MagnusBall.Tests.Integration
             // place), so the call must read them before it overwrites the step.
             FlightModel model = Model();
             FlightState start = Start();
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             var method = new DormandPrince54(1e-9, 1e-12);
             Assert.That(method.TryStep(model, start, k1, 0.5, out DormandPrince54Step step), Is.False, "0.5 s at these tolerances is rejected");
             double retry = step.NextStep;
@@ -163,11 +165,11 @@ namespace MagnusBall.Tests.Integration
         {
             FlightModel model = Model();
             FlightState start = Start();
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             bool accepted = DormandPrince54.Instance.TryStep(model, start, k1, 1e-3, out DormandPrince54Step step);
 
             Assert.That(accepted, Is.True);
-            StateDerivative k7 = model.Derivative(step.End);
+            StateDerivative k7 = FlightKernel.DerivativeOf(model, step.End);
             Assert.That(step.EndDerivative.Acceleration, Is.EqualTo(k7.Acceleration), "k7 = f(y1) is handed back as the next k1");
             Assert.That(step.End.Position, Is.EqualTo(((IIntegrator)DormandPrince54.Instance).Step(model, start, k1, 1e-3).Position), "TryStep and Step agree");
             Assert.That(step.InterpolateFraction(0).Position, Is.EqualTo(start.Position));
@@ -182,7 +184,7 @@ namespace MagnusBall.Tests.Integration
             // The continuous extension is fourth order: its error inside one step falls as h^5.
             FlightModel model = Model();
             FlightState start = Start();
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             double[] steps = { 0.2, 0.1, 0.05 };
             double[] errors = new double[steps.Length];
             for (int i = 0; i < steps.Length; i++)
@@ -226,7 +228,7 @@ namespace MagnusBall.Tests.Integration
         {
             FlightState end = AdaptiveFlight.Fly(flight, method, Start(), 1.0);
             FlightState start = Start();
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             method.TryStep(model, start, k1, 0.01, out DormandPrince54Step attempt);
             return end.Position.X + attempt.InterpolateFraction(0.5).Position.X + method.Step(model, start, k1, 0.01).Position.X;
         }
@@ -302,7 +304,7 @@ namespace MagnusBall.Tests.Integration
                 double rpm = 6000 * random.NextDouble() - 2000;
                 Vector3d spin = rpm >= 0 ? Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRpm(rpm)) : Spin.Backspin(velocity, Vector3d.UnitZ, Spin.FromRpm(-rpm));
                 var state = new FlightState(new Vector3d(0, 0, 1), velocity, spin);
-                StateDerivative k1 = model.Derivative(state);
+                StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                 var method = shot % 2 == 0 ? new DormandPrince54(1e-5, 1e-5) : new DormandPrince54(1e-8, 1e-8);
                 double h = 0.02;
                 for (int i = 0; i < 400 && state.Time < 4; i++)
@@ -371,7 +373,7 @@ namespace MagnusBall.Tests.Integration
             // step is clear; a finiteness test on the sum of the bound's numbers would call it not finite and answer false.
             FlightModel model = Model();
             FlightState state = Start();
-            Assert.That(new DormandPrince54(1e-6, 1e-9).TryStep(model, state, model.Derivative(state), 0.01, out DormandPrince54Step step), Is.True);
+            Assert.That(new DormandPrince54(1e-6, 1e-9).TryStep(model, state, FlightKernel.DerivativeOf(model, state), 0.01, out DormandPrince54Step step), Is.True);
             var plane = new Plane(new Vector3d(0, 0, -9e307), Vector3d.UnitZ);
             Assert.That(step.TryFindCrossing(plane, CrossingDirection.AgainstNormal, false, out _), Is.False);
             Assert.That(step.StaysClearOf(plane, CrossingDirection.AgainstNormal), Is.True);
@@ -397,7 +399,7 @@ namespace MagnusBall.Tests.Integration
         {
             FlightModel model = Model();
             FlightState start = Start();
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             var nanState = new FlightState(new Vector3d(double.NaN, 0, 0), start.Velocity, start.AngularVelocity);
 
             Assert.That(() => new DormandPrince54(0, 1e-9), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("relativeTolerance"));
@@ -435,7 +437,7 @@ namespace MagnusBall.Tests.Integration
                 {
                     var velocity = new Vector3d(30 * Math.Cos(elevation), 0, 30 * Math.Sin(elevation));
                     var start = new FlightState(new Vector3d(0, 0, 1), velocity, Spin.Topspin(velocity, Vector3d.UnitZ, Spin.FromRevolutionsPerSecond(20)));
-                    StateDerivative k1 = model.Derivative(start);
+                    StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
                     double first = method.InitialStep(model, start, k1, 0.5);
                     Assert.That(method.TryStep(model, start, k1, first, out DormandPrince54Step step), Is.True);
                     double asked = DormandPrince54.StepAskedFor(step);
@@ -453,7 +455,7 @@ namespace MagnusBall.Tests.Integration
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 0, 3), new Vector3d(0, 120, 0));
             var method = new DormandPrince54(1e-8, 1e-8);
-            Assert.That(method.TryStep(model, start, model.Derivative(start), 0.5, out DormandPrince54Step rejected), Is.False);
+            Assert.That(method.TryStep(model, start, FlightKernel.DerivativeOf(model, start), 0.5, out DormandPrince54Step rejected), Is.False);
             Assert.That(DormandPrince54.StepAskedFor(rejected), Is.NaN);
         }
 

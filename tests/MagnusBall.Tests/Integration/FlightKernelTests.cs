@@ -6,6 +6,8 @@ using MagnusBall.Flight;
 using MagnusBall.Integration;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Integration
 {
     /// <summary>
@@ -105,7 +107,7 @@ namespace MagnusBall.Tests.Integration
         [TestCaseSource(nameof(Models))]
         public void Kernel_IsPickedForTheLaws(FlightModel model, string laws)
         {
-            Assert.That(model.Kernel.ToString(), Is.EqualTo($"FlightKernel<{laws}>"));
+            Assert.That(FlightKernel.Of(model).ToString(), Is.EqualTo($"FlightKernel<{laws}>"));
         }
 
         [TestCaseSource(nameof(Models))]
@@ -114,7 +116,7 @@ namespace MagnusBall.Tests.Integration
             bool folded = Folded(laws);
             foreach (FlightState state in States())
             {
-                StateDerivative fast = model.Derivative(state);
+                StateDerivative fast = FlightKernel.DerivativeOf(model, state);
                 StateDerivative general = model.GeneralDerivative(state);
                 AssertSame(fast.Velocity, general.Velocity, state);
                 if (folded)
@@ -150,7 +152,7 @@ namespace MagnusBall.Tests.Integration
             {
                 foreach (FlightState state in States())
                 {
-                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative fast = FlightKernel.DerivativeOf(model, state);
                     StateDerivative general = model.GeneralDerivative(state);
                     double speed = (state.Velocity - model.Air.WindAt(state.Position, model.Up)).Length;
                     double drag = ((ConstantDrag)model.Drag!).Value, lift = Math.Abs(((ConstantLift)model.Lift!).Value);
@@ -199,7 +201,7 @@ namespace MagnusBall.Tests.Integration
             {
                 foreach (FlightState state in States())
                 {
-                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative fast = FlightKernel.DerivativeOf(model, state);
                     StateDerivative general = model.GeneralDerivative(state);
                     double speed = (state.Velocity - model.Air.WindAt(state.Position, model.Up)).Length;
                     double scale = model.Gravity.Length + model.AerodynamicFactor * speed * speed * (0.7981 + 0.4946);
@@ -211,7 +213,7 @@ namespace MagnusBall.Tests.Integration
 
                 foreach (FlightState state in StatesOutsideTheFold(model))
                 {
-                    StateDerivative fast = model.Derivative(state);
+                    StateDerivative fast = FlightKernel.DerivativeOf(model, state);
                     StateDerivative general = model.GeneralDerivative(state);
                     AssertSame(fast.Acceleration, general.Acceleration, state);
                     AssertSame(fast.AngularAcceleration, general.AngularAcceleration, state);
@@ -227,7 +229,7 @@ namespace MagnusBall.Tests.Integration
             // Unfolded laws: the steps are the formulas on the general derivative, bit for bit. Folded laws: the formulas on the
             // kernel's own (folded) derivative, bit for bit.
             bool folded = Folded(laws);
-            Func<FlightState, StateDerivative> spec = folded ? s => model.Derivative(s) : s => model.GeneralDerivative(s);
+            Func<FlightState, StateDerivative> spec = folded ? s => FlightKernel.DerivativeOf(model, s) : s => model.GeneralDerivative(s);
             foreach (FlightState state in States())
             {
                 foreach (double step in new[] { 1.0 / 240, 0.03 })
@@ -272,7 +274,7 @@ namespace MagnusBall.Tests.Integration
                 {
                     foreach (double step in new[] { 1.0 / 240, 0.03, 0.5, 3.0 })
                     {
-                        StateDerivative k1 = model.Derivative(state);
+                        StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                         FlightState expected = integrator.Step(model, state, k1, step, out StateDerivative expectedEnd, out int evaluations);
                         if (integrator is StableIntegrator stable)
                         {
@@ -323,7 +325,7 @@ namespace MagnusBall.Tests.Integration
             {
                 foreach (double step in new[] { 1.0 / 240, 0.03, 0.4 })
                 {
-                    StateDerivative k1 = model.Derivative(state);
+                    StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                     foreach (DormandPrince54 method in methods)
                     {
                         bool accepted = method.TryStep(model, state, k1, step, out DormandPrince54Step fast);
@@ -360,7 +362,7 @@ namespace MagnusBall.Tests.Integration
         {
             // Unfolded laws: the tableau on the general derivative; folded ones: on the kernel's own (folded) derivative
             // (which ConformanceTests holds to the general formula within its bound). Bit for bit either way.
-            Func<FlightState, StateDerivative> spec = Folded(laws) ? s => model.Derivative(s) : s => model.GeneralDerivative(s);
+            Func<FlightState, StateDerivative> spec = Folded(laws) ? s => FlightKernel.DerivativeOf(model, s) : s => model.GeneralDerivative(s);
             int finiteSteps = 0;
             foreach (FlightState state in States())
             {
@@ -371,7 +373,7 @@ namespace MagnusBall.Tests.Integration
                     // Stages that hold garbage beforehand: the kernel writes every stage it reads (k2..k6 from the stages
                     // themselves), so nothing left in them may reach the step.
                     DormandPrince54Stages stages = Garbage();
-                    bool finite = model.Kernel.DormandPrince54(state, k1, step, ref stages);
+                    bool finite = FlightKernel.Of(model).DormandPrince54(state, k1, step, ref stages);
                     if (finite)
                     {
                         finiteSteps++;
@@ -402,9 +404,9 @@ namespace MagnusBall.Tests.Integration
             foreach (double speed in new[] { 1e100, 1e150, 1e153, 1e154, 1e155, 1e200, 1e300 })
             {
                 var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(speed, 0, speed / 3), new Vector3d(10, 150, 20));
-                StateDerivative k1 = model.Derivative(state);
+                StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                 DormandPrince54Stages ignored = default;
-                if (!model.Kernel.DormandPrince54(state, k1, 0.01, ref ignored))
+                if (!FlightKernel.Of(model).DormandPrince54(state, k1, 0.01, ref ignored))
                 {
                     fallbacks++;
                 }
@@ -428,7 +430,7 @@ namespace MagnusBall.Tests.Integration
             var calls = new EvaluationCount();
             model.CountedEvaluations = calls;
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative k1 = model.Derivative(start);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, start);
             calls.Calls = 0;
             drag.Calls = 0;
             DormandPrince54.Instance.TryStep(model, start, k1, 0.01, out _);
@@ -453,24 +455,24 @@ namespace MagnusBall.Tests.Integration
                 {
                     foreach (double step in new[] { 1.0 / 240, 0.03 })
                     {
-                        StateDerivative k1 = model.Derivative(state);
+                        StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                         FlightState rk4 = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out StateDerivative rk4End, out _);
                         FlightState heun = ((IIntegrator)Heun.Instance).Step(model, state, k1, step, out StateDerivative heunEnd, out _);
-                        FlightState rk4Reference = ReferenceRk4(model, state, k1, step, s => model.Derivative(s));
-                        FlightState heunReference = ReferenceHeun(model, state, k1, step, s => model.Derivative(s));
+                        FlightState rk4Reference = ReferenceRk4(model, state, k1, step, s => FlightKernel.DerivativeOf(model, s));
+                        FlightState heunReference = ReferenceHeun(model, state, k1, step, s => FlightKernel.DerivativeOf(model, s));
                         AssertSame(rk4, rk4Reference, state);
 
                         AssertSame(heun, heunReference, state);
                         if (rk4.IsFinite)
                         {
                             // The end rates are the derivative at the end state, bit for bit.
-                            AssertSame(rk4End.Acceleration, model.Derivative(rk4).Acceleration, state);
-                            AssertSame(rk4End.AngularAcceleration, model.Derivative(rk4).AngularAcceleration, state);
+                            AssertSame(rk4End.Acceleration, FlightKernel.DerivativeOf(model, rk4).Acceleration, state);
+                            AssertSame(rk4End.AngularAcceleration, FlightKernel.DerivativeOf(model, rk4).AngularAcceleration, state);
                         }
 
                         if (heunReference.IsFinite)
                         {
-                            AssertSame(heunEnd.Acceleration, model.Derivative(heunReference).Acceleration, state);
+                            AssertSame(heunEnd.Acceleration, FlightKernel.DerivativeOf(model, heunReference).Acceleration, state);
                         }
                     }
                 }
@@ -495,9 +497,9 @@ namespace MagnusBall.Tests.Integration
                 {
                     foreach (double step in new[] { 1.0 / 240, 0.03, 1e-9 })
                     {
-                        StateDerivative k1 = model.Derivative(state);
+                        StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                         FlightState general = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, step, out StateDerivative generalEnd, out _);
-                        if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
+                        if (!FlightKernel.Of(model).TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                         {
                             declined++;
                             continue;
@@ -505,7 +507,7 @@ namespace MagnusBall.Tests.Integration
 
                         taken++;
                         AssertSame(straight, general, state);
-                        AssertSame(straight, ReferenceRk4(model, state, k1, step, s => model.Derivative(s)), state);
+                        AssertSame(straight, ReferenceRk4(model, state, k1, step, s => FlightKernel.DerivativeOf(model, s)), state);
                         AssertSame(straightEnd.Acceleration, generalEnd.Acceleration, state);
                         AssertSame(straightEnd.AngularAcceleration, generalEnd.AngularAcceleration, state);
                     }
@@ -515,11 +517,11 @@ namespace MagnusBall.Tests.Integration
             Assert.That(taken, Is.GreaterThan(0.9 * (taken + declined)), $"taken {taken}, declined {declined}");
             var spinless = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), default);
             var spinning = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            Assert.That(still.Kernel.TryRk4StraightLine(spinless, still.Derivative(spinless), 1.0 / 240, out _, out _), Is.False, "no spin");
+            Assert.That(FlightKernel.Of(still).TryRk4StraightLine(spinless, FlightKernel.DerivativeOf(still, spinless), 1.0 / 240, out _, out _), Is.False, "no spin");
             var windy = FlightModel.Thesis(Ball.Tennis, new Air(1.21, new Vector3d(3, 0, 0)), Gravity.ZUp);
-            Assert.That(windy.Kernel.TryRk4StraightLine(spinning, windy.Derivative(spinning), 1.0 / 240, out _, out _), Is.False, "wind");
+            Assert.That(FlightKernel.Of(windy).TryRk4StraightLine(spinning, FlightKernel.DerivativeOf(windy, spinning), 1.0 / 240, out _, out _), Is.False, "wind");
             var decaying = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, ConstantDrag.CrossLindseyTennis, new ConstantLift(0.2), new ExponentialSpinDecay(3));
-            Assert.That(decaying.Kernel.TryRk4StraightLine(spinning, decaying.Derivative(spinning), 1.0 / 240, out _, out _), Is.False, "spin decay");
+            Assert.That(FlightKernel.Of(decaying).TryRk4StraightLine(spinning, FlightKernel.DerivativeOf(decaying, spinning), 1.0 / 240, out _, out _), Is.False, "spin decay");
         }
 
         [Test]
@@ -564,7 +566,7 @@ namespace MagnusBall.Tests.Integration
                             new Vector3d(0, 0, 1), new Vector3d(30, 0, -5), -new Vector3d(0, random.Next(-300, 300), random.Next(-2, 2)));
                     }
 
-                    StateDerivative k1 = general.Derivative(state);
+                    StateDerivative k1 = FlightKernel.DerivativeOf(general, state);
                     if (i % 7 == 3)
                     {
                         // a start spin rate the model does not have (outside IIntegrator.Step's contract; both forms still agree)
@@ -574,7 +576,7 @@ namespace MagnusBall.Tests.Integration
                     double step = steps[i % steps.Length];
                     compared++;
                     FlightState expected = ((IIntegrator)RungeKutta4.Instance).Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
-                    if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
+                    if (!FlightKernel.Of(model).TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                     {
                         continue;
                     }
@@ -642,11 +644,11 @@ namespace MagnusBall.Tests.Integration
                         step = i % 16 == 1 ? steps[random.Next(3)] : 1e-300;
                     }
 
-                    StateDerivative k1 = general.Derivative(state);
+                    StateDerivative k1 = FlightKernel.DerivativeOf(general, state);
                     compared++;
                     realistic += isRealistic ? 1 : 0;
                     FlightState expected = ((IIntegrator)RungeKutta4.Instance).Step(general, state, k1, step, out StateDerivative expectedEnd, out _);
-                    if (!model.Kernel.TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
+                    if (!FlightKernel.Of(model).TryRk4StraightLine(state, k1, step, out FlightState straight, out StateDerivative straightEnd))
                     {
                         continue;
                     }
@@ -679,12 +681,12 @@ namespace MagnusBall.Tests.Integration
                 ("constant drag", new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, new ConstantDrag(0.55), StepanekLift.Instance), spinning),
             })
             {
-                Assert.That(model.Kernel.TryRk4StraightLine(state, model.Derivative(state), 1.0 / 240, out _, out _), Is.False, why);
+                Assert.That(FlightKernel.Of(model).TryRk4StraightLine(state, FlightKernel.DerivativeOf(model, state), 1.0 / 240, out _, out _), Is.False, why);
 
                 // A declined step leaves the caller's derivative for the general step, where the caller passes one variable
                 // as the start and end derivative (StableStepping does): the same step as with two variables. (Under Mono,
                 // where RK4 tries the straight form first, an early version zeroed it and the step lost its first slope.)
-                StateDerivative separate = model.Derivative(state), shared = separate;
+                StateDerivative separate = FlightKernel.DerivativeOf(model, state), shared = separate;
                 FlightState apart = ((IIntegrator)RungeKutta4.Instance).Step(model, state, separate, 1.0 / 240, out StateDerivative end, out _);
                 FlightState together = ((IIntegrator)RungeKutta4.Instance).Step(model, state, shared, 1.0 / 240, out shared, out _);
                 AssertBits(together.Velocity, apart.Velocity, state, 1.0 / 240);
@@ -731,12 +733,12 @@ namespace MagnusBall.Tests.Integration
                 ? FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp)
                 : new FlightModel(Ball.Tennis, air, Gravity.ZUp, StepanekDrag.Instance, StepanekLift.Instance, new ExponentialSpinDecay(20));
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative run = model.Derivative(start);
+            StateDerivative run = FlightKernel.DerivativeOf(model, start);
             FlightState many = start;
             int taken = RungeKutta4.Instance.Advance(model, ref many, ref run, 1.0 / 240, count);
             Assert.That(taken, Is.EqualTo(count));
             FlightState one = start;
-            StateDerivative k = model.Derivative(start);
+            StateDerivative k = FlightKernel.DerivativeOf(model, start);
             for (int i = 0; i < count; i++)
             {
                 one = ((IIntegrator)RungeKutta4.Instance).Step(model, one, k, 1.0 / 240, out k, out _);
@@ -756,7 +758,7 @@ namespace MagnusBall.Tests.Integration
             var calls = new EvaluationCount();
             model.CountedEvaluations = calls;
             var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative k = model.Derivative(state);
+            StateDerivative k = FlightKernel.DerivativeOf(model, state);
             calls.Calls = 0;
             drag.Calls = 0;
             int taken = RungeKutta4.Instance.Advance(model, ref state, ref k, 1.0 / 240, 37);
@@ -770,7 +772,7 @@ namespace MagnusBall.Tests.Integration
         {
             FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
             var state = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative k = model.Derivative(state);
+            StateDerivative k = FlightKernel.DerivativeOf(model, state);
             Assert.That(RungeKutta4.MaximumAdvanceSteps, Is.EqualTo(250_000));
             Assert.That(RungeKutta4.Instance.Advance(model, ref state, ref k, 1.0 / 240, RungeKutta4.MaximumAdvanceSteps), Is.EqualTo(250_000));
             Assert.That(state.Time, Is.EqualTo(250_000 / 240.0).Within(1e-6), "17 minutes of flight (falling at its terminal speed)");
@@ -785,7 +787,7 @@ namespace MagnusBall.Tests.Integration
         {
             FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative startRates = model.Derivative(start);
+            StateDerivative startRates = FlightKernel.DerivativeOf(model, start);
             FlightState state = start;
             StateDerivative rates = startRates;
             var error = Assert.Throws(Is.InstanceOf<ArgumentException>(), () => RungeKutta4.Instance.Advance(model, ref state, ref rates, step, count));
@@ -818,7 +820,7 @@ namespace MagnusBall.Tests.Integration
             FlightModel model = FlightModel.Thesis(Ball.Tennis, new Air(1.21), Gravity.ZUp);
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(236, 1, 5), new Vector3d(10, 150, 20));
             var states = new List<FlightState> { start };
-            var rates = new List<StateDerivative> { model.Derivative(start) };
+            var rates = new List<StateDerivative> { FlightKernel.DerivativeOf(model, start) };
             while (true)
             {
                 FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, states[^1], rates[^1], 0.5, out StateDerivative end, out _);
@@ -856,7 +858,7 @@ namespace MagnusBall.Tests.Integration
             var drag = new CountingDrag();
             var model = new FlightModel(Ball.Tennis, new Air(1.21), Gravity.ZUp, drag);
             var start = new FlightState(new Vector3d(0, 0, 1), new Vector3d(30, 1, 5), new Vector3d(10, 150, 20));
-            StateDerivative k = model.Derivative(start);
+            StateDerivative k = FlightKernel.DerivativeOf(model, start);
             FlightState state = start;
             int evaluations = 1;
             for (int i = 0; i < 100; i++)
@@ -878,7 +880,7 @@ namespace MagnusBall.Tests.Integration
             Action steps = () =>
             {
                 end = start;
-                StateDerivative k = model.Derivative(start);
+                StateDerivative k = FlightKernel.DerivativeOf(model, start);
                 RungeKutta4.Instance.Advance(model, ref end, ref k, 1.0 / 240, 480);
             };
             long allocated = Allocation.SteadyStateBytes(steps);

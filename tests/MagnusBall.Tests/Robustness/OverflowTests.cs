@@ -6,6 +6,8 @@ using MagnusBall.Integration;
 using MagnusBall.Queries;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Robustness
 {
     /// <summary>
@@ -33,7 +35,7 @@ namespace MagnusBall.Tests.Robustness
             foreach (Vector3d spin in new[] { new Vector3d(1e-310, 0, 0), new Vector3d(5e-324, 0, 0), new Vector3d(0, -1e-200, 3e-160), new Vector3d(1e-150, 0, 0) })
             {
                 var state = new FlightState(spinless.Position, spinless.Velocity, spin);
-                StateDerivative kernel = model.Kernel.Derivative(state);
+                StateDerivative kernel = FlightKernel.Of(model).Derivative(state);
                 Assert.That(kernel.Acceleration, Is.EqualTo(k0.Acceleration), $"kernel derivative at w = {spin}");
                 Assert.That(model.GeneralDerivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"general formula at w = {spin}");
                 FlightState next = ((IIntegrator)MagnusBall.Integration.RungeKutta4.Instance).Step(model, state, model.Derivative(state), 1.0 / 240, out StateDerivative end, out _);
@@ -156,7 +158,7 @@ namespace MagnusBall.Tests.Robustness
             {
                 StateDerivative k0 = model.Derivative(spinless);
                 FlightState expected = ((IIntegrator)RungeKutta4.Instance).Step(model, spinless, k0, 1.0 / 240, out _, out _);
-                Assert.That(model.Kernel.Derivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"{model.Lift} kernel");
+                Assert.That(FlightKernel.Of(model).Derivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"{model.Lift} kernel");
                 Assert.That(model.GeneralDerivative(state).Acceleration, Is.EqualTo(k0.Acceleration), $"{model.Lift} general formula");
                 FlightState next = ((IIntegrator)RungeKutta4.Instance).Step(model, state, model.Derivative(state), 1.0 / 240, out _, out _);
                 Assert.That(next.Velocity, Is.EqualTo(expected.Velocity), $"{model.Lift} RK4");

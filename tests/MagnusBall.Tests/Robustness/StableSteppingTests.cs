@@ -3,6 +3,8 @@ using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 using NUnit.Framework;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Tests.Robustness
 {
     /// <summary>The stability criterion: what it costs in the common case, what it does at the extremes, its arguments.</summary>
@@ -20,14 +22,14 @@ namespace MagnusBall.Tests.Robustness
         {
             FlightModel model = Tennis();
             FlightState state = Drive();
-            StateDerivative k1 = model.Derivative(state);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
             FlightState safe = StableStepping.Step(RungeKutta4.Instance, model, state, k1, 1.0 / 240, out StateDerivative end, out int substeps);
             FlightState raw = ((IIntegrator)RungeKutta4.Instance).Step(model, state, k1, 1.0 / 240);
 
             Assert.That(substeps, Is.EqualTo(1));
             Assert.That(safe.Position, Is.EqualTo(raw.Position));
             Assert.That(safe.Velocity, Is.EqualTo(raw.Velocity));
-            Assert.That(end.Acceleration, Is.EqualTo(model.Derivative(safe).Acceleration), "the end derivative is handed back");
+            Assert.That(end.Acceleration, Is.EqualTo(FlightKernel.DerivativeOf(model, safe).Acceleration), "the end derivative is handed back");
             Assert.That(((IIntegrator)StableIntegrator.RungeKutta4).Step(model, state, k1, 1.0 / 240).Position, Is.EqualTo(raw.Position));
             Assert.That(((IIntegrator)StableIntegrator.RungeKutta4).Name, Is.EqualTo("stable-rk4"));
         }
@@ -93,7 +95,7 @@ namespace MagnusBall.Tests.Robustness
         {
             var model = new FlightModel(new Ball(0.12, 0.25), Air.SeaLevel, Gravity.ZUp, new ConstantDrag(0.47));
             var state = new FlightState(default, new Vector3d(100, 0, 0), default);
-            StateDerivative k1 = model.Derivative(state);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
             double sigma = StableStepping.StiffnessRate(model, state, 0.25);
             Assert.That(StableStepping.SubstepCount(model, state, 0.25), Is.EqualTo((int)Math.Ceiling(0.25 * sigma)));
             Assert.That(StableStepping.SubstepCount(model, state, 0.25, 0.5), Is.EqualTo((int)Math.Ceiling(0.25 * sigma / 0.5)));
@@ -120,7 +122,7 @@ namespace MagnusBall.Tests.Robustness
             Action steps = () =>
             {
                 state = Drive(); // the same start every run
-                StateDerivative k1 = model.Derivative(state);
+                StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
                 for (int i = 0; i < 1000; i++)
                 {
                     state = StableStepping.Step(RungeKutta4.Instance, model, state, k1, 1.0 / 60, out k1, out _);
@@ -135,7 +137,7 @@ namespace MagnusBall.Tests.Robustness
         {
             FlightModel model = Tennis();
             FlightState state = Drive();
-            StateDerivative k1 = model.Derivative(state);
+            StateDerivative k1 = FlightKernel.DerivativeOf(model, state);
             Assert.That(() => StableStepping.Step(null!, model, state, k1, 0.01, out _, out _), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("integrator"));
             Assert.That(() => StableStepping.Step(RungeKutta4.Instance, null!, state, k1, 0.01, out _, out _), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("model"));
             Assert.That(() => StableStepping.Step(RungeKutta4.Instance, model, state, k1, -0.01, out _, out _), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("step"));

@@ -7,6 +7,8 @@ using MagnusBall.Aerodynamics;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Batch
 {
     /// <summary>
@@ -90,7 +92,7 @@ namespace MagnusBall.Batch
             _startsFlight = new bool[length];
             _diverged = new bool[length];
             _landing = new FlightState[length];
-            if (model.Kernel.RunsUserCode)
+            if (FlightKernel.Of(model).RunsUserCode)
             {
                 _saved = new SavedBall[length];
             }
@@ -241,7 +243,7 @@ namespace MagnusBall.Batch
 
         private void Place(int index, in FlightState state)
         {
-            StateDerivative derivative = Model.Derivative(state);
+            StateDerivative derivative = FlightKernel.DerivativeOf(Model, state);
             Store(index, state, derivative);
             _active[index] = -1;
             _startsFlight[index] = true;
@@ -266,7 +268,7 @@ namespace MagnusBall.Batch
         private void StepScalar(int i, double step)
         {
             Load(i, out FlightState start, out StateDerivative k1);
-            FlightState end = Model.Kernel.RungeKutta4(start, k1, step, out StateDerivative k);
+            FlightState end = FlightKernel.Of(Model).RungeKutta4(start, k1, step, out StateDerivative k);
             Finish(i, start, k1, end, k);
         }
 
@@ -328,7 +330,7 @@ namespace MagnusBall.Batch
             Load(i, out FlightState state, out StateDerivative k1);
             for (int n = 0; n < count; n++)
             {
-                FlightState end = Model.Kernel.RungeKutta4(state, k1, step, out StateDerivative k);
+                FlightState end = FlightKernel.Of(Model).RungeKutta4(state, k1, step, out StateDerivative k);
                 if (!FlightStepper.Takes(state, end, k) || !_landingEvents.SurelyClear(state, k1, end, k))
                 {
                     // A refused step, or one that may hold the landing: the whole of Finish, which stores the ball, and which,

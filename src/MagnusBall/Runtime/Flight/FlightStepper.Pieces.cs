@@ -7,6 +7,8 @@ using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Flight
 {
     public sealed partial class FlightStepper
@@ -278,7 +280,7 @@ namespace MagnusBall.Flight
             }
 
             _now.State = leaving;
-            _now.Derivative = Model.Derivative(leaving);
+            _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
             _now.Evaluations++;
             return true;
         }

@@ -3,6 +3,8 @@
 // (Advance, FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
 using MagnusBall.Integration;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Flight
 {
     public sealed partial class FlightStepper
@@ -111,7 +113,7 @@ namespace MagnusBall.Flight
             Vector3d a = Model.Gravity;
             if (Model.HasAerodynamics)
             {
-                a = Model.Derivative(state).Acceleration;
+                a = FlightKernel.DerivativeOf(Model, state).Acceleration;
                 _now.Evaluations++;
             }
 

@@ -8,6 +8,8 @@ using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
 using MagnusBall.Integration;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Flight
 {
     /// <summary>How a ball moves: flying, rolling on a contact surface, or stopped.</summary>
@@ -252,7 +254,7 @@ namespace MagnusBall.Flight
             bool started = _started, implicitSegment = _implicitSegment;
             FlightEvent stopEvent = _stopEvent;
             // Evaluated before anything changes: a user's law that throws leaves the flight as it was.
-            StateDerivative derivative = Model.Derivative(state);
+            StateDerivative derivative = FlightKernel.DerivativeOf(Model, state);
             if (zeroCounters)
             {
                 _now = default;

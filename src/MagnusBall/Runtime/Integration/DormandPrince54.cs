@@ -1,6 +1,8 @@
 using System;
 using System.Runtime.CompilerServices;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     /// <summary>
@@ -93,7 +95,7 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             DormandPrince54Stages stages = default;
-            if (!model.Kernel.DormandPrince54(state, derivative, step, ref stages))
+            if (!FlightKernel.Of(model).DormandPrince54(state, derivative, step, ref stages))
             {
                 GeneralStages(model, state, derivative, step, ref stages);
             }
@@ -113,7 +115,7 @@ namespace MagnusBall.Integration
         /// </summary>
         /// <param name="model">The flight model.</param>
         /// <param name="state">The start state; every component finite.</param>
-        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="derivative">FlightKernel.DerivativeOf(model, state).</param>
         /// <param name="step">The step to try, s; finite and &gt; 0.</param>
         /// <param name="result">The outcome (see above).</param>
         /// <returns>True when the estimated error is within the tolerances and the step was taken.</returns>
@@ -138,7 +140,7 @@ namespace MagnusBall.Integration
             result.Start = state;
             result.StartDerivative = derivative;
             // From here on the step's own copies of the start (the arguments may be the result's own fields).
-            if (!model.Kernel.DormandPrince54(result.Start, result.StartDerivative, step, ref result.Stages))
+            if (!FlightKernel.Of(model).DormandPrince54(result.Start, result.StartDerivative, step, ref result.Stages))
             {
                 // A stage's rates may not be finite, so FlightModel.Derivative may take its scaled path: the step through it.
                 GeneralStages(model, result.Start, result.StartDerivative, step, ref result.Stages);
@@ -244,7 +246,7 @@ namespace MagnusBall.Integration
         /// </summary>
         /// <param name="model">The flight model.</param>
         /// <param name="state">The start state; every component finite.</param>
-        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="derivative">FlightKernel.DerivativeOf(model, state).</param>
         /// <param name="maximumStep">The largest step to return, s; finite and &gt; 0.</param>
         /// <returns>A step in (0, maximumStep].</returns>
         /// <exception cref="ArgumentException">The state is not finite or maximumStep is out of range.</exception>
@@ -259,7 +261,7 @@ namespace MagnusBall.Integration
             h0 = Math.Min(h0, maximumStep);
 
             FlightState trial = state.Advance(derivative, h0);
-            StateDerivative f1 = model.Derivative(trial);
+            StateDerivative f1 = FlightKernel.DerivativeOf(model, trial);
             double d2 = 0, unused = 0;
             Accumulate(state, Difference(f1, derivative), ref unused, ref d2);
             d2 = Math.Sqrt(d2 / 9) / h0;
@@ -275,7 +277,7 @@ namespace MagnusBall.Integration
         {
             Stages(model, y, k1, h, out StateDerivative k2, out StateDerivative k3, out StateDerivative k4, out StateDerivative k5, out StateDerivative k6);
             FlightState end = Combine(y, h, k1, k3, k4, k5, k6, B1, B3, B4, B5, B6, h);
-            StateDerivative k7 = model.Derivative(end);
+            StateDerivative k7 = FlightKernel.DerivativeOf(model, end);
             stages.End = end;
             stages.K2.Set(k2);
             stages.K3.Set(k3);
@@ -297,11 +299,11 @@ namespace MagnusBall.Integration
             out StateDerivative k5,
             out StateDerivative k6)
         {
-            k2 = model.Derivative(y.Advance(k1, A21 * h));
-            k3 = model.Derivative(Combine(y, h, k1, k2, A31, A32, C3 * h));
-            k4 = model.Derivative(Combine(y, h, k1, k2, k3, A41, A42, A43, C4 * h));
-            k5 = model.Derivative(Combine(y, h, k1, k2, k3, k4, A51, A52, A53, A54, C5 * h));
-            k6 = model.Derivative(Combine(y, h, k1, k2, k3, k4, k5, A61, A62, A63, A64, A65, h));
+            k2 = FlightKernel.DerivativeOf(model, y.Advance(k1, A21 * h));
+            k3 = FlightKernel.DerivativeOf(model, Combine(y, h, k1, k2, A31, A32, C3 * h));
+            k4 = FlightKernel.DerivativeOf(model, Combine(y, h, k1, k2, k3, A41, A42, A43, C4 * h));
+            k5 = FlightKernel.DerivativeOf(model, Combine(y, h, k1, k2, k3, k4, A51, A52, A53, A54, C5 * h));
+            k6 = FlightKernel.DerivativeOf(model, Combine(y, h, k1, k2, k3, k4, k5, A61, A62, A63, A64, A65, h));
         }
 
         // y + h (a k_a + b k_b), with time advanced by dt.

@@ -1,6 +1,8 @@
 using System;
 using System.Runtime.CompilerServices;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     /// <summary>

@@ -1,3 +1,5 @@
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     /// <summary>
@@ -33,7 +35,7 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             FlightState end = state.Advance(derivative, step);
-            endDerivative = model.Derivative(end);
+            endDerivative = FlightKernel.DerivativeOf(model, end);
             evaluations = 1;
             return end;
         }
@@ -77,7 +79,7 @@ namespace MagnusBall.Integration
                 velocity,
                 state.AngularVelocity + derivative.AngularAcceleration * step,
                 state.Time + step);
-            endDerivative = model.Derivative(end);
+            endDerivative = FlightKernel.DerivativeOf(model, end);
             evaluations = 1;
             return end;
         }

@@ -4,6 +4,8 @@
 using System;
 using System.Runtime.CompilerServices;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     internal readonly partial struct HermiteSegment

@@ -1,6 +1,8 @@
 using System;
 using System.Runtime.CompilerServices;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     /// <summary>
@@ -33,7 +35,7 @@ namespace MagnusBall.Integration
         /// <summary>Advances <paramref name="state"/> by <paramref name="step"/> seconds.</summary>
         /// <param name="model">The flight model (the right-hand side).</param>
         /// <param name="state">The state at the start of the step; every component finite.</param>
-        /// <param name="derivative">model.Derivative(state), the derivative at the start of the step (not checked: it is the model's, finite
+        /// <param name="derivative">FlightKernel.DerivativeOf(model, state), the derivative at the start of the step (not checked: it is the model's, finite
         /// for any finite state whose forces fit in a double; a non-finite one gives a non-finite result, which the flight core refuses).</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="endDerivative">model.Derivative of the returned state (evaluated once, here).</param>
@@ -65,7 +67,7 @@ namespace MagnusBall.Integration
         {
             Require.NotNull(integrator, nameof(integrator));
             StepArguments.Check(model, state, step);
-            return integrator.Step(model, state, model.Derivative(state), step, out _, out _);
+            return integrator.Step(model, state, FlightKernel.DerivativeOf(model, state), step, out _, out _);
         }
 
         /// <summary>
@@ -75,7 +77,7 @@ namespace MagnusBall.Integration
         /// <param name="integrator">The method.</param>
         /// <param name="model">The flight model.</param>
         /// <param name="state">The start state; every component finite.</param>
-        /// <param name="derivative">model.Derivative(state).</param>
+        /// <param name="derivative">FlightKernel.DerivativeOf(model, state).</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
         public static FlightState Step(this IIntegrator integrator, FlightModel model, in FlightState state, in StateDerivative derivative, double step)

@@ -1,5 +1,7 @@
 using System.Runtime.CompilerServices;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Integration
 {
     /// <summary>
@@ -34,7 +36,7 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             evaluations = 2;
-            return model.Kernel.Heun(state, derivative, step, out endDerivative);
+            return FlightKernel.Of(model).Heun(state, derivative, step, out endDerivative);
         }
     }
 
@@ -73,7 +75,7 @@ namespace MagnusBall.Integration
         {
             StepArguments.Check(model, state, step);
             evaluations = Evaluations;
-            return model.Kernel.RungeKutta4(state, derivative, step, out endDerivative);
+            return FlightKernel.Of(model).RungeKutta4(state, derivative, step, out endDerivative);
         }
 
         /// <summary>
@@ -93,14 +95,14 @@ namespace MagnusBall.Integration
         /// (<c>FlightStepper</c>, <c>FixedStepDriver</c>, <c>TrajectoryPredictor</c>).
         /// </summary>
         /// <remarks>
-        /// <paramref name="derivative"/> must be model.Derivative(state): it is not checked, and a stale one (default, or
+        /// <paramref name="derivative"/> must be FlightKernel.DerivativeOf(model, state): it is not checked, and a stale one (default, or
         /// the derivative before the game moved the ball, bounced or kicked it) gives a wrong first step without any error.
-        /// After changing the state yourself, evaluate model.Derivative(state) again. A return value below
+        /// After changing the state yourself, evaluate FlightKernel.DerivativeOf(model, state) again. A return value below
         /// <paramref name="count"/> means the flight diverged; check it.
         /// </remarks>
         /// <param name="model">The flight model (the right-hand side).</param>
         /// <param name="state">On entry the start state, every component finite; on return the state after the steps taken.</param>
-        /// <param name="derivative">On entry model.Derivative(state); on return the derivative at the returned state (pass
+        /// <param name="derivative">On entry FlightKernel.DerivativeOf(model, state); on return the derivative at the returned state (pass
         /// both into the next call).</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <param name="count">The steps to take, 0 to <see cref="MaximumAdvanceSteps"/>.</param>
@@ -122,7 +124,7 @@ namespace MagnusBall.Integration
                     nameof(count), count, $"count must be in [0, {MaximumAdvanceSteps}] steps; got {count}.");
             }
 
-            return model.Kernel.RungeKutta4Advance(ref state, ref derivative, step, count);
+            return FlightKernel.Of(model).RungeKutta4Advance(ref state, ref derivative, step, count);
         }
 
         /// <summary>
@@ -134,6 +136,6 @@ namespace MagnusBall.Integration
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static void StepCheckedInto(
             FlightModel model, in FlightState state, in StateDerivative derivative, double step, out FlightState next, out StateDerivative endDerivative) =>
-            model.Kernel.RungeKutta4Into(state, derivative, step, out next, out endDerivative);
+            FlightKernel.Of(model).RungeKutta4Into(state, derivative, step, out next, out endDerivative);
     }
 }

@@ -2,6 +2,8 @@
 // a lane whose step may hold a landing is finished through the scalar path's Finish. The batch itself and the scalar lanes are in BallBatch.cs.
 using System.Numerics;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Batch
 {
     public sealed partial class BallBatch

@@ -5,7 +5,7 @@ using System.Runtime.CompilerServices;
 using MagnusBall.Integration;
 using DP = MagnusBall.Integration.DormandPrince54;
 
-namespace MagnusBall
+namespace MagnusBall.Integration.Kernels
 {
     internal sealed partial class FlightKernel<TDrag, TLift, TDecay>
     {

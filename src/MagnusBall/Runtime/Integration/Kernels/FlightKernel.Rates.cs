@@ -5,7 +5,7 @@
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
 
-namespace MagnusBall
+namespace MagnusBall.Integration.Kernels
 {
     internal sealed partial class FlightKernel<TDrag, TLift, TDecay>
     {

@@ -2,6 +2,8 @@ using System.Numerics;
 using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
 
+using MagnusBall.Integration.Kernels;
+
 namespace MagnusBall.Batch
 {
     /// <summary>

@@ -9,7 +9,7 @@ using System.Runtime.CompilerServices;
 using MagnusBall.Aerodynamics;
 using MagnusBall.Integration;
 
-namespace MagnusBall
+namespace MagnusBall.Integration.Kernels
 {
     /// <summary>
     /// The flight ODE specialised for one <see cref="FlightModel"/>'s coefficient laws: picked once when the model is
@@ -20,6 +20,32 @@ namespace MagnusBall
     {
         /// <summary>The test hook behind <see cref="FlightModel.CountedEvaluations"/>: null in every shipped use.</summary>
         internal EvaluationCount? Counter;
+
+        /// <summary>
+        /// The kernel of <paramref name="model"/>: built on first use (<see cref="FlightKernelFactory"/>) and kept on the model,
+        /// so every later call is a field read. Two threads that build it at once build equal kernels; either may be kept.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static FlightKernel Of(FlightModel model) => model.Specialised as FlightKernel ?? Build(model);
+
+        /// <summary>
+        /// The right-hand side through <paramref name="model"/>'s kernel, with the general formula's scaled form where the plain
+        /// one overflows (speeds past about 1e150 m/s): what every integrator and flight evaluates, the spec
+        /// (<see cref="FlightModel.Derivative"/>) bit for bit except in the kernel's folded form.
+        /// </summary>
+        internal static StateDerivative DerivativeOf(FlightModel model, in FlightState state)
+        {
+            StateDerivative d = Of(model).Derivative(state);
+            return d.Acceleration.IsFinite && d.AngularAcceleration.IsFinite ? d : model.ScaledDerivative(state);
+        }
+
+        private static FlightKernel Build(FlightModel model)
+        {
+            FlightKernel kernel = FlightKernelFactory.Create(model);
+            kernel.Counter = model.CountedEvaluations;
+            model.Specialised = kernel;
+            return kernel;
+        }
 
         /// <summary>What a drag or lift law that reads nothing (Reads == None: a constant coefficient) is given.</summary>
         private protected static readonly AeroConditions NoConditions = default;
