@@ -37,20 +37,6 @@ namespace MagnusBall
         }
 
         /// <summary>
-        /// A copy of <paramref name="state"/> read and written one number at a time, for a state the kernel has just written
-        /// number by number. A plain struct copy reads it with wide loads (CoreCLR copies 80 bytes with a 64-byte register on
-        /// AVX-512 hardware, 32-byte ones on AVX2), and a load wider than the stores it reads cannot take their values on
-        /// the way to memory: it waits until they are written, on the flight's dependent chain (RungeKutta4.Advance with a
-        /// count of 1 on the thesis model: 18 % slower with the plain copy, docs/performance.md). Same bits.
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static FlightState CopyOf(in FlightState state) => new FlightState(
-            new Vector3d(state.Position.X, state.Position.Y, state.Position.Z),
-            new Vector3d(state.Velocity.X, state.Velocity.Y, state.Velocity.Z),
-            new Vector3d(state.AngularVelocity.X, state.AngularVelocity.Y, state.AngularVelocity.Z),
-            state.Time);
-
-        /// <summary>
         /// Creates a state after checking that every number is finite.
         /// </summary>
         /// <param name="position">Position, m (finite).</param>
@@ -121,13 +107,6 @@ namespace MagnusBall
             Acceleration = acceleration;
             AngularAcceleration = angularAcceleration;
         }
-
-        /// <summary>As <see cref="FlightState.CopyOf"/>: a copy one number at a time, for a derivative just written so.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        internal static StateDerivative CopyOf(in StateDerivative derivative) => new StateDerivative(
-            new Vector3d(derivative.Velocity.X, derivative.Velocity.Y, derivative.Velocity.Z),
-            new Vector3d(derivative.Acceleration.X, derivative.Acceleration.Y, derivative.Acceleration.Z),
-            new Vector3d(derivative.AngularAcceleration.X, derivative.AngularAcceleration.Y, derivative.AngularAcceleration.Z));
 
         /// <summary>True when every component is finite.</summary>
         internal bool IsFinite

@@ -54,7 +54,7 @@ namespace MagnusBall.Integration.Kernels
         /// True under Mono and Unity's IL2CPP: take RK4's straight-line forms, for the thesis model's common case (see
         /// Rk4Straight) and for Stepanek's tennis laws folded in still air (Rk4StraightStepanek). RyuJIT keeps the chain in
         /// registers across the branches anyway, and measured the straight-line form 3-5 % slower; it folds this constant
-        /// away. Both forms give the same bits. The copy of RK4's end (FlightKernel's Deliver) picks its form by it too.
+        /// away. Both forms give the same bits.
         /// Compiled by Unity
         /// from the package's sources, it is Unity's own scripting-backend symbols (ENABLE_MONO, ENABLE_IL2CPP), fixed at
         /// compile time; the DLL built here asks the runtime for Mono's marker type instead, a reflection lookup that
@@ -209,83 +209,20 @@ namespace MagnusBall.Integration.Kernels
 
         internal override int RungeKutta4Advance(ref FlightState state, ref StateDerivative derivative, double step, int count)
         {
-            if (count <= 1)
+            // RK4's step repeated in place, stopping before a step whose end would not be finite.
+            for (int i = 0; i < count; i++)
             {
-                return count == 1 ? AdvanceOne(ref state, ref derivative, step) : 0;
-            }
-
-            // The first step straight from the caller's pair (no copy of it), then two pairs of locals in turn: each step
-            // writes the other pair (the outputs may not alias the inputs), so no state is copied between steps.
-            Rk4(state, derivative, step, out FlightState a, out StateDerivative ka);
-            if (!IsFinite(a, ka))
-            {
-                return 0;
-            }
-
-            int i = 1;
-            for (; i + 1 < count; i += 2)
-            {
-                Rk4(a, ka, step, out FlightState b, out StateDerivative kb);
-                if (!IsFinite(b, kb))
+                Rk4(state, derivative, step, out FlightState next, out StateDerivative end);
+                if (!IsFinite(next, end))
                 {
-                    break;
+                    return i;
                 }
 
-                Rk4(b, kb, step, out a, out ka);
-                if (!IsFinite(a, ka))
-                {
-                    Deliver(b, kb, ref state, ref derivative);
-                    return i + 1;
-                }
+                state = next;
+                derivative = end;
             }
 
-            if (i + 1 == count)
-            {
-                Rk4(a, ka, step, out FlightState b, out StateDerivative kb);
-                if (IsFinite(b, kb))
-                {
-                    Deliver(b, kb, ref state, ref derivative);
-                    return count;
-                }
-            }
-
-            Deliver(a, ka, ref state, ref derivative);
-            return i;
-        }
-
-        // Advance of one step (a game's one step a frame), apart: one pair of locals, where the loop's frame holds two (Mono
-        // zero-fills every struct local on entry). Thesis model under Mono: 480 calls of one step cost 212 ns a step through
-        // the loop's frame, 199 ns through this one, against 143 ns in one call.
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private int AdvanceOne(ref FlightState state, ref StateDerivative derivative, double step)
-        {
-            Rk4(state, derivative, step, out FlightState a, out StateDerivative ka);
-            if (!IsFinite(a, ka))
-            {
-                return 0;
-            }
-
-            Deliver(a, ka, ref state, ref derivative);
-            return 1;
-        }
-
-        // The caller's pair from a step's end, just written number by number by the step. Under RyuJIT copied number by number
-        // (FlightState.CopyOf: a plain copy's wide load waits for the step's stores to reach memory; with the plain copy, 480
-        // steps of one a call on the thesis model took 30.0-30.6 us against 25.2-26.1, docs/performance.md); under Mono the plain copy, which its
-        // JIT makes faster (the copy by numbers measured about 10 ns a call slower there). The same bits either way.
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Deliver(in FlightState end, in StateDerivative endDerivative, ref FlightState state, ref StateDerivative derivative)
-        {
-            if (PreferStraightLine)
-            {
-                state = end;
-                derivative = endDerivative;
-            }
-            else
-            {
-                state = FlightState.CopyOf(end);
-                derivative = StateDerivative.CopyOf(endDerivative);
-            }
+            return count;
         }
 
         // Every component of the state and its derivative finite (the derivative's velocity is the state's).
