@@ -151,6 +151,15 @@ namespace MagnusBall.Tests.GameTerms
         }
 
         [Test]
+        public void AShotAtTheSpeedOfLight_IsRefused_NotReportedAsALanding()
+        {
+            // RK4 (substepped) cannot fly a 2.7 g ball at 3e8 m/s: the flight diverges, and a landing of it would be a wrong answer.
+            var flyer = new ShotFlyer(SportPresets.TableTennis.CreateModel(Air.AtAltitude(0), Gravity.ZUp), ShotFrame.ZUp);
+            var e = Assert.Throws<ArgumentException>(() => flyer.Fly(ShotLaunch.ByEffect(Speed.FromMetresPerSecond(3e8), 10), 0, 0, 1));
+            Assert.That(e!.ParamName, Is.EqualTo("launch"));
+        }
+
+        [Test]
         public void Judges_RefuseNull()
         {
             Assert.That(Assert.Throws<ArgumentNullException>(() => TennisCourt.Judge(null!))!.ParamName, Is.EqualTo("flight"));

@@ -8,8 +8,9 @@ namespace MagnusBall.Shots
     /// <summary>
     /// Flies shots given in game terms (<see cref="ShotLaunch"/>) in a <see cref="ShotFrame"/> and reports them in game terms:
     /// a <see cref="FlightSummary"/> for any sport, a <see cref="PitchResult"/> (plate crossing and Statcast's break) for a
-    /// baseball pitch. Each call allocates its result and a sample buffer; for per-frame work use
-    /// <see cref="TrajectoryPredictor"/> with <see cref="LaunchState"/>.
+    /// baseball pitch. Each call allocates its result (the summary keeps the flight's samples for
+    /// <see cref="FlightSummary.TryCross"/>); for per-frame work use <see cref="TrajectoryPredictor"/> with
+    /// <see cref="LaunchState"/>. A flyer reuses one sample buffer between calls, so it is not thread-safe: create one per thread.
     /// </summary>
     /// <remarks>
     /// The flight is stepped with RK4 at 1/240 s (substepped where a light, fast ball would need it), which puts a landing
@@ -21,6 +22,7 @@ namespace MagnusBall.Shots
         private const double Step = 1.0 / 240, MaxDurationSeconds = 20;
         private readonly FlightModel _model;
         private readonly ShotFrame _frame;
+        private FlightState[]? _samples; // reused between calls: 20 s at 1/240 s, 0.4 MB
 
         /// <summary>Creates a flyer for <paramref name="model"/> (for example <c>SportPresets.Golf.CreateModel(air, gravity)</c>) in <paramref name="frame"/>.</summary>
         /// <param name="model">The flight model.</param>
@@ -59,7 +61,7 @@ namespace MagnusBall.Shots
         /// <param name="upMetres">Height of the ball's centre above the ground, m; finite (the ball's radius for a ball on the ground).</param>
         /// <returns>Carry, apex, flight time, landing angle and speed, side and curve.</returns>
         /// <exception cref="ArgumentOutOfRangeException">A coordinate is not finite.</exception>
-        /// <exception cref="InvalidOperationException">The flight diverged (a speed far beyond any ball's, near the speed of light).</exception>
+        /// <exception cref="ArgumentException">The flight diverged (a speed far beyond any ball's, near the speed of light); the message names launch.</exception>
         public FlightSummary Fly(ShotLaunch launch, double forwardMetres = 0, double rightMetres = 0, double upMetres = 0)
         {
             FlightState start = LaunchState(launch, forwardMetres, rightMetres, upMetres);
@@ -79,7 +81,7 @@ namespace MagnusBall.Shots
         /// <param name="releaseUpMetres">Release height above the field, m; finite.</param>
         /// <returns>The plate crossing and the break; <see cref="PitchResult.CrossesPlate"/> false when it lands first.</returns>
         /// <exception cref="ArgumentOutOfRangeException">A coordinate is not finite.</exception>
-        /// <exception cref="InvalidOperationException">The flight diverged.</exception>
+        /// <exception cref="ArgumentException">The flight diverged; the message names launch.</exception>
         public PitchResult Pitch(ShotLaunch launch, double releaseForwardMetres, double releaseRightMetres, double releaseUpMetres)
         {
             FlightState release = LaunchState(launch, releaseForwardMetres, releaseRightMetres, releaseUpMetres);
@@ -102,13 +104,14 @@ namespace MagnusBall.Shots
         {
             var ground = new Plane(_frame.At(0, 0, model.Ball.Radius), _frame.Up);
             var predictor = new TrajectoryPredictor(model, StableIntegrator.RungeKutta4, Step, new FlightEventSet(model.Up, ground, planes));
-            var samples = new FlightState[(int)(MaxDurationSeconds / Step) + 2];
+            FlightState[] samples = _samples ??= new FlightState[(int)(MaxDurationSeconds / Step) + 2];
             var events = new FlightEvent[16];
             Prediction p = predictor.Predict(start, MaxDurationSeconds, samples, events);
             if (p.Diverged || p.TimeCannotAdvance)
             {
-                throw new InvalidOperationException(
-                    $"the flight from {start} could not be flown ({(p.Diverged ? "it diverged" : "its time cannot advance")}): a speed or time far beyond any ball's.");
+                throw new ArgumentException(
+                    $"launch must be a flight that can be flown: from {start} it {(p.Diverged ? "diverged" : "could not advance its time")}, " +
+                    $"a speed of {start.Velocity.Length:R} m/s is far beyond any ball's (see SportLimits).", "launch");
             }
 
             crossing = null;
