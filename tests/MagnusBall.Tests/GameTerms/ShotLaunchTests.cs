@@ -23,15 +23,20 @@ namespace MagnusBall.Tests.GameTerms
         }
 
         [Test]
-        public void TheSameShot_FliesTheSame_InZUpAndUnitysYUp()
+        public void TheSameShot_FliesTheSame_InZUp_UnitysYUp_AndGodotsYUp()
         {
             // Up, forward and right are axes of either frame, so the two flights are the same arithmetic on permuted
             // components: equal to rounding (1e-9 m on a 20 m flight leaves room for a different order of sums).
             ShotLaunch launch = ShotLaunch.ByEffect(Speed.FromKilometresPerHour(120), 8, directionDegrees: 5, topspinRpm: 2500, sidespinRpm: 800);
             FlightSummary z = Tennis(false).Fly(launch, -0.5, 0, 1);
             FlightSummary y = Tennis(true).Fly(launch, -0.5, 0, 1);
+            // Godot: right-handed y-up, forward -z, right +x, with the origin moved off zero.
+            var godotFrame = new ShotFrame(Vector3d.UnitY, -Vector3d.UnitZ, Vector3d.UnitX, new Vector3d(3, 0, -7));
+            FlightSummary g = new ShotFlyer(SportPresets.Tennis.CreateModel(Air.AtAltitude(0), Gravity.YUp), godotFrame).Fly(launch, -0.5, 0, 1);
             Assert.Multiple(() =>
             {
+                Assert.That(g.CarryMetres, Is.EqualTo(z.CarryMetres).Within(1e-9));
+                Assert.That(g.CurveMetres, Is.EqualTo(z.CurveMetres).Within(1e-9));
                 Assert.That(y.CarryMetres, Is.EqualTo(z.CarryMetres).Within(1e-9));
                 Assert.That(y.SideMetres, Is.EqualTo(z.SideMetres).Within(1e-9));
                 Assert.That(y.CurveMetres, Is.EqualTo(z.CurveMetres).Within(1e-9));
