@@ -27,9 +27,9 @@ namespace MagnusBall.Cli
         /// <summary>Most elevation-scan trials one aim may ask for ((maximum - minimum elevation) / elevationScanDegrees): 10,000.</summary>
         public const int MaxScanTrials = 10_000;
 
-        private sealed record AimRequest(string Name, string Path, AimSolver Solver, Vector3d Position, LaunchSpin Spin, Func<AimSolver, AimSolution> Solve);
+        private sealed record AimRequest(string Name, string Path, AimSolver Solver, Vector3d Position, LaunchSpin Spin, Func<AimSolver, AimSolution> Solve, IReadOnlyList<string> Warnings);
 
-        public static string Run(string json)
+        public static string Run(string json, TextWriter? warnings = null)
         {
             var requests = Read(json);
             var solutions = new List<(AimRequest Request, AimSolution Solution)>();
@@ -49,7 +49,17 @@ namespace MagnusBall.Cli
                 solutions.Add((request, solution));
             }
 
-            return Write(solutions);
+            string output = Write(solutions);
+            if (warnings != null)
+            {
+                // Only with a result, after every solve: an input error stays the one line on stderr.
+                foreach (AimRequest request in requests)
+                {
+                    Program.WriteWarnings(warnings, request.Warnings);
+                }
+            }
+
+            return output;
         }
 
         private static List<AimRequest> Read(string json)
@@ -185,9 +195,14 @@ namespace MagnusBall.Cli
             // launch is refused, as simulate refuses it (its trials would diverge or fly a wrong path and the
             // solve would print "unreachable" for a target stable-rk4 reaches). The check takes the fastest launch
             // the request can make (speed-to-reach: maximumSpeed) into the wind, with the whole spin.
+            // The unit-mistake warnings take the launch's speed (not speed-to-reach's search bound, which the user may leave at its default).
+            FlightState fastest = FastestLaunch(setup.Model, position, launchSpeed, spin);
             StabilityCheck.Require(
-                StabilityCheck.For(setup.Integrator), setup.Integrator, setup.Model, FastestLaunch(setup.Model, position, launchSpeed, spin), setup.Step, a.PathOf("step"));
-            return new AimRequest(name, a.Path, solver, position, spin, solve);
+                StabilityCheck.For(setup.Integrator), setup.Integrator, setup.Model, fastest, setup.Step, a.PathOf("step"));
+            IReadOnlyList<string> warnings = SportWarnings.For(
+                setup.Preset, setup.Model.Ball, kind == "speed-to-reach" ? 0 : launchSpeed, fastest.AngularVelocity.Length, a.PathOf("ball"),
+                find.PathOf("speed"), launch.PathOf("spin"));
+            return new AimRequest(name, a.Path, solver, position, spin, solve, warnings);
         }
 
         /// <summary>

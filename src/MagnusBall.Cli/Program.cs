@@ -26,11 +26,48 @@ namespace MagnusBall.Cli
             "  magnusball simulate FILE [--csv] [--samples N] [--svg OUT.svg [--svg-view side|top|both]]\n" +
             "  magnusball aim FILE\n" +
             "  magnusball --help | --version\n" +
-            "FILE is a JSON file (\"-\" reads standard input); see docs/cli.md for the formats.\n" +
+            "FILE is a JSON file (\"-\" reads standard input); run magnusball --help for the formats.\n" +
             "  --csv          print the trajectory as CSV instead of the JSON summary\n" +
             "  --samples N    N from 2 to 1000000 states evenly spaced in time (adds \"samples\" to the JSON; CSV rows)\n" +
             "  --svg OUT.svg  also draw side and top views of every scenario to OUT.svg\n" +
             "  --svg-view V   side, top or both (default both); only with --svg\n";
+
+        /// <summary>What --help prints: the usage, then the two file formats, the output and the exit codes.</summary>
+        internal const string Help =
+            "magnusball: flies spinning balls (gravity, drag, Magnus force) from JSON files.\n\n" +
+            Usage +
+            "\nsimulate FILE: {\"scenarios\": [ scenario, ... ]}; each scenario (SI units, vectors [x, y, z] in any frame):\n" +
+            "  name             string (default \"scenario-<index>\")\n" +
+            "  preset           tennis, tennis-free-flight, soccer, baseball, golf, golf-smits-smith, golf-bearman-harvey,\n" +
+            "                   golf-linear-2023, table-tennis, basketball: the ball, drag, lift and spin decay (each overridable)\n" +
+            "  ball             {\"mass\": kg, \"radius\": m, \"inertiaFactor\": 0.4}; required without a preset\n" +
+            "  air              {\"density\": 1.225, \"wind\": [0,0,0]} or {\"temperatureC\", \"pressurePa\", \"relativeHumidity\"}\n" +
+            "                   or {\"altitudeM\"}; \"windProfile\" for a logarithmic wind\n" +
+            "  gravity          [0, 0, -9.80665] (z up); [0, -9.80665, 0] for a y-up frame\n" +
+            "  aero             {\"drag\": {\"model\": none|constant (cd)|stepanek|linear-spin (cd0, k)|goff-carre|nathan},\n" +
+            "                    \"lift\": {\"model\": none|constant (cl)|stepanek|linear-spin (k)|goff-carre|nathan|smits-smith-golf|table (points)}}\n" +
+            "  spinDecay        {\"model\": none|exponential (tau)|speed-proportional (k)}\n" +
+            "  initial          {\"position\": m, \"velocity\": m/s, \"angularVelocity\": rad/s, \"time\": s}; position and velocity required\n" +
+            "  integrator       euler, semi-implicit-euler, heun, rk4 (default), dp54, stable-rk4\n" +
+            "  step             s (default 1/240); a step beyond the method's stability bound is refused (exit 2)\n" +
+            "  maxTime          s (default 10)\n" +
+            "  ground           {\"point\", \"normal\"} (default: through the origin, normal up); null for none\n" +
+            "  planes           [{\"name\", \"point\", \"normal\", \"bounds\": {\"height\": [min, max], \"width\": [min, max]}}]\n" +
+            "output: {\"results\": [{\"name\", \"landing\": {time, position, velocity} or null, \"apex\", \"crossings\",\n" +
+            "  \"steps\", \"derivativeEvaluations\"}]}; with --csv: scenario,time,x,y,z,vx,vy,vz,wx,wy,wz\n" +
+            "\naim FILE: {\"aims\": [ aim, ... ]}; each aim has the flight fields above (not initial or planes) and\n" +
+            "  launch           {\"position\": m, \"spin\": {\"topspin\", \"sidespin\", \"gyro\"} in rad/s}\n" +
+            "  find             {\"kind\": minimum-elevation-to-clear (speed, plane {point, normal}, height, azimuthDegrees)\n" +
+            "                   | elevation-to-reach (speed, target, azimuthDegrees) | angles-to-reach (speed, target)\n" +
+            "                   | speed-to-reach (elevationDegrees, target, azimuthDegrees)}\n" +
+            "  limits           {\"minimumElevationDegrees\": -45, \"maximumElevationDegrees\": 80, \"elevationScanDegrees\": 0.5,\n" +
+            "                    \"maximumSpeed\": 100} (optional)\n" +
+            "output: {\"results\": [{\"name\", \"status\": solved|unreachable|work-limit-reached, \"speed\", \"elevationDegrees\",\n" +
+            "  \"azimuthDegrees\", \"arrival\", \"miss\", \"simulations\"}]}\n" +
+            "\nwarnings: with a preset, a ball's mass or radius, a launch speed or a spin rate outside what real balls of\n" +
+            "  that sport reach (a tennis ball of mass 57: grams?) prints one line on stderr per value; the exit code stays 0.\n" +
+            "exit codes: 0 success; 2 bad input or usage (one line on stderr naming the field by its JSON path);\n" +
+            "  1 anything else (an output file that cannot be written, an internal error).\n";
 
         /// <summary>The process entry point.</summary>
         /// <param name="args">The command-line arguments.</param>
@@ -56,15 +93,15 @@ namespace MagnusBall.Cli
                     case "-h":
                     case "--help":
                     case "help":
-                        stdout.Write(Usage);
+                        stdout.Write(Help);
                         return Success;
                     case "--version":
                         stdout.WriteLine(typeof(Program).Assembly.GetName().Version?.ToString(3) ?? "0.0.0");
                         return Success;
                     case "simulate":
-                        return Simulate(args, stdout, stdin);
+                        return Simulate(args, stdout, stderr, stdin);
                     case "aim":
-                        return Aim(args, stdout, stdin);
+                        return Aim(args, stdout, stderr, stdin);
                     default:
                         throw new UsageError($"unknown command '{args[0]}'; expected simulate or aim");
                 }
@@ -98,7 +135,7 @@ namespace MagnusBall.Cli
             }
         }
 
-        private static int Simulate(string[] args, TextWriter stdout, TextReader? stdin)
+        private static int Simulate(string[] args, TextWriter stdout, TextWriter stderr, TextReader? stdin)
         {
             string? file = null;
             bool csv = false;
@@ -208,18 +245,38 @@ namespace MagnusBall.Cli
             }
 
             stdout.Write(csv ? ResultWriter.Csv(results, samples) : ResultWriter.Json(results, samples));
+            // The unit-mistake warnings go out only with a result: an input error stays the one line on stderr.
+            foreach (Scenario scenario in scenarios)
+            {
+                WriteWarnings(stderr, scenario.Warnings);
+            }
+
             return Success;
         }
 
-        private static int Aim(string[] args, TextWriter stdout, TextReader? stdin)
+        private static int Aim(string[] args, TextWriter stdout, TextWriter stderr, TextReader? stdin)
         {
             if (args.Length != 2 || args[1].StartsWith("--", StringComparison.Ordinal) && args[1] != "-")
             {
                 throw new UsageError("aim takes exactly one FILE");
             }
 
-            stdout.Write(AimCommand.Run(ReadInput(args[1], stdin)));
+            stdout.Write(AimCommand.Run(ReadInput(args[1], stdin), stderr));
             return Success;
+        }
+
+        /// <summary>Writes each unit-mistake warning (<see cref="SportWarnings"/>) as one line on stderr.</summary>
+        internal static void WriteWarnings(TextWriter stderr, IReadOnlyList<string>? warnings)
+        {
+            if (warnings is null)
+            {
+                return;
+            }
+
+            foreach (string warning in warnings)
+            {
+                stderr.WriteLine("magnusball: warning: " + warning);
+            }
         }
 
         private static string Value(string[] args, ref int i, string option)

@@ -13,10 +13,11 @@ namespace MagnusBall.Cli
         double Step,
         NamedPlane? Ground,
         IReadOnlyList<NamedPlane> Planes,
-        double MaxTime);
+        double MaxTime,
+        IReadOnlyList<string>? Warnings = null);
 
     /// <summary>The flight parts a scenario and an aim share: the model, how to step it, the ground, the time limit.</summary>
-    internal sealed record FlightSetup(FlightModel Model, IIntegrator Integrator, double Step, NamedPlane? Ground, double MaxTime);
+    internal sealed record FlightSetup(FlightModel Model, IIntegrator Integrator, double Step, NamedPlane? Ground, double MaxTime, MagnusBall.Presets.SportPreset? Preset = null);
 
     /// <summary>
     /// A named plane through <paramref name="Point"/> with unit normal <paramref name="Normal"/>, and an

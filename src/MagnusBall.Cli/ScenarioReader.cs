@@ -98,7 +98,10 @@ namespace MagnusBall.Cli
             }
 
             s.RejectUnknown();
-            return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime);
+            IReadOnlyList<string> warnings = SportWarnings.For(
+                setup.Preset, setup.Model.Ball, initial.Velocity.Length, initial.AngularVelocity.Length,
+                s.PathOf("ball"), initialFields.PathOf("velocity"), initialFields.PathOf("angularVelocity"));
+            return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime, warnings);
         }
 
         /// <summary>
@@ -194,7 +197,7 @@ namespace MagnusBall.Cli
                 }
             }
 
-            return new FlightSetup(model, integrator, step, ground, maxTime);
+            return new FlightSetup(model, integrator, step, ground, maxTime, preset);
         }
 
         /// <summary>

@@ -52,7 +52,8 @@ namespace MagnusBall.Samples.TennisScene
     /// it: gravity is (0, -g, 0), positions and velocities are Unity's numbers unchanged, and spin is built by
     /// its effect (<see cref="MagnusBall.Spin.Topspin"/>, <see cref="MagnusBall.Spin.Toward"/>), which gives
     /// the right angular velocity in either handedness. Nothing is mirrored or sign-flipped anywhere.</para>
-    /// <para>Dimensions (ITF Rules of Tennis, rule 1 and appendix): 23.77 m long; 10.97 m wide (doubles),
+    /// <para>Dimensions (ITF Rules of Tennis, rule 1 and appendix; the ITF's figures are the library's data,
+    /// <c>MagnusBall.Shots.TennisCourt</c>): 23.77 m long; 10.97 m wide (doubles),
     /// 8.23 m (singles); service lines 6.40 m from the net; net 0.914 m high at the centre and 1.07 m at the
     /// posts, whose centres are 0.914 m outside the doubles sidelines. Measurements are to the outside of the
     /// lines, so a ball whose contact point touches a line is in.</para>
@@ -60,25 +61,25 @@ namespace MagnusBall.Samples.TennisScene
     public static class TennisCourt
     {
         /// <summary>Court length, baseline to baseline, m.</summary>
-        public const double Length = 23.77;
+        public const double Length = global::MagnusBall.Shots.TennisCourt.LengthMetres;
 
         /// <summary>Doubles court width, m.</summary>
-        public const double DoublesWidth = 10.97;
+        public const double DoublesWidth = global::MagnusBall.Shots.TennisCourt.DoublesWidthMetres;
 
         /// <summary>Singles court width, m.</summary>
-        public const double SinglesWidth = 8.23;
+        public const double SinglesWidth = global::MagnusBall.Shots.TennisCourt.SinglesWidthMetres;
 
         /// <summary>Distance of each service line from the net, m.</summary>
-        public const double ServiceLineFromNet = 6.40;
+        public const double ServiceLineFromNet = global::MagnusBall.Shots.TennisCourt.ServiceLineFromNetMetres;
 
         /// <summary>Net height at the centre strap, m.</summary>
-        public const double NetHeightAtCentre = 0.914;
+        public const double NetHeightAtCentre = global::MagnusBall.Shots.TennisCourt.NetHeightAtCentreMetres;
 
         /// <summary>Net height at the posts, m.</summary>
-        public const double NetHeightAtPosts = 1.07;
+        public const double NetHeightAtPosts = global::MagnusBall.Shots.TennisCourt.NetHeightAtPostsMetres;
 
         /// <summary>How far outside the doubles sideline each net post stands, m.</summary>
-        public const double PostOutsideDoubles = 0.914;
+        public const double PostOutsideDoubles = global::MagnusBall.Shots.TennisCourt.PostsOutsideDoublesMetres;
 
         /// <summary>Width of the lines, m (5 cm; the baseline may be up to 10 cm).</summary>
         public const double LineWidth = 0.05;
