@@ -201,8 +201,9 @@ namespace MagnusBall
         /// This is the spec: the textbook formula term by term, every law called through its public interface (see
         /// docs/architecture.md, "The spec"). The library's integrators and flights evaluate the same right-hand side
         /// through a kernel specialised for the model's laws (each built-in law a struct the JIT inlines, only the inputs
-        /// some law reads computed), which gives these bits except in its folded form, equal to them to rounding (within
-        /// a few ulp of the largest term): <see cref="StepanekLift"/> beside <see cref="StepanekDrag"/> in still air or a
+        /// some law reads computed), which gives these bits except in its two folded forms, equal to them to rounding
+        /// (within a few ulp of the largest term): a lift law that reads no spin parameter (a constant C_L, as in
+        /// <see cref="Thesis"/>), and <see cref="StepanekLift"/> beside <see cref="StepanekDrag"/> in still air or a
         /// uniform wind (the tennis presets). A conformance test holds every fast form to this method.
         /// </remarks>
         public StateDerivative Derivative(in FlightState state)

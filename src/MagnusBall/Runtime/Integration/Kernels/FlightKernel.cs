@@ -31,7 +31,7 @@ namespace MagnusBall.Integration.Kernels
         /// <summary>
         /// The right-hand side through <paramref name="model"/>'s kernel, with the general formula's scaled form where the plain
         /// one overflows (speeds past about 1e150 m/s): what every integrator and flight evaluates, the spec
-        /// (<see cref="FlightModel.Derivative"/>) bit for bit except in the kernel's folded form.
+        /// (<see cref="FlightModel.Derivative"/>) bit for bit except in the kernel's folded forms.
         /// </summary>
         internal static StateDerivative DerivativeOf(FlightModel model, in FlightState state)
         {
