@@ -7,7 +7,7 @@ namespace MagnusBall
     public static class Gravity
     {
         /// <summary>Standard acceleration of gravity, 9.80665 m/s^2 (CGPM 1901).</summary>
-        public const double Standard = 9.80665;
+        internal const double Standard = 9.80665;
 
         /// <summary>Standard gravity in a z-up frame (the thesis's): (0, 0, -9.80665) m/s^2.</summary>
         public static Vector3d ZUp => new Vector3d(0, 0, -Standard);

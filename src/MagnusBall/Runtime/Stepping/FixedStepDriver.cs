@@ -213,10 +213,10 @@ namespace MagnusBall.Stepping
         public bool Diverged => _diverged;
 
         /// <summary>Fixed steps taken since the last reset.</summary>
-        public long TotalSteps => _stepper.StepCount;
+        internal long TotalSteps => _stepper.StepCount;
 
         /// <summary>Bounces since the last reset.</summary>
-        public int Bounces => _stepper.BounceCount;
+        internal int Bounces => _stepper.BounceCount;
 
         /// <summary>Model evaluations since the last reset (counted by the flight core: each is one call of the model).</summary>
         internal long DerivativeEvaluations => _stepper.DerivativeEvaluations;
