@@ -1,6 +1,6 @@
 // FlightStepper, the one stepping loop: its public surface (state, counters, Reset, TryStep, StateAt) and the common step,
 // one piece with no event, taken at once (Steps -> IntegrateFixed -> Finish -> TakePlainStep). The main path starts at TryStep.
-// The other concerns, each in its own file: FlightStepper.Quiet.cs (TrySteps' run of quiet steps), FlightStepper.Pieces.cs
+// The other concerns, each in its own file: Integration/Kernels/FlightStepper.Quiet.cs (TrySteps' run of quiet steps, a fast form), FlightStepper.Pieces.cs
 // (the general step: pieces, events, bounces, stops), FlightStepper.Adaptive.cs (TryStepAdaptive and its retry),
 // FlightStepper.Rolling.cs (rolling and coming to rest on a contact surface).
 using System;

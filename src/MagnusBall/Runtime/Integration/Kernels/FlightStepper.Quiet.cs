@@ -1,4 +1,5 @@
-// FlightStepper, part: the quiet run (TrySteps), several common steps in one call, each handing its end to the next in
+// FlightStepper, part (a fast form: it lives with the others in Integration/Kernels, in its class's namespace, the flight
+// layer): the quiet run (TrySteps), several common steps in one call, each handing its end to the next in
 // three rotating slots and committed together; the first step that is not quiet is finished as TryStep's common step
 // (Finish, in FlightStepper.cs). The main path is TryStep in FlightStepper.cs.
 using System;
