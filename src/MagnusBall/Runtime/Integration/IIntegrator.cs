@@ -35,10 +35,13 @@ namespace MagnusBall.Integration
         /// <summary>Advances <paramref name="state"/> by <paramref name="step"/> seconds.</summary>
         /// <param name="model">The flight model (the right-hand side).</param>
         /// <param name="state">The state at the start of the step; every component finite.</param>
-        /// <param name="derivative">FlightKernel.DerivativeOf(model, state), the derivative at the start of the step (not checked: it is the model's, finite
-        /// for any finite state whose forces fit in a double; a non-finite one gives a non-finite result, which the flight core refuses).</param>
+        /// <param name="derivative">The derivative at the start of the step: model.Derivative(state), or the previous step's
+        /// <paramref name="endDerivative"/> (not checked: it is the model's, finite for any finite state whose forces fit in a
+        /// double; a non-finite one gives a non-finite result, which the flight core refuses).</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
-        /// <param name="endDerivative">model.Derivative of the returned state (evaluated once, here).</param>
+        /// <param name="endDerivative">The derivative at the returned state (evaluated once, here), to pass into the next step. The
+        /// built-in methods evaluate the model through a kernel specialised for its laws: model.Derivative's bits, except to
+        /// rounding where the kernel folds a constant lift or Stepanek's lift.</param>
         /// <param name="evaluations">The model evaluations this call made, the end derivative included.</param>
         /// <returns>The state at time state.Time + step. A step far beyond the method's stability limit can
         /// return a non-finite state or derivative; the caller decides (the flight core refuses such a step).</returns>
@@ -77,7 +80,7 @@ namespace MagnusBall.Integration
         /// <param name="integrator">The method.</param>
         /// <param name="model">The flight model.</param>
         /// <param name="state">The start state; every component finite.</param>
-        /// <param name="derivative">FlightKernel.DerivativeOf(model, state).</param>
+        /// <param name="derivative">The derivative at the start: model.Derivative(state), or the previous step's end derivative.</param>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
         /// <exception cref="ArgumentException">The state is not finite or the step is out of range.</exception>
         public static FlightState Step(this IIntegrator integrator, FlightModel model, in FlightState state, in StateDerivative derivative, double step)

@@ -169,7 +169,7 @@ namespace MagnusBall.Integration
     /// or the step the caller asks for.
     /// </summary>
     /// <remarks>
-    /// <para><b>Why.</b> Drag decelerates at k C_D s^2 (k = rho A / 2m, see <see cref="FlightModel.AerodynamicFactor"/>).
+    /// <para><b>Why.</b> Drag decelerates at k C_D s^2 (k = rho A / 2m).
     /// Linearised about the flight, its Jacobian has the eigenvalue -2 k C_D s along the velocity and -k C_D s
     /// across it; Magnus lift adds a rotation of rate about k |C_L| s. An explicit method is stable only while
     /// h |lambda| stays inside its stability region: 2 for explicit and semi-implicit Euler and Heun, 2.785 for

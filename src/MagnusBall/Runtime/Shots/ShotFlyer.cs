@@ -58,13 +58,14 @@ namespace MagnusBall.Shots
         /// <param name="launch">The launch.</param>
         /// <param name="forwardMetres">Launch point along forward from the frame's origin, m; finite.</param>
         /// <param name="rightMetres">Launch point to the right, m; finite.</param>
-        /// <param name="upMetres">Height of the ball's centre above the ground, m; finite (the ball's radius for a ball on the ground).</param>
+        /// <param name="upMetres">Height of the ball's centre above the ground, m; finite. Null (the default): the ball's radius, a ball
+        /// resting on the ground (a kick, a tee shot's ball on the turf).</param>
         /// <returns>Carry, apex, flight time, landing angle and speed, side and curve.</returns>
         /// <exception cref="ArgumentOutOfRangeException">A coordinate is not finite.</exception>
         /// <exception cref="ArgumentException">The flight diverged (a speed far beyond any ball's, near the speed of light); the message names launch.</exception>
-        public FlightSummary Fly(ShotLaunch launch, double forwardMetres = 0, double rightMetres = 0, double upMetres = 0)
+        public FlightSummary Fly(ShotLaunch launch, double forwardMetres = 0, double rightMetres = 0, double? upMetres = null)
         {
-            FlightState start = LaunchState(launch, forwardMetres, rightMetres, upMetres);
+            FlightState start = LaunchState(launch, forwardMetres, rightMetres, upMetres ?? _model.Ball.Radius);
             return Summarise(_model, start, Array.Empty<Plane>(), out _);
         }
 

@@ -21,8 +21,9 @@ namespace MagnusBall.Shots
         public const double WallDistanceMetres = 9.15;
 
         /// <summary>
-        /// Judges a shot at the goal: it is <see cref="ShotOutcome.In"/> when the whole ball passes the goal line (taken as
-        /// the posts' front face) between the posts and under the crossbar (law 10.1), <see cref="ShotOutcome.Woodwork"/> when
+        /// Judges a shot at the goal: it is <see cref="ShotOutcome.In"/> when the ball passes the goal line's front edge (the
+        /// posts' front face) between the posts and under the crossbar (law 10.1 asks for the whole ball past the line's back
+        /// edge, 12 cm further: a ball that comes down on the line itself, which the judge does not follow, counts as in), <see cref="ShotOutcome.Woodwork"/> when
         /// it strikes a post or the bar, <see cref="ShotOutcome.Wide"/> or <see cref="ShotOutcome.Over"/> when it passes
         /// outside them, and <see cref="ShotOutcome.Short"/> when it comes down before the line (a bounce is not followed).
         /// </summary>

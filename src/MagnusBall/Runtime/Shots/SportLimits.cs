@@ -139,7 +139,7 @@ namespace MagnusBall.Shots
             if (speedMetresPerSecond > MaximumSpeedMetresPerSecond)
             {
                 warnings.Add($"speed {F(speedMetresPerSecond)} m/s is above the fastest a {_sport} flies, {F(MaximumSpeedMetresPerSecond)} m/s" +
-                    (speedMetresPerSecond / 3.6 <= MaximumSpeedMetresPerSecond ? $"; a speed in km/h or mph? ({F(speedMetresPerSecond)} km/h = {F(speedMetresPerSecond / 3.6)} m/s)" : string.Empty) +
+                    UnitHint(speedMetresPerSecond) +
                     $" (source: {_speedSource})");
             }
 
@@ -168,6 +168,18 @@ namespace MagnusBall.Shots
         private static bool Within(double value, double min, double max) => value >= min && value <= max;
 
         private static string F(double value) => value.ToString("0.####", CultureInfo.InvariantCulture);
+
+        // A speed that is plausible once read as km/h or as mph: the conversions that bring it within the sport's range.
+        private string UnitHint(double speed)
+        {
+            double fromKmh = speed / 3.6, fromMph = speed * 0.44704;
+            string? kmh = fromKmh <= MaximumSpeedMetresPerSecond ? $"{F(speed)} km/h = {F(fromKmh)} m/s" : null;
+            string? mph = fromMph <= MaximumSpeedMetresPerSecond ? $"{F(speed)} mph = {F(fromMph)} m/s" : null;
+            return kmh != null && mph != null ? $"; a speed in km/h or mph? ({kmh}; {mph})"
+                : kmh != null ? $"; a speed in km/h? ({kmh})"
+                : mph != null ? $"; a speed in mph? ({mph})"
+                : string.Empty;
+        }
 
         /// <inheritdoc />
         public override string ToString() =>

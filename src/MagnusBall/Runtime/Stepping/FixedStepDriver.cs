@@ -195,7 +195,7 @@ namespace MagnusBall.Stepping
 
         /// <summary>
         /// accumulator / step, in [0, 1]: how far the render state is through the last step while it was a whole one (a step
-        /// cut short by its stop is drawn at <see cref="RenderTime"/>, State.Time - step + accumulator, not at this fraction of it).
+        /// cut short by its stop is drawn at RenderState.Time, State.Time - step + accumulator, not at this fraction of it).
         /// </summary>
         public double Alpha => Math.Min(1.0, _accumulator / FixedStep);
 
@@ -228,7 +228,7 @@ namespace MagnusBall.Stepping
         internal double RenderTime => RenderState.Time;
 
         /// <summary>
-        /// The state to draw this frame, at <see cref="RenderTime"/>: on the cubic Hermite of the step it falls
+        /// The state to draw this frame, at RenderState.Time: on the cubic Hermite of the step it falls
         /// in (both ends' states and derivatives, so the drawn path is C1 and keeps the curvature a linear blend
         /// of the two fixed states would cut), split at bounces. Allocates nothing.
         /// </summary>

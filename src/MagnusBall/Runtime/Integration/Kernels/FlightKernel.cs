@@ -23,7 +23,8 @@ namespace MagnusBall.Integration.Kernels
 
         /// <summary>
         /// The kernel of <paramref name="model"/>: built on first use (<see cref="FlightKernelFactory"/>) and kept on the model,
-        /// so every later call is a field read. Two threads that build it at once build equal kernels; either may be kept.
+        /// so every later call is a field read. Two threads that build it at once build equal kernels; the first one published
+        /// is kept (an interlocked exchange, so no thread sees a kernel before its fields are written).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         internal static FlightKernel Of(FlightModel model) => model.Specialised as FlightKernel ?? Build(model);
@@ -43,8 +44,10 @@ namespace MagnusBall.Integration.Kernels
         {
             FlightKernel kernel = FlightKernelFactory.Create(model);
             kernel.Counter = model.CountedEvaluations;
-            model.Specialised = kernel;
-            return kernel;
+            object? published = System.Threading.Interlocked.CompareExchange(ref model.Specialised, kernel, null);
+            FlightKernel kept = published as FlightKernel ?? kernel;
+            kept.Counter = model.CountedEvaluations; // the test hook, whichever kernel won (set before use in every test)
+            return kept;
         }
 
         /// <summary>What a drag or lift law that reads nothing (Reads == None: a constant coefficient) is given.</summary>
