@@ -28,6 +28,7 @@ namespace MagnusBall.Queries
             if (s.Status == AimStatus.Blocked && arc == AimArc.Low)
             {
                 // The flat solution hits the obstacle: the lowest one that clears it is the lob, where it does.
+                _trials.RestartFirstStep(); // the lob's trials as a lob solve's own
                 AimSolution lob = CheckClears(BothAngles(goal, speed, limit, high: true), wall);
                 return lob.Status == AimStatus.Solved || lob.Status == AimStatus.Blocked ? lob : WithFlights(s);
             }

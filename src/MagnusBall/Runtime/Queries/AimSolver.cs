@@ -34,7 +34,9 @@ namespace MagnusBall.Queries
     /// should not be below the ground, where a trial lands only after rising through it and coming back down.</para>
     /// <para><b>Which answer.</b> For target solves the frame's forward is the horizontal direction from the launch
     /// point to the target and the target plane passes through the target with that normal. Heights are measured
-    /// along up. The lowest solution is returned (a drive, not a lob): the lower limit when even it works; else the
+    /// along up. With <see cref="AimArc.High"/> the highest solution is returned (the lob), found the same way mirrored
+    /// (the upper limit, the vacuum's higher elevation, the scan downward). Otherwise the lowest solution is returned (a
+    /// drive, not a lob): the lower limit when even it works; else the
     /// root reached from the vacuum's lower angle (or lowest speed), accepted only where the margin grows through it
     /// (below it the shot falls short); else the first one the scan finds upward from the lower limit in steps of the
     /// scan width, so a solution window narrower than the scan width can be missed there.</para>
@@ -163,7 +165,7 @@ namespace MagnusBall.Queries
         /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
         /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
-        /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. The default, 20,000, is about 1 ms of work on a desktop core; an ordinary solve makes 200-700 (docs/queries.md).</param>
+        /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. The default, 20,000, is about 1 ms of tennis-model work on a desktop core; an ordinary drive makes 200-700, a lob a few thousand (docs/queries.md).</param>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolver(
             FlightModel model,

@@ -111,6 +111,12 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>
+        /// Starts a second search within the solve (the lob after a blocked drive): its first trial sets the first step of
+        /// the trials after it anew, so the search flies the same trials as a solve of its own; flights and work go on counting.
+        /// </summary>
+        public void RestartFirstStep() => _firstStep = 0;
+
+        /// <summary>
         /// One trial launch at the given speed, elevation and azimuth: its signed margin (&gt;= 0 when it arrives at or
         /// above the goal's height; &lt; 0 when below or short (see <see cref="ShortMargin"/>: continuous for ground targets);
         /// negative infinity when it neither lands nor arrives in time) and the solution it

@@ -138,7 +138,7 @@ namespace MagnusBall.Queries
 
         /// <summary>Creates the inverse on an aim solver; the swings hit the ball its model flies.</summary>
         /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
-        /// <param name="maximumEvaluations">The work budget of one inverse call: model evaluations plus steps over all its aim solves, in [1,000, 1e12], or 0; past it the call returns <see cref="AimStatus.WorkLimitReached"/>. 0 (the default): 3 times the solver's budget per solve for an adaptive solver (60,000 for its default, about 3 ms; an ordinary inverse makes 2,000-5,000), 10 times for a fixed-step one (10,000,000 for its default).</param>
+        /// <param name="maximumEvaluations">The work budget of one inverse call: model evaluations plus steps over all its aim solves, in [1,000, 1e12], or 0; past it the call returns <see cref="AimStatus.WorkLimitReached"/>. 0 (the default): 3 times the solver's budget per solve for an adaptive solver (60,000 for its default: about 11 ms of golf-preset work, where an ordinary inverse makes 2,000-5,000), 10 times for a fixed-step one (10,000,000 for its default).</param>
         /// <exception cref="ArgumentNullException"><paramref name="solver"/> is null.</exception>
         /// <exception cref="ArgumentException"><paramref name="maximumEvaluations"/> is out of range.</exception>
         public SwingAim(AimSolver solver, long maximumEvaluations = 0)
