@@ -77,6 +77,13 @@ namespace MagnusBall.Queries
                 return false;
             }
 
+            if (high && e > MaximumElevationRadians)
+            {
+                // The vacuum's lob is steeper than the real one (drag brings the ball down short): start at the upper
+                // limit rather than give up (a 30 m/s tennis lob: 82 degrees in a vacuum, 72 in air).
+                e = MaximumElevationRadians;
+            }
+
             // The limit on the arc's side, at the azimuth toward the target: where it works, the fallback returns it.
             if (!(_trials.Margin(goal, speed, high ? MaximumElevationRadians : MinimumElevationRadians, 0, out _) < 0))
             {
