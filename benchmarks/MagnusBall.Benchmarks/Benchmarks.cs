@@ -211,6 +211,39 @@ namespace MagnusBall.Benchmarks
         public double SpeedToBaseline() => _solver.SpeedToReach(_position, 8 * Math.PI / 180, 0, _spin, _baseline).Speed;
     }
 
+    /// <summary>
+    /// Issue 39's aiming as a player thinks, with the adaptive AimSolver and its default work budgets (full tennis model,
+    /// Cross 2011's court, 30 m/s, 20 rev/s topspin; golf preset for the club): an ordinary aim solve, the lob, the lob over a
+    /// wall the drive hits, a target out of reach, and SwingAim's club inverse to a 170 m flag reached (40 m/s) and out of
+    /// reach (37 m/s). The same workloads as the ratios mode's last five rows.
+    /// </summary>
+    [Config(typeof(ShortConfig))]
+    public class AimBudget
+    {
+        private readonly Workloads _work = new Workloads();
+
+        [GlobalSetup]
+        public void Setup() => _work.Setup();
+
+        [Benchmark(Baseline = true, Description = "AnglesToReach (corner)")]
+        public double Corner() => _work.AimCorner();
+
+        [Benchmark(Description = "AnglesToReach (corner), the lob")]
+        public double Lob() => _work.AimCornerLob();
+
+        [Benchmark(Description = "AnglesToReach (corner) over a 3 m wall")]
+        public double OverWall() => _work.AimCornerOverWall();
+
+        [Benchmark(Description = "AnglesToReach, out of reach")]
+        public double Unreachable() => _work.AimUnreachable();
+
+        [Benchmark(Description = "SwingAim.ClubFaceToReach, 170 m flag")]
+        public double Club() => _work.SwingClub();
+
+        [Benchmark(Description = "SwingAim.ClubFaceToReach, out of reach")]
+        public double ClubUnreachable() => _work.SwingClubUnreachable();
+    }
+
     /// <summary>1,000 balls through one 60 FPS frame: four fixed steps of 1/240 s each, full tennis model.</summary>
     [Config(typeof(ShortConfig))]
     public class Frame

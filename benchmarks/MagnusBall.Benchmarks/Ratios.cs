@@ -49,6 +49,11 @@ namespace MagnusBall.Benchmarks
                 ("thesis-style shot, full tennis", work.ThesisStyleTennisShot),
                 ("RK4 Advance(4) x 1,000 balls, full", work.KernelFloor1000),
                 ("RK4 Advance(4) x 10,000 balls, full", work.KernelFloor10000),
+                ("aim AnglesToReach, the lob", work.AimCornerLob),
+                ("aim AnglesToReach over a 3 m wall", work.AimCornerOverWall),
+                ("aim AnglesToReach, out of reach", work.AimUnreachable),
+                ("SwingAim club, 170 m flag", work.SwingClub),
+                ("SwingAim club, out of reach", work.SwingClubUnreachable),
             };
 
             var best = new double[items.Length];

@@ -36,6 +36,11 @@ namespace MagnusBall.Benchmarks
         private StateDerivative[] _kernelDerivatives = null!;
         private AimSolver _solver = null!;
         private AimSolver _solverFixed = null!;
+        private SwingAim _club = null!;
+        private Vector3d _tee;
+        private static readonly LaunchFrame ClubFrame = new LaunchFrame(Scenarios.Up, Vector3d.UnitX);
+        private static readonly MagnusBall.Contact.Swings.ClubSwing Club40 = new MagnusBall.Contact.Swings.ClubSwing(40, 12, -2);
+        private static readonly MagnusBall.Contact.Swings.ClubSwing Club37 = new MagnusBall.Contact.Swings.ClubSwing(37, 8, -2);
         private LaunchSpin _spin;
         private Plane _net;
 
@@ -90,6 +95,9 @@ namespace MagnusBall.Benchmarks
             _solverFixed = new AimSolver(model, RungeKutta4.Instance, Step, Plane.Ground(model)); // fixed RK4 trials at 1/240 s
             _spin = new LaunchSpin(Spin.FromRevolutionsPerSecond(20));
             _net = new Plane(new Vector3d(11.885, 0, 0), Vector3d.UnitX);
+            FlightModel golf = MagnusBall.Presets.SportPresets.Golf.CreateModel(Air.SeaLevel, Scenarios.G);
+            _club = new SwingAim(new AimSolver(golf, Plane.Ground(golf), maximumFlightTime: 20)); // adaptive trials, default budgets
+            _tee = new Vector3d(0, 0, golf.Ball.Radius);
         }
 
         private BallBatch Crowd(int count, Plane ground)
@@ -258,5 +266,23 @@ namespace MagnusBall.Benchmarks
 
         /// <summary>AimSolver.SpeedToReach (the baseline at 8 degrees).</summary>
         public double AimSpeed() => _solver.SpeedToReach(new Vector3d(0, 0, 1), 8 * Math.PI / 180, 0, _spin, new Vector3d(23.77, 0, 0)).Speed;
+    
+        /// <summary>AimSolver.AnglesToReach (the corner) asking for the lob (AimArc.High), adaptive trials.</summary>
+        public double AimCornerLob() => _solver.AnglesToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 4.1, 0), arc: AimArc.High).ElevationRadians;
+
+        /// <summary>AimSolver.AnglesToReach (the corner) over a 3 m wall at the net: the drive is blocked, the lob clears it.</summary>
+        public double AimCornerOverWall() =>
+            _solver.AnglesToReach(new Vector3d(0, 0, 1), 30, _spin, new Vector3d(23.77, 4.1, 0), obstacle: new AimObstacle(11.885, 3)).ElevationRadians;
+
+        /// <summary>AimSolver.AnglesToReach out of reach (10 m/s to 60 m): Unreachable.</summary>
+        public double AimUnreachable() => _solver.AnglesToReach(new Vector3d(0, 0, 1), 10, _spin, new Vector3d(60, 4, 0)).Miss;
+
+        /// <summary>SwingAim.ClubFaceToReach: a 40 m/s club to a flag 170 m away (golf preset, adaptive trials): solved.</summary>
+        public double SwingClub() =>
+            _club.ClubFaceToReach(Club40, ClubFrame, _tee, new Vector3d(170, 3, 0)).Swing.DynamicLoftDegrees;
+
+        /// <summary>SwingAim.ClubFaceToReach: a 37 m/s club to the same flag, out of its reach: Unreachable.</summary>
+        public double SwingClubUnreachable() =>
+            _club.ClubFaceToReach(Club37, ClubFrame, _tee, new Vector3d(170, 3, 0)).Swing.DynamicLoftDegrees;
     }
 }

@@ -246,7 +246,7 @@ namespace MagnusBall.Cli
                     {
                         w.WriteNumber("speed", s.Speed);
                         w.WriteNumber("elevationDegrees", s.ElevationDegrees);
-                        w.WriteNumber("azimuthDegrees", s.AzimuthDegrees);
+                        w.WriteNumber("azimuthDegrees", s.AzimuthFromTargetDegrees);
                         WriteVector(w, "velocity", s.Velocity);
                         WriteVector(w, "angularVelocity", s.AngularVelocity);
                         w.WriteStartObject("arrival");

@@ -120,7 +120,7 @@ namespace MagnusBall.Playground.Tests
             var spin = new LaunchSpin(0, 61.86);
             AimSolution aim = new AimSolver(model, RungeKutta4.Instance, 1.0 / 240, ground).AnglesToReach(start, 24.15, spin, target);
             var frame = new LaunchFrame(Vector3d.UnitZ, target - start);
-            Vector3d direction = frame.Direction(aim.ElevationRadians, aim.AzimuthRadians);
+            Vector3d direction = frame.Direction(aim.ElevationRadians, aim.AzimuthFromTargetRadians);
             var predictor = new TrajectoryPredictor(
                 model, RungeKutta4.Instance, 1.0 / 240, new FlightEventSet(Vector3d.UnitZ, ground, new[] { new Plane(new Vector3d(20, 0, 0), Vector3d.UnitX) }));
             return new[] { 19.32, 24.15, 28.91 }

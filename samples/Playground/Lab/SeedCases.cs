@@ -104,7 +104,7 @@ namespace MagnusBall.Playground.Lab
                 var row = new SeedRow { Name = $"{speeds[i]} m/s" };
                 if (aim.IsSolved)
                 {
-                    Vector3d direction = frame.Direction(aim.ElevationRadians, aim.AzimuthRadians);
+                    Vector3d direction = frame.Direction(aim.ElevationRadians, aim.AzimuthFromTargetRadians);
                     var launch = new FlightState(start, direction * speeds[i], spin.AngularVelocity(direction, frame));
                     row.Path = PathOf(predictor, launch, FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing, out Prediction p);
                     row.ReachedGoalLine = p.StopEvent.Kind == FlightEventKinds.PlaneCrossing;

@@ -467,7 +467,7 @@ namespace MagnusBall.Fuzz
                     Add(_after, solution.AngularVelocity);
                     Add(_after, solution.Speed);
                     Add(_after, solution.ElevationRadians);
-                    Add(_after, solution.AzimuthRadians);
+                    Add(_after, solution.AzimuthFromTargetRadians);
                     Add(_after, solution.Arrival);
                     _derivatives.Add(_after.Count);
                     Add(_after, solution.Miss);
@@ -478,9 +478,9 @@ namespace MagnusBall.Fuzz
 
         private static readonly string[][] AimParameters =
         {
-            new[] { "position", "speed", "spin", "target", "azimuthRadians" },
+            new[] { "position", "speed", "spin", "target", "azimuthFromTargetRadians" },
             new[] { "position", "speed", "spin", "target", "maximumAzimuthDegrees" },
-            new[] { "position", "elevationRadians", "azimuthRadians", "spin", "target" },
+            new[] { "position", "elevationRadians", "azimuthFromTargetRadians", "spin", "target" },
             new[] { "position", "speed", "azimuthRadians", "spin", "plane", "height" },
         };
 

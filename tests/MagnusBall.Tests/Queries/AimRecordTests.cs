@@ -65,7 +65,7 @@ namespace MagnusBall.Tests.Queries
             {
                 AimSolution s = solved[r.Name];
                 TestContext.Out.WriteLine(
-                    $"{r.Name,-40} elevation {s.ElevationRadians - r.Elevation,10:E1} azimuth {s.AzimuthRadians - r.Azimuth,10:E1} " +
+                    $"{r.Name,-40} elevation {s.ElevationRadians - r.Elevation,10:E1} azimuth {s.AzimuthFromTargetRadians - r.Azimuth,10:E1} " +
                     $"speed {s.Speed - r.Speed,10:E1}  {s.Simulations} flights");
                 Assert.That(s.IsSolved, Is.EqualTo(r.Solved), r.Name);
                 if (!r.Solved)
@@ -74,7 +74,7 @@ namespace MagnusBall.Tests.Queries
                 }
 
                 Assert.That(s.ElevationRadians, Is.EqualTo(r.Elevation).Within(angleTolerance), r.Name + ": elevation");
-                Assert.That(s.AzimuthRadians, Is.EqualTo(r.Azimuth).Within(angleTolerance), r.Name + ": azimuth");
+                Assert.That(s.AzimuthFromTargetRadians, Is.EqualTo(r.Azimuth).Within(angleTolerance), r.Name + ": azimuth");
                 Assert.That(s.Speed, Is.EqualTo(r.Speed).Within(speedTolerance), r.Name + ": speed");
             }
         }

@@ -43,7 +43,7 @@ namespace MagnusBall.Tests.Queries
             var target = new Vector3d(24, 7, 0);
             AimSolution b = solver.AnglesToReach(default, v, LaunchSpin.None, target);
             Assert.That(b.IsSolved, Is.True);
-            Assert.That(b.AzimuthRadians, Is.EqualTo(0).Within(2e-8), "the frame's forward points at the target");
+            Assert.That(b.AzimuthFromTargetRadians, Is.EqualTo(0).Within(2e-8), "the frame's forward points at the target");
             Assert.That(b.ElevationRadians, Is.EqualTo(0.5 * Math.Asin(G * 25 / (v * v))).Within(2e-8));
             Assert.That(b.Miss, Is.LessThan(1e-6));
         }
@@ -82,7 +82,7 @@ namespace MagnusBall.Tests.Queries
             double Solve() =>
                 solver.MinimumElevationToClear(start, 30, 0, spin, net, 0.914).ElevationRadians
                 + solver.ElevationToReach(start, 30, spin, target).ElevationRadians
-                + solver.AnglesToReach(start, 30, spin, target).AzimuthRadians
+                + solver.AnglesToReach(start, 30, spin, target).AzimuthFromTargetRadians
                 + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
 
             double first = Solve();
@@ -244,7 +244,7 @@ namespace MagnusBall.Tests.Queries
             double Solve() =>
                 solver.MinimumElevationToClear(start, 30, 0, spin, net, 0.914).ElevationRadians
                 + solver.ElevationToReach(start, 30, spin, target).ElevationRadians
-                + solver.AnglesToReach(start, 30, spin, target).AzimuthRadians
+                + solver.AnglesToReach(start, 30, spin, target).AzimuthFromTargetRadians
                 + solver.SpeedToReach(start, 10 * Degree, 0, spin, target).Speed;
 
             double sum = 0;
@@ -306,7 +306,7 @@ namespace MagnusBall.Tests.Queries
 
                 AimSolution again = solves[i](used);
                 Assert.That(BitConverter.DoubleToInt64Bits(again.ElevationRadians), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.ElevationRadians)), $"solve {i}: elevation");
-                Assert.That(BitConverter.DoubleToInt64Bits(again.AzimuthRadians), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.AzimuthRadians)), $"solve {i}: azimuth");
+                Assert.That(BitConverter.DoubleToInt64Bits(again.AzimuthFromTargetRadians), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.AzimuthFromTargetRadians)), $"solve {i}: azimuth");
                 Assert.That(BitConverter.DoubleToInt64Bits(again.Speed), Is.EqualTo(BitConverter.DoubleToInt64Bits(fresh.Speed)), $"solve {i}: speed");
                 Assert.That(again.Simulations, Is.EqualTo(fresh.Simulations), $"solve {i}: flights");
             }

@@ -43,7 +43,7 @@ namespace MagnusBall.Tests.Queries
             {
                 Assert.That(s.Speed, Is.Not.NaN, "speed");
                 Assert.That(s.ElevationRadians, Is.Not.NaN, "elevation");
-                Assert.That(s.AzimuthRadians, Is.Not.NaN, "azimuth");
+                Assert.That(s.AzimuthFromTargetRadians, Is.Not.NaN, "azimuth");
                 Assert.That(s.Velocity.IsFinite, Is.True, "velocity");
                 Assert.That(s.AngularVelocity.IsFinite, Is.True, "spin");
                 Assert.That(s.Arrival.IsFinite, Is.True, "arrival");

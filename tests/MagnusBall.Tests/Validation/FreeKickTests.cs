@@ -87,7 +87,7 @@ namespace MagnusBall.Tests.Validation
             Assert.That(aim.IsSolved, Is.True, "the 24.15 m/s kick can be aimed at the target");
 
             var launchFrame = new LaunchFrame(frame.Up, target - start);
-            Vector3d direction = launchFrame.Direction(aim.ElevationRadians, aim.AzimuthRadians);
+            Vector3d direction = launchFrame.Direction(aim.ElevationRadians, aim.AzimuthFromTargetRadians);
             var goalPlane = new Plane(frame.Point(goalLine, 0, 0), frame.Forward);
             var predictor = new TrajectoryPredictor(model, RungeKutta4.Instance, 1.0 / 240, new FlightEventSet(frame.Up, ground, new[] { goalPlane }));
 
@@ -161,7 +161,7 @@ namespace MagnusBall.Tests.Validation
             // The same computation in rotated coordinates: differences are rounding, amplified by the solver's
             // 1e-8 rad tolerance over 20 m (2e-7 m); 1e-6 deg and 1e-5 m leave room for that and nothing else.
             Assert.That(y.Aim.ElevationDegrees, Is.EqualTo(z.Aim.ElevationDegrees).Within(1e-6));
-            Assert.That(y.Aim.AzimuthDegrees, Is.EqualTo(z.Aim.AzimuthDegrees).Within(1e-6));
+            Assert.That(y.Aim.AzimuthFromTargetDegrees, Is.EqualTo(z.Aim.AzimuthFromTargetDegrees).Within(1e-6));
             for (int i = 0; i < 3; i++)
             {
                 Assert.That(y.Flights[i].StopEvent.Kind, Is.EqualTo(z.Flights[i].StopEvent.Kind));

@@ -7,20 +7,54 @@ namespace MagnusBall.Queries
 {
     public sealed partial class AimSolver
     {
-        private AimSolution AnglesToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees)
+        private AimSolution AnglesToReachCore(
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees, AimArc arc, in AimObstacle obstacle)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
             Require.InRange(maximumAzimuthDegrees, double.Epsilon, 89, nameof(maximumAzimuthDegrees));
+            CheckArc(arc);
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
             AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            if (TryBothAngles(goal, speed, limit, out AimSolution solved))
+            AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
+            _trials.StartSolve(SolveBudget);
+            AimSolution s = BothAngles(goal, speed, limit, arc == AimArc.High);
+            if (obstacle.IsNone)
+            {
+                return s;
+            }
+
+            s = CheckClears(s, wall);
+            if (s.Status == AimStatus.Blocked && arc == AimArc.Low)
+            {
+                // The flat solution hits the obstacle: the lowest one that clears it is the lob, where it does.
+                _trials.RestartFirstStep(); // the lob's trials as a lob solve's own
+                AimSolution lob = CheckClears(BothAngles(goal, speed, limit, high: true), wall);
+                return lob.Status == AimStatus.Solved || lob.Status == AimStatus.Blocked ? lob : WithFlights(s);
+            }
+
+            return s;
+        }
+
+        private AimSolution BothAngles(in AimGoal goal, double speed, double limit, bool high)
+        {
+            if (TryBothAngles(goal, speed, limit, high, out AimSolution solved, out bool ran))
             {
                 return solved;
             }
 
-            return AnglesByAzimuthSearch(goal, speed, limit);
+            if (ran && _trials.HasCoarse)
+            {
+                // Broyden's method ran and failed: before the fallback's elevation solves, the reach probe toward the target
+                // (the fallback's first azimuth), which tells a target out of reach at this speed in a dozen coarse trials.
+                var toward = new ElevationMargin(_trials, goal, speed, 0);
+                if (!ProbeReaches(ref toward, out _))
+                {
+                    return Unreachable(speed, 0);
+                }
+            }
+
+            return AnglesByAzimuthSearch(goal, speed, limit, high);
         }
 
         /// <summary>
@@ -30,24 +64,35 @@ namespace MagnusBall.Queries
         /// in both angles; accepted only on the drive side (the height grows with elevation), with the lower limit not
         /// working (else the lower limit is the answer, as the fallback finds) and within the limits.
         /// </summary>
-        private bool TryBothAngles(in AimGoal goal, double speed, double azimuthLimit, out AimSolution solved)
+        private bool TryBothAngles(in AimGoal goal, double speed, double azimuthLimit, bool high, out AimSolution solved, out bool ran)
         {
             solved = default;
+            ran = false;
             double distance = Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward);
-            double e = VacuumAim.LowElevation(_gravity, speed, distance, goal.Rise, out double slope);
-            if (double.IsNaN(e) || !(slope > 0))
+            double e = high
+                ? VacuumAim.HighElevation(_gravity, speed, distance, goal.Rise, out double slope)
+                : VacuumAim.LowElevation(_gravity, speed, distance, goal.Rise, out slope);
+            if (double.IsNaN(e) || !(high ? slope < 0 : slope > 0))
             {
                 return false;
             }
 
-            // The lower limit, at the azimuth toward the target: where it works, the fallback returns it.
-            if (!(_trials.Margin(goal, speed, MinimumElevationRadians, 0, out _) < 0))
+            if (high && e > MaximumElevationRadians)
+            {
+                // The vacuum's lob is steeper than the real one (drag brings the ball down short): start at the upper
+                // limit rather than give up (a 30 m/s tennis lob: 82 degrees in a vacuum, 72 in air).
+                e = MaximumElevationRadians;
+            }
+
+            // The limit on the arc's side, at the azimuth toward the target: where it works, the fallback returns it.
+            if (!(_trials.Margin(goal, speed, high ? MaximumElevationRadians : MinimumElevationRadians, 0, out _) < 0))
             {
                 return false;
             }
 
+            ran = true;
             _trials.Coarse = _trials.HasCoarse;
-            bool found = Broyden(goal, speed, azimuthLimit, e, slope, distance, out solved);
+            bool found = Broyden(goal, speed, azimuthLimit, e, slope, distance, high, out solved);
             _trials.Coarse = false;
             return found;
         }
@@ -55,13 +100,15 @@ namespace MagnusBall.Queries
         // TryBothAngles's iteration: with adaptive trials first on coarse trials to CoarseFactor times the tolerance, then on
         // the full trials (the first full trial keeps the Jacobian as it is: the change of residual from a coarse to a full
         // trial is the two trials' difference, not the step's effect).
-        private bool Broyden(in AimGoal goal, double speed, double azimuthLimit, double e, double slope, double distance, out AimSolution solved)
+        private bool Broyden(in AimGoal goal, double speed, double azimuthLimit, double e, double slope, double distance, bool high, out AimSolution solved)
         {
             solved = default;
             double az = 0;
             double j11 = slope, j12 = 0, j21 = 0, j22 = distance;
             double r1 = 0, r2 = 0, dx1 = 0, dx2 = 0;
             bool update = false;
+            // The residual's size at each trial, for the stall test (a ring of the last BroydenStallSteps + 1).
+            Span<double> sizes = stackalloc double[BroydenStallSteps + 1];
             for (int k = 0; k < AimRoots.MaximumBroydenSteps; k++)
             {
                 if (e < MinimumElevationRadians || e > MaximumElevationRadians || Math.Abs(az) > azimuthLimit)
@@ -76,6 +123,13 @@ namespace MagnusBall.Queries
                 }
 
                 double lateral = Vector3d.DotOfDifference(s.Arrival.Position, goal.Target, goal.Frame.Side);
+                sizes[k % sizes.Length] = Math.Abs(m) + Math.Abs(lateral);
+                if (k >= BroydenStallSteps && !(sizes[k % sizes.Length] <= 0.5 * sizes[(k - BroydenStallSteps) % sizes.Length]))
+                {
+                    // The residual stopped shrinking (a target out of reach at this speed: the trials creep along the edge
+                    // of the reach): leave it to the fallback, whose elevation solve tells out of reach cheaply.
+                    return false;
+                }
                 if (update)
                 {
                     // Broyden's update with the step taken and the change of the residual.
@@ -102,8 +156,9 @@ namespace MagnusBall.Queries
                 }
                 else if (Math.Abs(dx1) <= AngleTolerance && Math.Abs(dx2) <= AngleTolerance)
                 {
-                    // Converged at this trial (it is within the tolerance of the root), on the drive side, having arrived.
-                    if (!(j11 > 0) || !(s.Miss < ConvergedMiss))
+                    // Converged at this trial (it is within the tolerance of the root), on the arc's side (the height grows with
+                    // the elevation for the drive, falls for the lob), having arrived.
+                    if (!(high ? j11 < 0 : j11 > 0) || !(s.Miss < ConvergedMiss))
                     {
                         return false;
                     }
@@ -127,9 +182,9 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>The fallback of <see cref="AnglesToReach"/>: the azimuth refined on the sideways miss, the elevation solved for each.</summary>
-        private AimSolution AnglesByAzimuthSearch(in AimGoal goal, double speed, double limit)
+        private AimSolution AnglesByAzimuthSearch(in AimGoal goal, double speed, double limit, bool high)
         {
-            var lateral = new AzimuthMargin(this, goal, speed);
+            var lateral = new AzimuthMargin(this, goal, speed, high);
             double a0 = 0;
             double f0 = lateral.Evaluate(a0, out AimSolution s0);
             if (double.IsNaN(f0))
@@ -210,20 +265,22 @@ namespace MagnusBall.Queries
             private readonly AimSolver _solver;
             private readonly AimGoal _goal;
             private readonly double _speed;
+            private readonly bool _high;
             private double _hint;
 
-            public AzimuthMargin(AimSolver solver, in AimGoal goal, double speed)
+            public AzimuthMargin(AimSolver solver, in AimGoal goal, double speed, bool high)
             {
                 _solver = solver;
                 _goal = goal;
                 _speed = speed;
+                _high = high;
                 _hint = double.NaN;
             }
 
             /// <summary>The sideways miss (along the frame's side) after solving the elevation; NaN when no elevation reaches the height.</summary>
             public double Evaluate(double azimuth, out AimSolution solution)
             {
-                solution = _solver.SolveElevation(_goal, _speed, azimuth, PathToTarget(_goal, azimuth), _hint, out double elevation);
+                solution = _solver.SolveElevation(_goal, _speed, azimuth, PathToTarget(_goal, azimuth), _hint, _high, out double elevation);
                 if (!solution.IsSolved)
                 {
                     return double.NaN;

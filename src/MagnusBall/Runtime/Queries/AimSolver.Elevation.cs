@@ -46,18 +46,45 @@ namespace MagnusBall.Queries
             // The vacuum guess: the horizontal path to the plane along the launch's horizontal direction.
             double along = Vector3d.Dot(plane.Normal, frame.Direction(0, azimuthRadians));
             double path = along > 0 ? -side / along : double.NaN;
-            _trials.StartSolve();
+            _trials.StartSolve(SolveBudget);
             return SolveElevation(goal, speed, azimuthRadians, path, double.NaN, out _);
         }
 
-        private AimSolution ElevationToReachCore(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians)
+        private AimSolution ElevationToReachCore(
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthFromTargetRadians, AimArc arc, in AimObstacle obstacle)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
-            Require.Finite(azimuthRadians, nameof(azimuthRadians));
+            Require.Finite(azimuthFromTargetRadians, nameof(azimuthFromTargetRadians));
+            CheckArc(arc);
             AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            return SolveElevation(goal, speed, azimuthRadians, PathToTarget(goal, azimuthRadians), double.NaN, out _);
+            AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
+            _trials.StartSolve(SolveBudget);
+            double path = PathToTarget(goal, azimuthFromTargetRadians);
+            AimSolution s = SolveElevation(goal, speed, azimuthFromTargetRadians, path, double.NaN, arc == AimArc.High, out _);
+            if (obstacle.IsNone)
+            {
+                return s;
+            }
+
+            s = CheckClears(s, wall);
+            if (s.Status == AimStatus.Blocked && arc == AimArc.Low)
+            {
+                // The flat solution hits the obstacle: the lowest one that clears it is the lob, where it does.
+                _trials.RestartFirstStep(); // the lob's trials as a lob solve's own
+                AimSolution lob = CheckClears(SolveElevation(goal, speed, azimuthFromTargetRadians, path, double.NaN, true, out _), wall);
+                return lob.Status == AimStatus.Solved || lob.Status == AimStatus.Blocked ? lob : WithFlights(s);
+            }
+
+            return s;
+        }
+
+        private static void CheckArc(AimArc arc)
+        {
+            if (arc != AimArc.Low && arc != AimArc.High)
+            {
+                throw new ArgumentOutOfRangeException(nameof(arc), arc, $"arc must be AimArc.Low or AimArc.High; got {(int)arc}.");
+            }
         }
 
         /// <summary>
@@ -69,6 +96,22 @@ namespace MagnusBall.Queries
             ref T margin, double guess, double slope, double min, double max, double stride, double tolerance, out double root, out AimSolution atRoot)
             where T : struct, IAimMargin
         {
+            var noProbe = new ElevationMargin();
+            return SolveFromGuess(ref margin, guess, slope, min, max, stride, tolerance, ref noProbe, false, out root, out atRoot, out _);
+        }
+
+        /// <summary>
+        /// <see cref="SolveFromGuess{T}(ref T, double, double, double, double, double, double, out double, out AimSolution)"/>,
+        /// and where the coarse trials fail to find the root and <paramref name="probe"/> is set, the reach probe on
+        /// <paramref name="elevation"/> before the full trials try: <paramref name="outOfReach"/> (with the probe's best
+        /// trial in <paramref name="atRoot"/>) when it finds the target out of reach.
+        /// </summary>
+        private bool SolveFromGuess<T>(
+            ref T margin, double guess, double slope, double min, double max, double stride, double tolerance,
+            ref ElevationMargin elevation, bool probe, out double root, out AimSolution atRoot, out bool outOfReach)
+            where T : struct, IAimMargin
+        {
+            outOfReach = false;
             if (_trials.HasCoarse)
             {
                 _trials.Coarse = true;
@@ -84,6 +127,14 @@ namespace MagnusBall.Queries
                     guess = near;
                     slope = nearSlope;
                 }
+                else if (probe && !ProbeReaches(ref elevation, out atRoot))
+                {
+                    // The coarse trials found no root, and the probe no trial that reaches: out of reach, without the full
+                    // trials' secant steps (up to MaximumSecantSteps more flights).
+                    root = double.NaN;
+                    outOfReach = true;
+                    return false;
+                }
             }
 
             return AimRoots.TrySecant(ref margin, guess, slope, min, max, stride, tolerance, out root, out atRoot, out _);
@@ -94,6 +145,9 @@ namespace MagnusBall.Queries
         /// search's last elevation) by a small bracket; else the lower limit when it works, the fast path from the
         /// vacuum's lower elevation over <paramref name="path"/> metres, or the scan upward from the lower limit.
         /// </summary>
+        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, bool high, out double elevation) =>
+            high ? SolveHighElevation(goal, speed, azimuth, path, hint, out elevation) : SolveElevation(goal, speed, azimuth, path, hint, out elevation);
+
         private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
         {
             var margin = new ElevationMargin(_trials, goal, speed, azimuth);
@@ -127,10 +181,23 @@ namespace MagnusBall.Queries
             }
 
             double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
+            bool probed = _trials.HasCoarse; // with coarse trials, SolveFromGuess probes where the coarse secant fails
             if (SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
-                    out elevation, out AimSolution atRoot))
+                    ref margin, probe: true, out elevation, out AimSolution atRoot, out bool outOfReach))
             {
                 return WithFlights(atRoot);
+            }
+
+            if (outOfReach)
+            {
+                elevation = double.NaN;
+                return Unreachable(speed, azimuth);
+            }
+
+            if (!probed && !ProbeReaches(ref margin, out _))
+            {
+                elevation = double.NaN;
+                return Unreachable(speed, azimuth);
             }
 
             // The scan: bounded by MaximumScanTrials (the constructor checks the scan width).
@@ -155,6 +222,141 @@ namespace MagnusBall.Queries
 
             elevation = double.NaN;
             return Unreachable(speed, azimuth);
+        }
+
+        /// <summary>
+        /// The highest elevation whose trial margin is &gt;= 0 (the lob), at a fixed speed and azimuth: the mirror of
+        /// <see cref="SolveElevation(in AimGoal, double, double, double, double, out double)"/>: near a hint by a small
+        /// bracket; else the upper limit when it works, the fast path from the vacuum's higher elevation (on the mirrored
+        /// margin, which grows through the root), or the scan downward from the upper limit.
+        /// </summary>
+        private AimSolution SolveHighElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
+        {
+            var margin = new ElevationMargin(_trials, goal, speed, azimuth);
+            double lo, flo, hi, fhi;
+            AimSolution atLo, atHi;
+            if (double.IsFinite(hint))
+            {
+                double width = ElevationScanRadians;
+                lo = Math.Max(MinimumElevationRadians, hint - width);
+                hi = Math.Min(MaximumElevationRadians, hint + width);
+                fhi = margin.Evaluate(hi, out _);
+                if (fhi < 0)
+                {
+                    flo = margin.Evaluate(lo, out atLo);
+                    if (flo >= 0)
+                    {
+                        elevation = AimRoots.Refine(ref margin, hi, fhi, lo, flo, ref atLo, AngleTolerance, out _);
+                        return WithFlights(atLo);
+                    }
+                }
+            }
+
+            hi = MaximumElevationRadians;
+            fhi = margin.Evaluate(hi, out atHi);
+            if (fhi >= 0)
+            {
+                // Even the highest elevation tried does it: report that limit.
+                elevation = hi;
+                return WithFlights(atHi);
+            }
+
+            double guess = VacuumAim.HighElevation(_gravity, speed, path, goal.Rise, out double slope);
+            var mirrored = new MirroredMargin<ElevationMargin>(margin);
+            bool probed = _trials.HasCoarse;
+            if (SolveFromGuess(ref mirrored, -guess, -slope, -MaximumElevationRadians, -MinimumElevationRadians, AngleStride, AngleTolerance,
+                    ref margin, probe: true, out double root, out AimSolution atRoot, out bool outOfReach))
+            {
+                elevation = -root;
+                return WithFlights(atRoot);
+            }
+
+            if (outOfReach)
+            {
+                elevation = double.NaN;
+                return Unreachable(speed, azimuth);
+            }
+
+            if (!probed && !ProbeReaches(ref margin, out _))
+            {
+                elevation = double.NaN;
+                return Unreachable(speed, azimuth);
+            }
+
+            // The scan downward: bounded by MaximumScanTrials (the constructor checks the scan width).
+            for (int i = 1; ; i++)
+            {
+                lo = Math.Max(MinimumElevationRadians, MaximumElevationRadians - i * ElevationScanRadians);
+                flo = margin.Evaluate(lo, out atLo);
+                if (flo >= 0)
+                {
+                    elevation = AimRoots.Refine(ref margin, hi, fhi, lo, flo, ref atLo, AngleTolerance, out _);
+                    return WithFlights(atLo);
+                }
+
+                if (lo <= MinimumElevationRadians)
+                {
+                    break;
+                }
+
+                hi = lo;
+                fhi = flo;
+            }
+
+            elevation = double.NaN;
+            return Unreachable(speed, azimuth);
+        }
+
+        /// <summary>
+        /// The cheap test of reach before the scan: a golden-section search for the elevation with the largest margin over the
+        /// limits, <see cref="ProbeTrials"/> trials (coarse where the trials have a coarse method). False, with that best
+        /// trial, when even it comes short by more than <see cref="ProbeSlack"/>: the target is out of reach at this speed. A margin with two separate humps whose higher one the search does not
+        /// see can be missed, as the scan can miss a window narrower than its width.
+        /// </summary>
+        private bool ProbeReaches(ref ElevationMargin margin, out AimSolution best)
+        {
+            const double InverseGolden = 0.6180339887498949;
+            bool coarse = _trials.Coarse;
+            _trials.Coarse = _trials.HasCoarse;
+            double a = MinimumElevationRadians, b = MaximumElevationRadians;
+            double c = b - InverseGolden * (b - a), d = a + InverseGolden * (b - a);
+            double fc = margin.Evaluate(c, out AimSolution sc), fd = margin.Evaluate(d, out AimSolution sd);
+            for (int i = 2; i < ProbeTrials && !(fc >= -ProbeSlack) && !(fd >= -ProbeSlack); i++)
+            {
+                if (fc >= fd || double.IsNaN(fd))
+                {
+                    b = d;
+                    d = c;
+                    fd = fc;
+                    sd = sc;
+                    c = b - InverseGolden * (b - a);
+                    fc = margin.Evaluate(c, out sc);
+                }
+                else
+                {
+                    a = c;
+                    c = d;
+                    fc = fd;
+                    sc = sd;
+                    d = a + InverseGolden * (b - a);
+                    fd = margin.Evaluate(d, out sd);
+                }
+            }
+
+            _trials.Coarse = coarse;
+            best = fc >= fd || double.IsNaN(fd) ? sc : sd;
+            return fc >= -ProbeSlack || fd >= -ProbeSlack || _trials.WorkLimitReached;
+        }
+
+        /// <summary>The mirror image of a margin, x -&gt; f(-x): a falling root (the lob's) as a rising one for the root finders.</summary>
+        private struct MirroredMargin<T> : IAimMargin
+            where T : struct, IAimMargin
+        {
+            private T _inner;
+
+            public MirroredMargin(in T inner) => _inner = inner;
+
+            public double Evaluate(double x, out AimSolution solution) => _inner.Evaluate(-x, out solution);
         }
 
         private struct ElevationMargin : IAimMargin

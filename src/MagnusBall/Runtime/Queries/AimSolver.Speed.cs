@@ -7,18 +7,28 @@ namespace MagnusBall.Queries
 {
     public sealed partial class AimSolver
     {
-        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target)
+        private AimSolution SpeedToReachCore(
+            in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target, in AimObstacle obstacle)
+        {
+            CheckTarget(position, target);
+            AimGoal goal = TargetGoal(position, target, spin);
+            AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
+            AimSolution s = SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, spin, target);
+            return obstacle.IsNone ? s : CheckClears(s, wall);
+        }
+
+        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target)
         {
             CheckTarget(position, target);
             Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
-            Require.Finite(azimuthRadians, nameof(azimuthRadians));
+            Require.Finite(azimuthFromTargetRadians, nameof(azimuthFromTargetRadians));
             AimGoal goal = TargetGoal(position, target, spin);
-            _trials.StartSolve();
-            var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthRadians);
+            _trials.StartSolve(SolveBudget);
+            var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthFromTargetRadians);
             double scan = 0.01 * MaximumSpeed;
 
             // The fast path: from the vacuum's speed, within [1 %, 100 %] of the maximum (below, the scan's crawl rule).
-            double guess = VacuumAim.Speed(_gravity, elevationRadians, PathToTarget(goal, azimuthRadians), goal.Rise, out double slope);
+            double guess = VacuumAim.Speed(_gravity, elevationRadians, PathToTarget(goal, azimuthFromTargetRadians), goal.Rise, out double slope);
             if (SolveFromGuess(ref margin, guess, slope, scan, MaximumSpeed, 0.25 * MaximumSpeed, SpeedTolerance, out _, out AimSolution atRoot))
             {
                 return WithFlights(atRoot);
@@ -58,12 +68,12 @@ namespace MagnusBall.Queries
                 flo = fv;
             }
 
-            return UnreachableSpeed(elevationRadians, azimuthRadians);
+            return UnreachableSpeed(elevationRadians, azimuthFromTargetRadians);
         }
 
-        private AimSolution UnreachableSpeed(double elevationRadians, double azimuthRadians) =>
+        private AimSolution UnreachableSpeed(double elevationRadians, double azimuthFromTargetRadians) =>
             new AimSolution(
-                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
+                AimStatus.Unreachable, MaximumSpeed, elevationRadians, azimuthFromTargetRadians, default, default, default, double.PositiveInfinity, _trials.Flights);
 
         private struct SpeedMargin : IAimMargin
         {

@@ -20,7 +20,7 @@ namespace MagnusBall.Queries
     /// <remarks>
     /// <para><b>Trials.</b> Every trial is a full flight through the one flight core (<see cref="FlightStepper"/>) with
     /// the plane crossing located on the step's dense output. A solver built without an integrator
-    /// (<see cref="AimSolver(FlightModel, Plane, double, double, double, double, double)"/>) flies adaptive
+    /// (<see cref="AimSolver(FlightModel, Plane, double, double, double, double, double, long)"/>) flies adaptive
     /// Dormand-Prince 5(4) trials (<see cref="FlightStepper.TryStepAdaptive"/>, relative and absolute tolerance
     /// <see cref="TrialTolerance"/> = 1e-8; the early trials of a solve, far from its answer, at 1e-5), events on the
     /// method's own interpolant. Its answers are within 2e-8 rad (1.2e-6 degree) and 1e-7 m/s of the same solve with
@@ -34,7 +34,9 @@ namespace MagnusBall.Queries
     /// should not be below the ground, where a trial lands only after rising through it and coming back down.</para>
     /// <para><b>Which answer.</b> For target solves the frame's forward is the horizontal direction from the launch
     /// point to the target and the target plane passes through the target with that normal. Heights are measured
-    /// along up. The lowest solution is returned (a drive, not a lob): the lower limit when even it works; else the
+    /// along up. With <see cref="AimArc.High"/> the highest solution is returned (the lob), found the same way mirrored
+    /// (the upper limit, the vacuum's higher elevation, the scan downward). Otherwise the lowest solution is returned (a
+    /// drive, not a lob): the lower limit when even it works; else the
     /// root reached from the vacuum's lower angle (or lowest speed), accepted only where the margin grows through it
     /// (below it the shot falls short); else the first one the scan finds upward from the lower limit in steps of the
     /// scan width, so a solution window narrower than the scan width can be missed there.</para>
@@ -66,6 +68,15 @@ namespace MagnusBall.Queries
         /// </summary>
         internal const long MaxEvaluationsPerSolve = 1_000_000;
 
+        /// <summary>The default work budget of an adaptive solver's solve (about 1 ms on a desktop core; an ordinary solve makes 200-700).</summary>
+        internal const long DefaultAdaptiveEvaluationsPerSolve = 20_000;
+
+        /// <summary>The smallest work budget a solver takes.</summary>
+        internal const long MinimumEvaluationsPerSolve = 1_000;
+
+        /// <summary>The largest work budget a solver takes.</summary>
+        internal const long MaximumEvaluationsPerSolveAllowed = 1_000_000_000;
+
         /// <summary>
         /// The relative and absolute tolerance (m, m/s, rad/s per component) of adaptive trials' Dormand-Prince steps: a 24 m
         /// tennis shot's arrival is then within about 1e-8 m of RK4 at 1/240 s, which moves an elevation root by less than
@@ -85,8 +96,20 @@ namespace MagnusBall.Queries
         /// </summary>
         private const double ConvergedMiss = 1e-4;
 
+        /// <summary>
+        /// A two-angle Broyden solve gives up when its residual (height margin plus sideways miss, m) is not below half of what
+        /// it was this many trials earlier: one that converges shrinks it by orders of magnitude in that many trials.
+        /// </summary>
+        private const int BroydenStallSteps = 5;
+
         /// <summary>The largest secant step in elevation or azimuth, rad (20 degrees).</summary>
         private const double AngleStride = 0.35;
+
+        /// <summary>The most trials of the reach probe before a scan (golden sections of 125 degrees down to about 1 degree).</summary>
+        private const int ProbeTrials = 12;
+
+        /// <summary>The reach probe calls a target out of reach only when its best trial comes this far short, m (the coarse trials' error is far smaller).</summary>
+        private const double ProbeSlack = 1e-3;
 
         /// <summary>The tolerance of the coarse trials (the early trials of an adaptive solve, far from its answer).</summary>
         private const double CoarseTrialTolerance = 1e-5;
@@ -113,6 +136,7 @@ namespace MagnusBall.Queries
         /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
         /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>. A solution window narrower than this can be missed where the scan is used.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
+        /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. Fixed steps cost what they cost (an RK4 tennis solve at 1/240 s makes 5,000-15,000), so the default is 1,000,000.</param>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolver(
             FlightModel model,
@@ -123,9 +147,10 @@ namespace MagnusBall.Queries
             double minimumElevationDegrees = -45,
             double maximumElevationDegrees = 80,
             double elevationScanDegrees = 2,
-            double maximumSpeed = 100)
+            double maximumSpeed = 100,
+            long maximumEvaluationsPerSolve = MaxEvaluationsPerSolve)
             : this(model, Require.NotNull(integrator, nameof(integrator)), step, ground, maximumFlightTime, minimumElevationDegrees,
-                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, adaptive: false)
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: false)
         {
         }
 
@@ -140,6 +165,7 @@ namespace MagnusBall.Queries
         /// <param name="maximumElevationDegrees">Highest elevation tried, degrees; in [-89, 89], above the lowest.</param>
         /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
+        /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. The default, 20,000, is about 1 ms of tennis-model work on a desktop core; an ordinary drive makes 200-700, a lob a few thousand (docs/queries.md).</param>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
         public AimSolver(
             FlightModel model,
@@ -148,9 +174,10 @@ namespace MagnusBall.Queries
             double minimumElevationDegrees = -45,
             double maximumElevationDegrees = 80,
             double elevationScanDegrees = 2,
-            double maximumSpeed = 100)
+            double maximumSpeed = 100,
+            long maximumEvaluationsPerSolve = DefaultAdaptiveEvaluationsPerSolve)
             : this(model, TrialMethod, LongestAdaptiveStep, ground, maximumFlightTime, minimumElevationDegrees,
-                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, adaptive: true)
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: true)
         {
         }
 
@@ -164,6 +191,7 @@ namespace MagnusBall.Queries
             double maximumElevationDegrees,
             double elevationScanDegrees,
             double maximumSpeed,
+            long maximumEvaluationsPerSolve,
             bool adaptive)
         {
             Require.NotNull(model, nameof(model));
@@ -204,6 +232,14 @@ namespace MagnusBall.Queries
             MaximumElevationRadians = maximumElevationDegrees * (Math.PI / 180);
             ElevationScanRadians = elevationScanDegrees * (Math.PI / 180);
             MaximumSpeed = Require.Positive(maximumSpeed, nameof(maximumSpeed));
+            if (maximumEvaluationsPerSolve < MinimumEvaluationsPerSolve || maximumEvaluationsPerSolve > MaximumEvaluationsPerSolveAllowed)
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(maximumEvaluationsPerSolve), maximumEvaluationsPerSolve,
+                    $"maximumEvaluationsPerSolve must be in [{MinimumEvaluationsPerSolve}, {MaximumEvaluationsPerSolveAllowed}] model evaluations plus steps; got {maximumEvaluationsPerSolve}.");
+            }
+
+            MaximumEvaluations = maximumEvaluationsPerSolve;
             Model = model;
             Integrator = integrator;
             _gravity = model.Gravity.Length;
@@ -240,6 +276,17 @@ namespace MagnusBall.Queries
         /// <summary>Highest speed tried, m/s.</summary>
         internal double MaximumSpeed { get; }
 
+        /// <summary>The work budget of one solve (model evaluations plus steps).</summary>
+        internal long MaximumEvaluations { get; }
+
+        /// <summary>A caller's lower cap on the next solves' budget (<see cref="SwingAim"/>'s remaining budget); long.MaxValue: none.</summary>
+        internal long BudgetCap { get; set; } = long.MaxValue;
+
+        /// <summary>Model evaluations plus steps of the last solve.</summary>
+        internal long LastWork => _trials.Work;
+
+        private long SolveBudget => Math.Min(MaximumEvaluations, BudgetCap);
+
         /// <summary>
         /// (a) The lowest elevation at which a ball launched from <paramref name="position"/> at
         /// <paramref name="speed"/> crosses <paramref name="plane"/> (along its normal, before landing) at least
@@ -259,7 +306,7 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// (b) The lowest elevation at which a ball launched from <paramref name="position"/> at
-        /// <paramref name="speed"/> toward <paramref name="target"/> (turned by <paramref name="azimuthRadians"/>)
+        /// <paramref name="speed"/> toward <paramref name="target"/> (turned by <paramref name="azimuthFromTargetRadians"/>)
         /// passes the target's plane at the target's height; for a target on the ground, lands on it. The lateral
         /// miss (a curving ball) is not corrected: see <see cref="AnglesToReach"/>.
         /// </summary>
@@ -267,11 +314,15 @@ namespace MagnusBall.Queries
         /// <param name="speed">Launch speed, m/s; finite and &gt; 0.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
-        /// <param name="azimuthRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
+        /// <param name="azimuthFromTargetRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
+        /// <param name="arc">The low (flat) or high (lob) solution where both exist.</param>
+        /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable (no elevation reaches the target at this speed), Blocked (every one that does hits the obstacle) or WorkLimitReached.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution ElevationToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthRadians = 0) =>
-            Finish(ElevationToReachCore(position, speed, spin, target, azimuthRadians));
+        public AimSolution ElevationToReach(
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthFromTargetRadians = 0,
+            AimArc arc = AimArc.Low, AimObstacle obstacle = default) =>
+            Finish(ElevationToReachCore(position, speed, spin, target, azimuthFromTargetRadians, arc, obstacle));
 
         /// <summary>
         /// (b') The elevation and azimuth at which a ball launched from <paramref name="position"/> at
@@ -288,10 +339,14 @@ namespace MagnusBall.Queries
         /// <param name="spin">The spin, by effect relative to the launch direction (sidespin curves toward the frame's side).</param>
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
         /// <param name="maximumAzimuthDegrees">The largest azimuth turn tried either way, degrees; in (0, 89].</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
+        /// <param name="arc">The low (flat) or high (lob) solution where both exist.</param>
+        /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (every launch that reaches the target hits the obstacle) or WorkLimitReached.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution AnglesToReach(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45) =>
-            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees));
+        public AimSolution AnglesToReach(
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45,
+            AimArc arc = AimArc.Low, AimObstacle obstacle = default) =>
+            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees, arc, obstacle));
 
         /// <summary>
         /// (c) The lowest speed at which a ball launched from <paramref name="position"/> at the given elevation
@@ -299,13 +354,16 @@ namespace MagnusBall.Queries
         /// </summary>
         /// <param name="position">Launch point, m; finite.</param>
         /// <param name="elevationRadians">Launch elevation, rad; in (-pi/2, pi/2).</param>
-        /// <param name="azimuthRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
+        /// <param name="azimuthFromTargetRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target) or Unreachable.</returns>
+        /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (the speed that reaches the target hits the obstacle) or WorkLimitReached.</returns>
         /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
-        public AimSolution SpeedToReach(in Vector3d position, double elevationRadians, double azimuthRadians, in LaunchSpin spin, in Vector3d target) =>
-            Finish(SpeedToReachCore(position, elevationRadians, azimuthRadians, spin, target));
+        public AimSolution SpeedToReach(
+            in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target,
+            AimObstacle obstacle = default) =>
+            Finish(SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, spin, target, obstacle));
 
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
@@ -314,11 +372,56 @@ namespace MagnusBall.Queries
         // A solve that reached its work cap says so, whatever its search ended on.
         private AimSolution Finish(in AimSolution s) =>
             _trials.WorkLimitReached
-                ? new AimSolution(AimStatus.WorkLimitReached, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, s.Simulations)
+                ? new AimSolution(AimStatus.WorkLimitReached, s.Speed, s.ElevationRadians, s.AzimuthFromTargetRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, s.Simulations)
                 : s;
 
         private AimSolution WithFlights(in AimSolution s, AimStatus? status = null) =>
-            new AimSolution(status ?? s.Status, s.Speed, s.ElevationRadians, s.AzimuthRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, _trials.Flights);
+            new AimSolution(status ?? s.Status, s.Speed, s.ElevationRadians, s.AzimuthFromTargetRadians, s.Velocity, s.AngularVelocity, s.Arrival, s.Miss, _trials.Flights);
+
+        /// <summary>
+        /// The goal of clearing <paramref name="obstacle"/> on the way to <paramref name="goal"/>'s target: its plane across the
+        /// target frame's forward at its distance, the ball's centre at least a radius above its top. Checks the obstacle
+        /// against the target: it must stand short of it.
+        /// </summary>
+        private AimGoal ObstacleGoal(in AimGoal goal, in AimObstacle obstacle)
+        {
+            double toTarget = Vector3d.DotOfDifference(goal.Target, goal.Position, goal.Frame.Forward);
+            if (!(obstacle.DistanceMeters < toTarget))
+            {
+                throw new ArgumentException(
+                    $"obstacle must stand short of the target: its distance must be in (0, {Require.Format(toTarget)}) m (the target's horizontal distance); got {Require.Format(obstacle.DistanceMeters)} m.",
+                    nameof(obstacle));
+            }
+
+            Vector3d required = Ground.Point + Ground.Normal * (obstacle.TopHeightMeters + Model.Ball.Radius);
+            if (!required.IsFinite)
+            {
+                throw new ArgumentException(
+                    $"obstacle's top must keep the required point (the ground's point plus its normal times the top height and the ball's radius) within the range of a double; got {Require.Format(obstacle.TopHeightMeters)} m.",
+                    nameof(obstacle));
+            }
+
+            var plane = new Plane(goal.Position + goal.Frame.Forward * obstacle.DistanceMeters, goal.Frame.Forward);
+            return new AimGoal(goal.Position, goal.Frame, goal.Spin, plane, required, missToTarget: false);
+        }
+
+        /// <summary>
+        /// A solved target launch checked against the obstacle by one trial to its plane: itself when the ball's bottom passes
+        /// above the top; else Blocked, with the clearance (negative) as the miss. Unsolved results pass through.
+        /// </summary>
+        private AimSolution CheckClears(in AimSolution s, in AimGoal obstacleGoal)
+        {
+            if (!s.IsSolved)
+            {
+                return s;
+            }
+
+            double clearance = _trials.Margin(obstacleGoal, s.Speed, s.ElevationRadians, s.AzimuthFromTargetRadians, out _);
+            return clearance >= 0
+                ? WithFlights(s)
+                : new AimSolution(AimStatus.Blocked, s.Speed, s.ElevationRadians, s.AzimuthFromTargetRadians, s.Velocity, s.AngularVelocity, s.Arrival,
+                    double.IsNaN(clearance) ? double.NegativeInfinity : clearance, _trials.Flights);
+        }
 
         private static void CheckTarget(in Vector3d position, in Vector3d target)
         {

@@ -94,17 +94,27 @@ namespace MagnusBall.Queries
         /// <summary>Model evaluations plus steps of the solve's finished trials.</summary>
         public long Work { get; private set; }
 
-        /// <summary>True once the solve reached <see cref="AimSolver.MaxEvaluationsPerSolve"/>: later trials are not flown.</summary>
+        /// <summary>True once the solve reached its <see cref="Budget"/>: later trials are not flown.</summary>
         public bool WorkLimitReached { get; private set; }
 
-        /// <summary>Starts counting a new solve's flights and work.</summary>
-        public void StartSolve()
+        /// <summary>The current solve's work budget: model evaluations plus steps over all its trials.</summary>
+        public long Budget { get; private set; } = AimSolver.MaxEvaluationsPerSolve;
+
+        /// <summary>Starts counting a new solve's flights and work, within <paramref name="budget"/> evaluations plus steps.</summary>
+        public void StartSolve(long budget)
         {
             Flights = 0;
             Work = 0;
             WorkLimitReached = false;
+            Budget = budget;
             _firstStep = 0;
         }
+
+        /// <summary>
+        /// Starts a second search within the solve (the lob after a blocked drive): its first trial sets the first step of
+        /// the trials after it anew, so the search flies the same trials as a solve of its own; flights and work go on counting.
+        /// </summary>
+        public void RestartFirstStep() => _firstStep = 0;
 
         /// <summary>
         /// One trial launch at the given speed, elevation and azimuth: its signed margin (&gt;= 0 when it arrives at or
@@ -202,10 +212,10 @@ namespace MagnusBall.Queries
             const FlightEventKinds stopAt = FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing;
             // Bounded: fixed trials advance the clock by a step per pass (at most maximumFlightTime / step + 1 passes, the
             // last step trimmed to the time limit by the one end-time rule); adaptive trials take at most
-            // MaximumAdaptiveSteps steps; no trial goes past the solve's work cap.
+            // MaximumAdaptiveSteps steps; no trial goes past the solve's work budget.
             for (int pass = 0; ; pass++)
             {
-                if (Work + stepper.DerivativeEvaluations + stepper.StepCount >= AimSolver.MaxEvaluationsPerSolve)
+                if (Work + stepper.DerivativeEvaluations + stepper.StepCount >= Budget)
                 {
                     WorkLimitReached = true; // this trial fails; the solve returns WorkLimitReached
                     break;

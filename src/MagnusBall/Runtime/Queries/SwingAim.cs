@@ -27,7 +27,7 @@ namespace MagnusBall.Queries
             Iterations = iterations;
         }
 
-        /// <summary>Solved or unreachable.</summary>
+        /// <summary>Solved, unreachable (the swing cannot send the ball there) or stopped at the work budget (<see cref="AimStatus.WorkLimitReached"/>).</summary>
         public AimStatus Status { get; }
 
         /// <summary>True when solved.</summary>
@@ -84,28 +84,82 @@ namespace MagnusBall.Queries
         /// </summary>
         internal const double MissTolerance = 1e-4;
 
+        /// <summary>The default budget of one inverse call on an adaptive solver, in aim solves' budgets.</summary>
+        internal const int DefaultSolvesOfWork = 3;
+
+        /// <summary>
+        /// The default budget of one inverse call on a fixed-step solver, in aim solves' budgets: its solves of a target below
+        /// the ground (a court point with the ground at the ball's centre) take hundreds of trials each.
+        /// </summary>
+        internal const int DefaultFixedStepSolvesOfWork = 10;
+
+        /// <summary>The largest budget of one inverse call.</summary>
+        internal const long MaximumEvaluationsAllowed = 1_000_000_000_000;
+
+        /// <summary>
+        /// The residual must shrink to this part of what it was <see cref="StallIterations"/> accepted steps earlier; a
+        /// Broyden run that converges shrinks it by orders of magnitude in that many steps, one toward a target beyond the
+        /// swing's reach creeps along the edge of its reach and is called Unreachable.
+        /// </summary>
+        private const double StallRatio = 0.5;
+
+        /// <summary>See <see cref="StallRatio"/>.</summary>
+        private const int StallIterations = 2;
+
+        /// <summary>
+        /// A step whose first <see cref="EdgeTrials"/> trials (or more) are out of the aim solver's reach and whose accepted
+        /// trial shrinks the residual by less than <see cref="EdgeProgress"/> ends the solve as Unreachable.
+        /// </summary>
+        private const int EdgeTrials = 2;
+
+        /// <summary>See <see cref="EdgeTrials"/>.</summary>
+        private const double EdgeProgress = 0.1;
+
         private const double DifferenceDegrees = 1e-4;
         private const int MaximumHalvings = 12;
 
+        private static long Budget(AimSolver solver, long maximumEvaluations)
+        {
+            if (maximumEvaluations == 0)
+            {
+                return (solver.IsAdaptive ? DefaultSolvesOfWork : DefaultFixedStepSolvesOfWork) * solver.MaximumEvaluations;
+            }
+
+            long value = maximumEvaluations;
+            if (value < AimSolver.MinimumEvaluationsPerSolve || value > MaximumEvaluationsAllowed)
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(maximumEvaluations), value,
+                    $"maximumEvaluations must be in [{AimSolver.MinimumEvaluationsPerSolve}, {MaximumEvaluationsAllowed}] model evaluations plus steps, or 0 for the default; got {value}.");
+            }
+
+            return value;
+        }
+
         /// <summary>Creates the inverse on an aim solver; the swings hit the ball its model flies.</summary>
         /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
+        /// <param name="maximumEvaluations">The work budget of one inverse call: model evaluations plus steps over all its aim solves, in [1,000, 1e12], or 0; past it the call returns <see cref="AimStatus.WorkLimitReached"/>. 0 (the default): 3 times the solver's budget per solve for an adaptive solver (60,000 for its default: about 11 ms of golf-preset work, where an ordinary inverse makes 2,000-5,000), 10 times for a fixed-step one (10,000,000 for its default).</param>
         /// <exception cref="ArgumentNullException"><paramref name="solver"/> is null.</exception>
-        public SwingAim(AimSolver solver)
+        /// <exception cref="ArgumentException"><paramref name="maximumEvaluations"/> is out of range.</exception>
+        public SwingAim(AimSolver solver, long maximumEvaluations = 0)
         {
             Solver = Require.NotNull(solver, nameof(solver));
             Ball = solver.Model.Ball;
+            MaximumEvaluations = Budget(solver, maximumEvaluations);
         }
 
         /// <summary>Creates the inverse on an aim solver, naming the ball the swings hit (it must be the one the solver's model flies).</summary>
         /// <param name="solver">The aim solver (model, integrator, step, ground); not null.</param>
         /// <param name="ball">The ball the swings hit; not null, with the mass, radius and inertia factor of the solver's model's ball
         /// (the impact and the trial flights are of one ball).</param>
+        /// <param name="maximumEvaluations">The work budget of one inverse call (see <see cref="SwingAim(AimSolver, long)"/>); 0: the default.</param>
         /// <exception cref="ArgumentNullException">An argument is null.</exception>
-        /// <exception cref="ArgumentException"><paramref name="ball"/> is not the model's ball (a tennis ball hit and flown with a soccer model's aerodynamics).</exception>
-        public SwingAim(AimSolver solver, Ball ball)
+        /// <exception cref="ArgumentException"><paramref name="ball"/> is not the model's ball (a tennis ball hit and flown with a soccer model's aerodynamics), or <paramref name="maximumEvaluations"/> is out of range.</exception>
+        public SwingAim(AimSolver solver, Ball ball, long maximumEvaluations = 0)
         {
             Solver = Require.NotNull(solver, nameof(solver));
             Ball = Require.NotNull(ball, nameof(ball));
+            long budget = Budget(solver, maximumEvaluations);
             Ball flown = solver.Model.Ball;
             if (ball.Mass != flown.Mass || ball.Radius != flown.Radius || ball.InertiaFactor != flown.InertiaFactor)
             {
@@ -115,10 +169,20 @@ namespace MagnusBall.Queries
                     FormattableString.Invariant($"({flown.Mass} kg, radius {flown.Radius} m, inertia factor {flown.InertiaFactor}): the swing hits the ball its trials fly."),
                     nameof(ball));
             }
+
+            MaximumEvaluations = budget;
         }
 
         /// <summary>The aim solver.</summary>
         internal AimSolver Solver { get; }
+
+        /// <summary>The work budget of one inverse call (model evaluations plus steps over its aim solves).</summary>
+        internal long MaximumEvaluations { get; }
+
+        /// <summary>Model evaluations plus steps of the last inverse call.</summary>
+        internal long LastWork { get; private set; }
+
+        private bool _budgetReached;
 
         /// <summary>The ball.</summary>
         internal Ball Ball { get; }
@@ -253,6 +317,26 @@ namespace MagnusBall.Queries
             where TSwing : struct
             where TFamily : struct, IFamily<TSwing>
         {
+            LastWork = 0;
+            _budgetReached = false;
+            try
+            {
+                SwingSolution<TSwing> s = Broyden<TSwing, TFamily>(ref family, aimFrame, x1, x2, position, target, maximumAzimuthDegrees);
+                return _budgetReached && !s.IsSolved
+                    ? new SwingSolution<TSwing>(AimStatus.WorkLimitReached, s.Swing, s.Launch, s.Aim, s.Iterations)
+                    : s;
+            }
+            finally
+            {
+                Solver.BudgetCap = long.MaxValue;
+            }
+        }
+
+        private SwingSolution<TSwing> Broyden<TSwing, TFamily>(
+            ref TFamily family, in LaunchFrame aimFrame, double x1, double x2, in Vector3d position, in Vector3d target, double maximumAzimuthDegrees)
+            where TSwing : struct
+            where TFamily : struct, IFamily<TSwing>
+        {
             TSwing current = family.With(x1, x2);
             if (!Residual<TSwing, TFamily>(ref family, current, aimFrame, position, target, maximumAzimuthDegrees,
                     out SwingLaunch launch, out AimSolution aim, out double r1, out double r2))
@@ -269,11 +353,26 @@ namespace MagnusBall.Queries
             }
 
             j11 = -j11; j12 = -j12; j21 = -j21; j22 = -j22;
+            // The residual's norm after each accepted step, for the stall test (a ring of the last StallIterations + 1).
+            Span<double> norms = stackalloc double[StallIterations + 1];
+            norms[0] = Math.Sqrt(r1 * r1 + r2 * r2);
             for (int iteration = 1; iteration <= MaximumIterations; iteration++)
             {
                 if (Math.Abs(r1) <= AngleTolerance && Math.Abs(r2) <= AngleTolerance)
                 {
                     return new SwingSolution<TSwing>(AimStatus.Solved, current, launch, aim, iteration);
+                }
+
+                if (_budgetReached)
+                {
+                    break;
+                }
+
+                if (iteration > StallIterations && !(norms[(iteration - 1) % norms.Length] <= StallRatio * norms[(iteration - 1 - StallIterations) % norms.Length]))
+                {
+                    // The residual stopped shrinking: the swing creeps along the edge of its reach (a target too far for
+                    // its speed). Say so now rather than after MaximumIterations steps of up to MaximumHalvings solves each.
+                    return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, iteration);
                 }
 
                 double determinant = j11 * j22 - j12 * j21;
@@ -287,6 +386,7 @@ namespace MagnusBall.Queries
                 double dx2 = -(j11 * r2 - j21 * r1) / determinant;
                 double norm = Math.Sqrt(r1 * r1 + r2 * r2);
                 bool accepted = false;
+                int outOfReach = 0; // trial swings whose launch the aim solver could not bring to the target
                 double scale = 1;
                 for (int halving = 0; halving < MaximumHalvings && !accepted; halving++, scale *= 0.5)
                 {
@@ -300,6 +400,7 @@ namespace MagnusBall.Queries
                     if (!Residual<TSwing, TFamily>(ref family, trial, aimFrame, position, target, maximumAzimuthDegrees,
                             out SwingLaunch trialLaunch, out AimSolution trialAim, out double s1, out double s2))
                     {
+                        outOfReach += trialAim.Status == AimStatus.Unreachable ? 1 : 0;
                         continue;
                     }
 
@@ -326,13 +427,36 @@ namespace MagnusBall.Queries
                     accepted = true;
                 }
 
-                if (!accepted)
+                norms[iteration % norms.Length] = Math.Sqrt(r1 * r1 + r2 * r2);
+                if (accepted && outOfReach >= EdgeTrials && !(norms[iteration % norms.Length] <= (1 - EdgeProgress) * norm))
+                {
+                    // The Newton step led out of reach, and the step back inside barely helped: the swing sits at the edge
+                    // of its reach, short of the target (a flag too far for the club's speed). Say so after this one step.
+                    return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, iteration + 1);
+                }
+
+                if (!accepted || _budgetReached)
                 {
                     break;
                 }
             }
 
             return new SwingSolution<TSwing>(AimStatus.Unreachable, current, launch, aim, MaximumIterations);
+        }
+
+        // One aim solve within what is left of the call's budget (at least the solver's smallest budget: the last solve may
+        // overrun the call's budget by that much).
+        private AimSolution Aim(in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees)
+        {
+            Solver.BudgetCap = Math.Max(AimSolver.MinimumEvaluationsPerSolve, MaximumEvaluations - LastWork);
+            AimSolution aim = Solver.AnglesToReach(position, speed, spin, target, maximumAzimuthDegrees);
+            LastWork += Solver.LastWork;
+            if (aim.Status == AimStatus.WorkLimitReached || LastWork >= MaximumEvaluations)
+            {
+                _budgetReached = true;
+            }
+
+            return aim;
         }
 
         private bool Residual<TSwing, TFamily>(
@@ -349,14 +473,19 @@ namespace MagnusBall.Queries
                 return false;
             }
 
-            aim = Solver.AnglesToReach(position, launch.Speed, launch.LaunchSpin, target, maximumAzimuthDegrees);
+            if (_budgetReached)
+            {
+                return false;
+            }
+
+            aim = Aim(position, launch.Speed, launch.LaunchSpin, target, maximumAzimuthDegrees);
             if (!aim.IsSolved || !(Miss(aim, position, target) <= MissTolerance))
             {
                 return false;
             }
 
             elevationError = Wrap(aim.ElevationRadians - launch.ElevationRadians);
-            azimuthError = Wrap(aim.AzimuthRadians - launch.AzimuthRadians);
+            azimuthError = Wrap(aim.AzimuthFromTargetRadians - launch.AzimuthRadians);
             return true;
         }
 

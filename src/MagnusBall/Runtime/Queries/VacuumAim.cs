@@ -42,6 +42,34 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>
+        /// The higher elevation (rad, the lob) at which a ball launched at <paramref name="speed"/> passes
+        /// <paramref name="rise"/> above the launch point after a horizontal path of <paramref name="distance"/>; NaN when
+        /// no elevation does it in a vacuum. <paramref name="slope"/>: d(height there)/d(elevation), m/rad (&lt;= 0 there).
+        /// </summary>
+        /// <remarks>The higher root of a T^2 - x T + (a + rise) = 0 (see <see cref="LowElevation"/>): T = (x + sqrt(D)) / (2 a);
+        /// the slope is -(1 + T^2) sqrt(D).</remarks>
+        public static double HighElevation(double gravity, double speed, double distance, double rise, out double slope)
+        {
+            slope = double.NaN;
+            if (!(distance > 0) || !(speed > 0) || !(gravity > 0))
+            {
+                return double.NaN;
+            }
+
+            double a = gravity * distance * distance / (2 * speed * speed);
+            double discriminant = distance * distance - 4 * a * (a + rise);
+            if (!(a > 0) || !(discriminant >= 0) || !double.IsFinite(discriminant))
+            {
+                return double.NaN;
+            }
+
+            double root = Math.Sqrt(discriminant);
+            double t = (distance + root) / (2 * a);
+            slope = -(1 + t * t) * root;
+            return double.IsFinite(slope) ? PortableMath.Atan(t) : double.NaN;
+        }
+
+        /// <summary>
         /// The speed (m/s) at which a ball launched at <paramref name="elevation"/> passes <paramref name="rise"/> above the
         /// launch point after a horizontal path of <paramref name="distance"/>; NaN when none does (the line of the launch
         /// passes at or below the point). <paramref name="slope"/>: d(height there)/d(speed), m per m/s.
