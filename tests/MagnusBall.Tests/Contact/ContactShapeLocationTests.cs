@@ -82,7 +82,7 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
-        public void BankShot_OffTheBackboard_ThenTheRim_NamesEach()
+        public void BankShot_AtTheBackboard_NamesIt()
         {
             var model = new FlightModel(new Ball(0.62, 0.121, 2.0 / 3), Air.SeaLevel, Gravity.ZUp); // a size-7 basketball, drag-free
             ContactShape[] hoop = SportShapes.BasketballHoop(30, Vector3d.Zero, Vector3d.UnitX, Vector3d.UnitZ);
