@@ -1,8 +1,11 @@
 using System;
 using MagnusBall.Batch;
+using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
+using MagnusBall.Shots;
 using MagnusBall.Stepping;
 
 namespace MagnusBall.Benchmarks
@@ -43,6 +46,8 @@ namespace MagnusBall.Benchmarks
         private static readonly MagnusBall.Contact.Swings.ClubSwing Club37 = new MagnusBall.Contact.Swings.ClubSwing(37, 8, -2);
         private LaunchSpin _spin;
         private Plane _net;
+        private FlightStepper _courtFlight = null!;
+        private FlightStepper _courtFlightTenShapes = null!;
 
         public void Setup()
         {
@@ -98,6 +103,21 @@ namespace MagnusBall.Benchmarks
             FlightModel golf = MagnusBall.Presets.SportPresets.Golf.CreateModel(Air.SeaLevel, Scenarios.G);
             _club = new SwingAim(new AimSolver(golf, Plane.Ground(golf), maximumFlightTime: 20)); // adaptive trials, default budgets
             _tee = new Vector3d(0, 0, golf.Ball.Radius);
+
+            // The drive on a court it bounces on (the ground alone), and the same among ten shapes: the tennis net (two cord
+            // halves, the mesh, two posts), the two back fences, the two side fences and the umpire's chair (issue 40's cost).
+            var court = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ));
+            _courtFlight = new FlightStepper(_fullModel, RungeKutta4.Instance, FlightEventSet.ForModel(_fullModel), court);
+            var fence = new ContactProperties(0.3, 0.5);
+            var shapes = new System.Collections.Generic.List<ContactShape>(SportShapes.TennisNet(0, new Vector3d(11.885, 0, 0), Vector3d.UnitY, Vector3d.UnitZ))
+            {
+                BoxShape.Rectangle(5, new Vector3d(-6.4, 0, 2), Vector3d.UnitX, Vector3d.UnitY, 18.29, 4, fence),
+                BoxShape.Rectangle(6, new Vector3d(30.17, 0, 2), -Vector3d.UnitX, Vector3d.UnitY, 18.29, 4, fence),
+                BoxShape.Rectangle(7, new Vector3d(11.885, -9.15, 2), Vector3d.UnitY, Vector3d.UnitX, 36.57, 4, fence),
+                BoxShape.Rectangle(8, new Vector3d(11.885, 9.15, 2), -Vector3d.UnitY, Vector3d.UnitX, 36.57, 4, fence),
+                new BoxShape(9, new Vector3d(11.885, -7, 1), new Vector3d(0.4, 0.4, 1), Vector3d.UnitX, Vector3d.UnitY, fence),
+            };
+            _courtFlightTenShapes = new FlightStepper(_fullModel, RungeKutta4.Instance, FlightEventSet.ForModel(_fullModel), court, shapes.ToArray());
         }
 
         private BallBatch Crowd(int count, Plane ground)
@@ -182,6 +202,23 @@ namespace MagnusBall.Benchmarks
             }
 
             return state.Position.X;
+        }
+
+        /// <summary>The drive on a court (a GroundContact: it bounces), 2 s of 480 RK4 steps of 1/240 s, the ground alone.</summary>
+        public double FlightGround() => FlyCourt(_courtFlight);
+
+        /// <summary>The same among ten contact shapes (the tennis net's five, four fences, the umpire's chair).</summary>
+        public double FlightTenShapes() => FlyCourt(_courtFlightTenShapes);
+
+        private double FlyCourt(FlightStepper flight)
+        {
+            flight.Reset(_start);
+            for (int i = 0; i < ShotSteps && !flight.IsStopped; i++)
+            {
+                flight.TryStep(Step);
+            }
+
+            return flight.State.Position.X;
         }
 
         /// <summary>A 2 s predicted shot (480 RK4 steps) with the landing and apex events, thesis model.</summary>
