@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
@@ -118,14 +119,17 @@ namespace MagnusBall.Queries
         /// <param name="integrator">The integration method.</param>
         /// <param name="step">The fixed step, s; finite and &gt; 0.</param>
         /// <param name="events">The events to locate; null for <see cref="FlightEventSet.ForModel"/> (landing on the ground through the origin, and the apex).</param>
+        /// <param name="shapes">Shapes the ball meets on the way (a net, posts, a wall: <c>MagnusBall.Contact.Shapes</c>, docs/contacts.md):
+        /// each touch is a <see cref="FlightEventKinds.Contact"/> event and the prediction goes on from the ball's response; null for none.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
         /// <exception cref="ArgumentOutOfRangeException">step is not finite and positive.</exception>
-        public TrajectoryPredictor(FlightModel model, IIntegrator integrator, double step, FlightEventSet? events = null)
+        /// <exception cref="ArgumentException">shapes holds a null entry.</exception>
+        public TrajectoryPredictor(FlightModel model, IIntegrator integrator, double step, FlightEventSet? events = null, ContactShape[]? shapes = null)
         {
             Require.NotNull(model, nameof(model));
             Require.NotNull(integrator, nameof(integrator));
             Step = Require.Step(step, nameof(step));
-            _stepper = new FlightStepper(model, integrator, events ?? FlightEventSet.ForModel(model));
+            _stepper = new FlightStepper(model, integrator, events ?? FlightEventSet.ForModel(model), contact: null, shapes);
         }
 
         /// <summary>The fixed step, s.</summary>
