@@ -104,8 +104,8 @@ namespace MagnusBall.Benchmarks
             _club = new SwingAim(new AimSolver(golf, Plane.Ground(golf), maximumFlightTime: 20)); // adaptive trials, default budgets
             _tee = new Vector3d(0, 0, golf.Ball.Radius);
 
-            // The drive on a court it bounces on (the ground alone), and the same among ten shapes: the tennis net (two cord
-            // halves, the mesh, two posts), the two back fences, the two side fences and the umpire's chair (issue 40's cost).
+            // The drive on a court it bounces on (the ground alone), and the same among 21 shapes: the tennis net (two cord
+            // halves, twelve mesh pieces, two posts), the two back fences, the two side fences and the umpire's chair (issue 40's cost).
             var court = new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ));
             _courtFlight = new FlightStepper(_fullModel, RungeKutta4.Instance, FlightEventSet.ForModel(_fullModel), court);
             var fence = new ContactProperties(0.3, 0.5);

@@ -35,8 +35,9 @@ namespace MagnusBall.Tests.Contact
         [Test]
         public void ZeroLengthAxis_OrZeroNormal_IsRefused()
         {
-            Refused(() => new CapsuleShape(1, A, A, 0.1, C), "endB", "non-zero length");
-            Refused(() => new CylinderShape(1, B, B, 0.1, C), "endB", "non-zero length");
+            Refused(() => new CapsuleShape(1, A, A, 0.1, C), "endB", "between 1e-150 m");
+            Refused(() => new CapsuleShape(1, A, A + new Vector3d(1e-170, 0, 0), 0.1, C), "endB", "between 1e-150 m"); // its square would underflow
+            Refused(() => new CylinderShape(1, B, B, 0.1, C), "endB", "between 1e-150 m");
             Refused(() => new TorusShape(1, A, Vector3d.Zero, 0.2, 0.01, C), "axis", "non-zero");
             Refused(() => BoxShape.Rectangle(1, A, Vector3d.Zero, Vector3d.UnitX, 1, 1, C), "normal", "non-zero");
             Refused(() => BoxShape.Rectangle(1, A, Vector3d.UnitX, Vector3d.UnitX * 2, 1, 1, C), "widthDirection", "not be along");
@@ -48,7 +49,9 @@ namespace MagnusBall.Tests.Contact
         {
             Refused(() => new BoxShape(1, A, new Vector3d(1, -0.1, 1), Vector3d.UnitX, Vector3d.UnitY, C), "halfExtentsM", ">= 0");
             Refused(() => new BoxShape(1, A, new Vector3d(1, double.NaN, 1), Vector3d.UnitX, Vector3d.UnitY, C), "halfExtentsM", "finite");
-            Refused(() => BoxShape.Rectangle(1, A, Vector3d.UnitZ, Vector3d.UnitX, -1, 1, C), "widthM", ">= 0");
+            Refused(() => BoxShape.Rectangle(1, A, Vector3d.UnitZ, Vector3d.UnitX, -1, 1, C), "widthM", "> 0");
+            Refused(() => BoxShape.Rectangle(1, A, Vector3d.UnitZ, Vector3d.UnitX, 0, 1, C), "widthM", "> 0"); // a segment, not a rectangle
+            Refused(() => new BoxShape(1, A, new Vector3d(0, 0, 1), Vector3d.UnitX, Vector3d.UnitY, C), "halfExtentsM", "at most one of them 0");
             Refused(() => new BoxShape(1, A, new Vector3d(1, 1, 1), Vector3d.UnitX, Vector3d.UnitX, C), "yAxis", "not be parallel");
         }
 
@@ -59,6 +62,13 @@ namespace MagnusBall.Tests.Contact
             Refused(() => new TorusShape(1, new Vector3d(0, double.PositiveInfinity, 0), B, 0.2, 0.01, C), "centre", "finite");
             Refused(() => new CapsuleShape(1, A, B, 0.1, C, 0), "effectiveMassKg", "> 0");
             Refused(() => new CapsuleShape(1, A, B, 0.1, C, double.NaN), "effectiveMassKg", "> 0");
+            // A body lighter than 1e-12 of the ball is refused by the flight that would fly it, before any step (the impact
+            // law's limit), not in the middle of one.
+            FlightModel model = MagnusBall.Presets.SportPresets.Tennis.CreateModel(Air.SeaLevel, Gravity.ZUp);
+            var feather = new CapsuleShape(1, A, B, 0.1, C, 1e-20);
+            var e = Assert.Throws<ArgumentException>(() => new MagnusBall.Flight.FlightStepper(model, MagnusBall.Integration.RungeKutta4.Instance, shapes: new ContactShape[] { feather }));
+            Assert.That(e!.ParamName, Is.EqualTo("shapes"));
+            Assert.That(e.Message, Does.Contain("at least 1e-12 of the ball's mass"));
             Refused(() => new NetMeshShape(1, A, Vector3d.UnitX, Vector3d.UnitY, 1, 1, 1.5), "tangentialSpeedKept", "[0, 1]");
         }
 

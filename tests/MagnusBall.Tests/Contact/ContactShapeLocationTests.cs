@@ -60,7 +60,12 @@ namespace MagnusBall.Tests.Contact
         public void SportFixtures_AreWhereTheRulesPutThem()
         {
             ContactShape[] net = SportShapes.TennisNet(10, new Vector3d(11.885, 0, 0), Vector3d.UnitY, Vector3d.UnitZ);
-            Assert.That(net.Length, Is.EqualTo(5));
+            Assert.That(net.Length, Is.EqualTo(4 + 2 * SportShapes.TennisMeshPiecesPerHalf));
+            int posts = net.Length - 2;
+            double half = TennisCourt.DoublesWidthMetres / 2 + TennisCourt.PostsOutsideDoublesMetres;
+            // The posts' centres 0.914 m outside the doubles sidelines (ITF rule 1): the post's surface one post radius away.
+            Assert.That(net[posts].SignedDistance(new Vector3d(11.885, -half, 0.5), out _), Is.EqualTo(-SportShapes.TennisPostRadiusMetres).Within(1e-12));
+            Assert.That(net[posts + 1].SignedDistance(new Vector3d(11.885, half, 0.5), out _), Is.EqualTo(-SportShapes.TennisPostRadiusMetres).Within(1e-12));
             // The cord's top at the centre is 0.914 m up, at the posts 1.07 m: the cord's axis is one cord radius below.
             double r = SportShapes.TennisCordRadiusMetres;
             Assert.That(net[0].SignedDistance(new Vector3d(11.885, 0, 0.914 - r), out _), Is.EqualTo(-r).Within(1e-12));
@@ -73,12 +78,42 @@ namespace MagnusBall.Tests.Contact
             Assert.That(goal[2].SignedDistance(new Vector3d(0, 0, 2.44), out _), Is.EqualTo(0).Within(1e-12));
             ContactShape[] hoop = SportShapes.BasketballHoop(30, Vector3d.Zero, Vector3d.UnitX, Vector3d.UnitZ);
             var rim = (TorusShape)hoop[0];
-            Assert.That(rim.Centre.Z, Is.EqualTo(3.05).Within(1e-12));
+            Assert.That(rim.Centre.Z + rim.TubeRadiusM, Is.EqualTo(3.05).Within(1e-12), "the ring's upper edge 3.05 m up");
             Assert.That(rim.RingRadiusM - rim.TubeRadiusM, Is.EqualTo(0.225).Within(1e-12), "inside diameter 0.45 m");
             Assert.That(rim.Centre.X - rim.RingRadiusM + rim.TubeRadiusM, Is.EqualTo(0.15).Within(1e-12), "inside edge 0.15 m from the board");
             Assert.That(hoop[1].SignedDistance(new Vector3d(0.5, 0, 3.5), out Vector3d n), Is.EqualTo(0.5).Within(1e-12));
             Assert.That(n.X, Is.EqualTo(1).Within(1e-12));
             Assert.That(hoop[1].SignedDistance(new Vector3d(0, 0, 2.90 - 0.1), out _), Is.EqualTo(0.1).Within(1e-12), "lower edge 2.90 m up");
+        }
+
+        [Test]
+        public void TennisNet_HasNoGap_UnderItsSaggingCord()
+        {
+            // A ball crossing the net line anywhere along it, at any height under the cord, touches the mesh or the cord: the
+            // mesh pieces reach the cord's underside at their inner ends, so the gap under the cord is at most 2.6 cm, less than
+            // a ball's 6.6 cm. Probed along the net (every 5 cm) and up to the cord: the nearest net shape is within a ball's
+            // radius of the ball's centre on the net's plane.
+            ContactShape[] net = SportShapes.TennisNet(10, new Vector3d(11.885, 0, 0), Vector3d.UnitY, Vector3d.UnitZ);
+            double half = TennisCourt.DoublesWidthMetres / 2 + TennisCourt.PostsOutsideDoublesMetres;
+            double radius = 0.033;
+            int probes = 0;
+            for (double y = -half + 0.05; y < half; y += 0.05)
+            {
+                double cordTop = 0.914 + (1.07 - 0.914) * Math.Abs(y) / half;
+                for (double z = radius; z < cordTop; z += 0.01)
+                {
+                    double nearest = double.PositiveInfinity;
+                    foreach (ContactShape shape in net)
+                    {
+                        nearest = Math.Min(nearest, shape.SignedDistance(new Vector3d(11.885, y, z), out _));
+                    }
+
+                    Assert.That(nearest, Is.LessThan(radius), $"a ball at y = {y:F2} m, z = {z:F2} m passes through the net");
+                    probes++;
+                }
+            }
+
+            Assert.That(probes, Is.GreaterThan(20_000));
         }
 
         [Test]

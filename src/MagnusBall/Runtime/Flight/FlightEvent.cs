@@ -34,6 +34,7 @@ namespace MagnusBall.Flight
         /// The ball touched one of the flight's contact shapes (<see cref="MagnusBall.Contact.Shapes.ContactShape"/>) and was
         /// answered by it: <see cref="FlightEvent.ShapeId"/> names the shape, <see cref="FlightEvent.ContactNormal"/> is its outward
         /// normal at the contact, <see cref="FlightEvent.State"/> the ball arriving and <see cref="FlightEvent.After"/> leaving.
+        /// The flight always goes on from the ball's response: a stop kind (stopAt) that names Contact does not stop it.
         /// </summary>
         Contact = 32,
 

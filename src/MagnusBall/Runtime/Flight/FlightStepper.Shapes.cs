@@ -67,7 +67,7 @@ namespace MagnusBall.Flight
         }
 
         // The ball touches shape `index` at `contactTime` on the piece: the piece is cut there and the shape answers the ball
-        // (Contact.Impact through ContactShape.Respond), or, a slow touch where gravity holds the ball on the shape, the ball
+        // (Contact.Impact through ContactShape.Respond), or, a slow touch where its acceleration holds the ball on the shape, the ball
         // settles on it (its velocity into the shape removed) and the rest of the step is flown on it.
         private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d sweepNormal)
         {
@@ -81,7 +81,9 @@ namespace MagnusBall.Flight
             Vector3d normal = sweepNormal;
             double approach = -Vector3d.Dot(touching.Velocity, normal);
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
-            bool held = Vector3d.Dot(Model.Gravity, normal) < 0;
+            // Held: the ball's whole acceleration there (gravity, drag, the Magnus force, the wind) presses it onto the shape.
+            bool held = Vector3d.Dot(FlightKernel.DerivativeOf(Model, touching).Acceleration, normal) < 0;
+            _now.Evaluations++;
             FlightState leaving;
             if (held && approach < restSpeed)
             {

@@ -142,6 +142,15 @@ namespace MagnusBall.Flight
                     {
                         throw new ArgumentException($"shapes[{i}] is null; every element must be a shape.", nameof(shapes));
                     }
+
+                    // The impact law takes a body of at least 1e-12 of the ball's mass (Contact.Impact): refused here, not mid-flight.
+                    double ballMass = Require.NotNull(model, nameof(model)).Ball.Mass;
+                    if (!(shapes[i].EffectiveMassKg >= 1e-12 * ballMass))
+                    {
+                        throw new ArgumentException(
+                            $"shapes[{i}].EffectiveMassKg must be at least 1e-12 of the ball's mass ({Require.Format(1e-12 * ballMass)} kg); " +
+                            $"got {Require.Format(shapes[i].EffectiveMassKg)} kg.", nameof(shapes));
+                    }
                 }
 
                 _shapes = shapes.Length > 0 ? (ContactShape[])shapes.Clone() : null;

@@ -52,13 +52,20 @@ namespace MagnusBall.Shots
         /// <summary>A basketball ring (steel): restitution 0.6, friction 0.3 (game values).</summary>
         public static readonly ContactProperties Rim = new ContactProperties(0.6, 0.3);
 
+        /// <summary>The rectangles the tennis net's mesh is made of, on each side of the centre: 6, so the mesh stays within 2.6 cm
+        /// of the sagging cord (0.156 m of sag over 6.4 m).</summary>
+        public const int TennisMeshPiecesPerHalf = 6;
+
         /// <summary>A backboard (glass): restitution 0.75, friction 0.3 (game values).</summary>
         public static readonly ContactProperties Board = new ContactProperties(0.75, 0.3);
 
         /// <summary>
         /// A tennis net across the court: two cord capsules sagging in straight lines from 1.07 m at the posts to 0.914 m at the
-        /// centre (their tops), the mesh below them, and the two posts 0.914 m outside the doubles sidelines. Ids: firstId (cord,
-        /// left half), +1 (cord, right half), +2 (mesh), +3 and +4 (posts).
+        /// centre (their tops), the mesh below them and the two posts, their centres 0.914 m outside the doubles sidelines (ITF
+        /// Rules of Tennis, rule 1). The mesh follows the sagging cord in <see cref="TennisMeshPiecesPerHalf"/> rectangles a half,
+        /// each reaching the cord's underside at its end nearer the centre: the gap left under the cord is at most 2.6 cm, less
+        /// than a ball's diameter, so no ball passes between mesh and cord. Ids: firstId (cord, left half), +1 (cord, right
+        /// half), +2 (every piece of the mesh), +3 and +4 (posts). The array holds the cords, the mesh pieces, then the posts.
         /// </summary>
         /// <param name="firstId">The first of the five ids.</param>
         /// <param name="centreOnGround">The point on the ground under the net's centre, m; finite.</param>
@@ -73,15 +80,27 @@ namespace MagnusBall.Shots
             Vector3d centreTop = centreOnGround + u * (TennisCourt.NetHeightAtCentreMetres - r);
             Vector3d leftTop = centreOnGround - a * half + u * (TennisCourt.NetHeightAtPostsMetres - r);
             Vector3d rightTop = centreOnGround + a * half + u * (TennisCourt.NetHeightAtPostsMetres - r);
-            double meshHeight = TennisCourt.NetHeightAtCentreMetres - 2 * r;
-            return new ContactShape[]
+            const int pieces = TennisMeshPiecesPerHalf;
+            var shapes = new ContactShape[4 + 2 * pieces];
+            shapes[0] = new CapsuleShape(firstId, leftTop, centreTop, r, NetCord);
+            shapes[1] = new CapsuleShape(firstId + 1, centreTop, rightTop, r, NetCord);
+            double rise = TennisCourt.NetHeightAtPostsMetres - TennisCourt.NetHeightAtCentreMetres;
+            for (int k = 0; k < pieces; k++)
             {
-                new CapsuleShape(firstId, leftTop, centreTop, r, NetCord),
-                new CapsuleShape(firstId + 1, centreTop, rightTop, r, NetCord),
-                new NetMeshShape(firstId + 2, centreOnGround + u * (meshHeight / 2), n, a, 2 * half, meshHeight),
-                new CylinderShape(firstId + 3, centreOnGround - a * (half + TennisPostRadiusMetres), centreOnGround - a * (half + TennisPostRadiusMetres) + u * TennisCourt.NetHeightAtPostsMetres, TennisPostRadiusMetres, Post),
-                new CylinderShape(firstId + 4, centreOnGround + a * (half + TennisPostRadiusMetres), centreOnGround + a * (half + TennisPostRadiusMetres) + u * TennisCourt.NetHeightAtPostsMetres, TennisPostRadiusMetres, Post),
-            };
+                double inner = half * k / pieces, outer = half * (k + 1) / pieces;
+                double height = TennisCourt.NetHeightAtCentreMetres - 2 * r + rise * (inner / half); // the cord's underside at the inner end
+                for (int side = 0; side < 2; side++)
+                {
+                    double sign = side == 0 ? -1 : 1;
+                    Vector3d centre = centreOnGround + a * (sign * (inner + outer) / 2) + u * (height / 2);
+                    shapes[2 + 2 * k + side] = new NetMeshShape(firstId + 2, centre, n, a, outer - inner, height);
+                }
+            }
+
+            Vector3d leftPost = centreOnGround - a * half, rightPost = centreOnGround + a * half;
+            shapes[2 + 2 * pieces] = new CylinderShape(firstId + 3, leftPost, leftPost + u * TennisCourt.NetHeightAtPostsMetres, TennisPostRadiusMetres, Post);
+            shapes[3 + 2 * pieces] = new CylinderShape(firstId + 4, rightPost, rightPost + u * TennisCourt.NetHeightAtPostsMetres, TennisPostRadiusMetres, Post);
+            return shapes;
         }
 
         /// <summary>
@@ -109,7 +128,7 @@ namespace MagnusBall.Shots
         }
 
         /// <summary>
-        /// A basketball hoop (FIBA): the ring, a torus 3.05 m up with a 0.45 m inside diameter, its inside edge 0.15 m from the
+        /// A basketball hoop (FIBA): the ring, a torus whose top is 3.05 m up, with a 0.45 m inside diameter, its inside edge 0.15 m from the
         /// backboard, and the backboard, a rectangle 1.80 x 1.05 m whose lower edge is 2.90 m up. Ids: firstId (ring), +1 (board).
         /// </summary>
         /// <param name="firstId">The first of the two ids.</param>
@@ -122,7 +141,8 @@ namespace MagnusBall.Shots
             Frame(towardCourt, up, out Vector3d n, out Vector3d u, out Vector3d side);
             double tube = RimThicknessMetres / 2;
             double ring = RimInnerDiameterMetres / 2 + tube;
-            Vector3d rimCentre = boardFootOnGround + u * RimHeightMetres + n * (RimFromBoardMetres + ring - tube);
+            // FIBA's 3.05 m is the ring's upper edge: its tube's centre line is a tube radius below.
+            Vector3d rimCentre = boardFootOnGround + u * (RimHeightMetres - tube) + n * (RimFromBoardMetres + ring - tube);
             Vector3d boardCentre = boardFootOnGround + u * (BackboardLowerEdgeMetres + BackboardHeightMetres / 2);
             return new ContactShape[]
             {

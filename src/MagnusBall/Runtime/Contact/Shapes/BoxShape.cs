@@ -26,9 +26,11 @@ namespace MagnusBall.Contact.Shapes
         {
             Centre = Finite(centre, nameof(centre));
             Finite(halfExtentsM, nameof(halfExtentsM));
-            if (!(halfExtentsM.X >= 0 && halfExtentsM.Y >= 0 && halfExtentsM.Z >= 0))
+            int zeros = (halfExtentsM.X == 0 ? 1 : 0) + (halfExtentsM.Y == 0 ? 1 : 0) + (halfExtentsM.Z == 0 ? 1 : 0);
+            if (!(halfExtentsM.X >= 0 && halfExtentsM.Y >= 0 && halfExtentsM.Z >= 0) || zeros > 1)
             {
-                throw new ArgumentException($"halfExtentsM must have every component finite and >= 0 m; got {halfExtentsM}.", nameof(halfExtentsM));
+                throw new ArgumentException(
+                    $"halfExtentsM must have every component finite and >= 0 m, at most one of them 0 (a rectangle); got {halfExtentsM}.", nameof(halfExtentsM));
             }
 
             HalfExtentsM = halfExtentsM;
@@ -60,8 +62,8 @@ namespace MagnusBall.Contact.Shapes
         /// <param name="centre">The centre, m; finite.</param>
         /// <param name="normal">The face normal; finite, non-zero.</param>
         /// <param name="widthDirection">The direction of the width; finite, not along the normal.</param>
-        /// <param name="widthM">The width, m; finite and &gt;= 0.</param>
-        /// <param name="heightM">The height, m; finite and &gt;= 0.</param>
+        /// <param name="widthM">The width, m; finite and &gt; 0.</param>
+        /// <param name="heightM">The height, m; finite and &gt; 0.</param>
         /// <param name="contact">The contact parameters of a hit.</param>
         /// <param name="effectiveMassKg">The effective mass at the contact, kg; &gt; 0 or positive infinity.</param>
         /// <exception cref="ArgumentException">A value is outside its range (the message names it); nothing is created.</exception>
@@ -69,8 +71,8 @@ namespace MagnusBall.Contact.Shapes
             ContactProperties contact, double effectiveMassKg = double.PositiveInfinity)
         {
             Vector3d n = Unit(normal, nameof(normal));
-            Require.NonNegative(widthM, nameof(widthM));
-            Require.NonNegative(heightM, nameof(heightM));
+            Require.Positive(widthM, nameof(widthM));
+            Require.Positive(heightM, nameof(heightM));
             // x = width, y = height = n x width, z = x cross y = n.
             Vector3d w = Require.NonZero(widthDirection, nameof(widthDirection));
             w -= n * Vector3d.Dot(w, n);

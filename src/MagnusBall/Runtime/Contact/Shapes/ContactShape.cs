@@ -76,13 +76,13 @@ namespace MagnusBall.Contact.Shapes
         /// <summary>A unit vector from a finite non-zero one.</summary>
         private protected static Vector3d Unit(in Vector3d value, string name) => Require.NonZero(value, name).NormalizedOrZero();
 
-        /// <summary>The length of the segment from a to b, refused when zero.</summary>
+        /// <summary>The length of the segment from a to b, refused below 1e-150 m (where its square would underflow) or infinite.</summary>
         private protected static double AxisLength(in Vector3d a, in Vector3d b, string name)
         {
             double length = (b - a).Length;
-            if (!(length > 0) || !double.IsFinite(length))
+            if (!(length >= 1e-150) || !double.IsFinite(length))
             {
-                throw new ArgumentException($"{name} must have a finite non-zero length (the two ends differ); got {a} to {b}.", name);
+                throw new ArgumentException($"{name} must lie between 1e-150 m and a finite distance from the other end; got {a} to {b}.", name);
             }
 
             return length;

@@ -24,8 +24,8 @@ namespace MagnusBall.Contact.Shapes
         /// <param name="centre">The centre of the mesh, m; finite.</param>
         /// <param name="normal">The mesh's face normal; finite, non-zero (either side catches).</param>
         /// <param name="widthDirection">The direction along the mesh's width; finite, not along the normal.</param>
-        /// <param name="widthM">The width, m; finite and &gt;= 0.</param>
-        /// <param name="heightM">The height (along normal cross width), m; finite and &gt;= 0.</param>
+        /// <param name="widthM">The width, m; finite and &gt; 0.</param>
+        /// <param name="heightM">The height (along normal cross width), m; finite and &gt; 0.</param>
         /// <param name="tangentialSpeedKept">The fraction of the ball's velocity along the mesh and of its spin it keeps after the hit; in [0, 1].</param>
         /// <exception cref="ArgumentException">A value is outside its range (the message names it); nothing is created.</exception>
         public NetMeshShape(int id, Vector3d centre, Vector3d normal, Vector3d widthDirection, double widthM, double heightM,
