@@ -17,7 +17,7 @@ namespace MagnusBall.Tests.Api
     {
         private static readonly Dictionary<string, int> LayerOf = new Dictionary<string, int>
         {
-            ["MagnusBall"] = 0, ["MagnusBall.Aerodynamics"] = 0, ["MagnusBall.Contact"] = 0, ["MagnusBall.Contact.Swings"] = 0,
+            ["MagnusBall"] = 0, ["MagnusBall.Aerodynamics"] = 0, ["MagnusBall.Contact"] = 0, ["MagnusBall.Contact.Swings"] = 0, ["MagnusBall.Contact.Shapes"] = 0,
             ["MagnusBall.Presets"] = 0,
             ["MagnusBall.Integration"] = 1, ["MagnusBall.Integration.Kernels"] = 1,
             ["MagnusBall.Flight"] = 2,

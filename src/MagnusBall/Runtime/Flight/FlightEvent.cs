@@ -30,8 +30,15 @@ namespace MagnusBall.Flight
         /// <summary>The rolling ball came to rest (a flight with a <see cref="GroundContact"/>).</summary>
         Rest = 16,
 
+        /// <summary>
+        /// The ball touched one of the flight's contact shapes (<see cref="MagnusBall.Contact.Shapes.ContactShape"/>) and was
+        /// answered by it: <see cref="FlightEvent.ShapeId"/> names the shape, <see cref="FlightEvent.ContactNormal"/> is its outward
+        /// normal at the contact, <see cref="FlightEvent.State"/> the ball arriving and <see cref="FlightEvent.After"/> leaving.
+        /// </summary>
+        Contact = 32,
+
         /// <summary>Every kind.</summary>
-        All = Landing | PlaneCrossing | Apex | Bounce | Rest,
+        All = Landing | PlaneCrossing | Apex | Bounce | Rest | Contact,
     }
 
     /// <summary>
@@ -45,7 +52,10 @@ namespace MagnusBall.Flight
         /// <summary>What happened (exactly one flag).</summary>
         public readonly FlightEventKinds Kind;
 
-        /// <summary>For <see cref="FlightEventKinds.PlaneCrossing"/>, the index of the plane in the watched list; otherwise -1.</summary>
+        /// <summary>
+        /// For <see cref="FlightEventKinds.PlaneCrossing"/>, the index of the plane in the watched list; for a
+        /// <see cref="FlightEventKinds.Contact"/>, the shape's id (<see cref="ShapeId"/>); otherwise -1.
+        /// </summary>
         public readonly int PlaneIndex;
 
         /// <summary>The interpolated state at the event (time to 1e-12 s); for a bounce, the ball arriving.</summary>
@@ -59,6 +69,12 @@ namespace MagnusBall.Flight
 
         /// <summary>For a bounce, true when the ball left the surface too slowly to fly and rolls from here.</summary>
         public readonly bool StartsRolling;
+
+        /// <summary>
+        /// For a <see cref="FlightEventKinds.Contact"/>, the shape's unit outward normal at the contact (from the shape toward the
+        /// ball's centre; the contact point is <see cref="Position"/> minus the ball's radius times it); otherwise zero.
+        /// </summary>
+        public readonly Vector3d ContactNormal;
 
         /// <summary>Creates an event with no bounce data.</summary>
         /// <param name="kind">What happened.</param>
@@ -84,7 +100,23 @@ namespace MagnusBall.Flight
             After = after;
             Regime = regime;
             StartsRolling = startsRolling;
+            ContactNormal = default;
         }
+
+        /// <summary>Creates a contact event: the shape's id (kept where a crossing keeps its plane's index) and normal.</summary>
+        internal FlightEvent(int shapeId, in FlightState state, in FlightState after, BounceRegime regime, in Vector3d normal)
+        {
+            Kind = FlightEventKinds.Contact;
+            PlaneIndex = shapeId;
+            State = state;
+            After = after;
+            Regime = regime;
+            StartsRolling = false;
+            ContactNormal = normal;
+        }
+
+        /// <summary>For a <see cref="FlightEventKinds.Contact"/>, the id the caller gave the shape hit; otherwise -1.</summary>
+        public int ShapeId => Kind == FlightEventKinds.Contact ? PlaneIndex : -1;
 
         /// <summary>Time of the event, s.</summary>
         public double Time => State.Time;
@@ -98,6 +130,7 @@ namespace MagnusBall.Flight
         /// <inheritdoc />
         public override string ToString() =>
             Kind == FlightEventKinds.PlaneCrossing ? $"{Kind}[{PlaneIndex}] {State}"
+            : Kind == FlightEventKinds.Contact ? $"{Kind}[{PlaneIndex}] ({Regime}) n={ContactNormal} {State} -> v={After.Velocity} w={After.AngularVelocity}"
             : Kind == FlightEventKinds.Bounce ? $"{Kind} ({Regime}{(StartsRolling ? ", rolls" : string.Empty)}) {State} -> v={After.Velocity} w={After.AngularVelocity}"
             : $"{Kind} {State}";
     }

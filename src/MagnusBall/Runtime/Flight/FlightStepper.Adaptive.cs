@@ -83,7 +83,7 @@ namespace MagnusBall.Flight
 
             _now.NextAdaptiveStep = result.NextStep;
             endTime = end.Time;
-            if ((EventSet == null || StaysClearOf(result, EventSet, landings: Contact == null)) &&
+            if (_shapes == null && (EventSet == null || StaysClearOf(result, EventSet, landings: Contact == null)) &&
                 (Contact == null || result.StaysClearOf(_contactPlane, CrossingDirection.AgainstNormal)))
             {
                 // Provably no event and no contact in the step (most steps of a flight): what HandlePiece does when its scans

@@ -37,6 +37,7 @@ namespace MagnusBall.Flight
             _pendingEventCount = 0;
             _pendingSegmentCount = 0;
             _pendingImplicit = false;
+            _support = -1;
 
             try
             {
@@ -161,7 +162,7 @@ namespace MagnusBall.Flight
             where TDense : struct, IDenseOutput
         {
             int count = EventSet == null ? 0 : EventSet.Scan(ref dense, _scratch, _now.StartsFlight && piece == 0, landings: Contact == null);
-            if (count == 0 && Contact == null)
+            if (count == 0 && Contact == null && _shapes == null)
             {
                 // The common piece: no event, no surface to touch. Its end becomes the current state.
                 Continue(hermite, end, endDerivative, implicitPiece);
@@ -212,6 +213,21 @@ namespace MagnusBall.Flight
                 contactTime = t;
             }
 
+            int shapeIndex = -1;
+            Vector3d shapeNormal = default;
+            if (_shapes != null && piece < MaxPiecesPerStep - 1 &&
+                FindShapeContact(hermite, out double shapeTime, out shapeIndex, out shapeNormal))
+            {
+                if (shapeTime < contactTime)
+                {
+                    contactTime = shapeTime;
+                }
+                else
+                {
+                    shapeIndex = -1; // the ground comes first
+                }
+            }
+
             // Only what comes before the contact happens; of that, the first stop event ends the flight (with the events
             // up to it and at its instant: FlightEventSet.CountUntil, the one rule); otherwise the contact bounces the ball.
             int before = 0;
@@ -240,11 +256,22 @@ namespace MagnusBall.Flight
             Record(found.Slice(0, count));
             if (double.IsPositiveInfinity(contactTime))
             {
+                if (_support >= 0)
+                {
+                    FlightState supported = end;
+                    StateDerivative supportedDerivative = endDerivative;
+                    Support(ref supported, ref supportedDerivative);
+                    Continue(hermite, supported, supportedDerivative, implicitPiece);
+                    return true;
+                }
+
                 Continue(hermite, end, endDerivative, implicitPiece);
                 return true;
             }
 
-            return Bounce(ref dense, hermite, contactTime, piece);
+            return shapeIndex >= 0
+                ? ShapeContact(hermite, contactTime, shapeIndex, shapeNormal)
+                : Bounce(ref dense, hermite, contactTime, piece);
         }
 
         private bool Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)

@@ -6,6 +6,7 @@
 using System;
 using System.Runtime.CompilerServices;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Integration;
 
 using MagnusBall.Integration.Kernels;
@@ -126,9 +127,26 @@ namespace MagnusBall.Flight
         /// <param name="integrator">The integration method.</param>
         /// <param name="events">What to look for in each step (ground, apex, planes), or null for no events.</param>
         /// <param name="contact">A surface to bounce and roll on, or null (then touching the event set's ground is a landing).</param>
+        /// <param name="shapes">Shapes the ball can hit (walls, posts, the net, a rim: <see cref="ContactShape"/>), copied; or null for none.
+        /// Each touch is a <see cref="FlightEventKinds.Contact"/> event and the flight goes on from the shape's answer.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
-        public FlightStepper(FlightModel model, IIntegrator integrator, FlightEventSet? events = null, GroundContact? contact = null)
+        /// <exception cref="ArgumentException">An element of shapes is null.</exception>
+        public FlightStepper(
+            FlightModel model, IIntegrator integrator, FlightEventSet? events = null, GroundContact? contact = null, ContactShape[]? shapes = null)
         {
+            if (shapes != null)
+            {
+                for (int i = 0; i < shapes.Length; i++)
+                {
+                    if (shapes[i] == null)
+                    {
+                        throw new ArgumentException($"shapes[{i}] is null; every element must be a shape.", nameof(shapes));
+                    }
+                }
+
+                _shapes = shapes.Length > 0 ? (ContactShape[])shapes.Clone() : null;
+            }
+
             Model = Require.NotNull(model, nameof(model));
             Integrator = Require.NotNull(integrator, nameof(integrator));
             _plainRk4 = integrator is RungeKutta4;
@@ -344,7 +362,7 @@ namespace MagnusBall.Flight
         {
             quiet = 0;
             lastStart = _now.State.Time;
-            if (Contact != null || _now.Phase != FlightPhase.Flying)
+            if (Contact != null || _shapes != null || _now.Phase != FlightPhase.Flying)
             {
                 return Advance(step, stopAt, adaptive: null);
             }

@@ -1,5 +1,6 @@
 using System;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
@@ -105,9 +106,10 @@ namespace MagnusBall.Stepping
         /// </param>
         /// <param name="restNormalSpeed">With a bounce model: bounces leaving slower than this along the normal start rolling, m/s; finite, &gt;= 0.</param>
         /// <param name="rollingResistance">With a bounce model: the rolling-resistance coefficient (see <see cref="GroundContact"/>); finite, &gt;= 0.</param>
+        /// <param name="shapes">Shapes the ball can hit (see <see cref="FlightStepper"/>'s constructor), copied; or null for none.</param>
         /// <exception cref="ArgumentNullException">model or integrator is null.</exception>
         /// <exception cref="ArgumentException">
-        /// A number is out of its range (the message names it), or there is a bounce model but no ground.
+        /// A number is out of its range (the message names it), there is a bounce model but no ground, or a shape is null.
         /// </exception>
         public FixedStepDriver(
             FlightModel model,
@@ -119,7 +121,8 @@ namespace MagnusBall.Stepping
             double maxFrameDeltaSeconds = DefaultMaxFrameDeltaSeconds,
             int maxStepsPerAdvance = 0,
             double restNormalSpeed = GroundContact.DefaultRestNormalSpeed,
-            double rollingResistance = GroundContact.DefaultRollingResistance)
+            double rollingResistance = GroundContact.DefaultRollingResistance,
+            ContactShape[]? shapes = null)
         {
             Require.NotNull(model, nameof(model));
             Require.NotNull(integrator, nameof(integrator));
@@ -152,7 +155,7 @@ namespace MagnusBall.Stepping
                 contact = new GroundContact(bounce, court, restNormalSpeed, rollingResistance);
             }
 
-            _stepper = new FlightStepper(model, integrator, eventSet, contact);
+            _stepper = new FlightStepper(model, integrator, eventSet, contact, shapes);
             _stopAt = contact == null ? FlightEventKinds.Landing : FlightEventKinds.None;
             Reset(start);
         }

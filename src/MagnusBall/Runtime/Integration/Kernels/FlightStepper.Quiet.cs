@@ -46,7 +46,7 @@ namespace MagnusBall.Flight
         /// Whether the next step may be quiet (<see cref="TrySteps"/>): in flight, no contact surface, and plain RK4 or the
         /// stable RK4 with RK4 inside. Where it is false every step is taken the general way, one a call.
         /// </summary>
-        internal bool StepsQuietly => Contact == null && _now.Phase == FlightPhase.Flying && (_plainRk4 || _stableRk4 != null);
+        internal bool StepsQuietly => Contact == null && _shapes == null && _now.Phase == FlightPhase.Flying && (_plainRk4 || _stableRk4 != null);
 
         // TrySteps' steps for a count of two or more. Three slots in turn, a, b and c, each a state and its derivative: each step
         // reads the last step's end and writes the slot that holds neither that end nor its start, so no state is copied from

@@ -1,0 +1,91 @@
+// ContactShape: the base of every shape a flight can hit (box, capsule, cylinder, torus, net mesh): its id, contact
+// parameters and effective mass, its signed distance (the one geometric question the sweep asks) and its bounding box.
+// The search for the first touch along a step is ShapeSweep.cs; the response is Respond, through Contact.Impact.
+using System;
+
+namespace MagnusBall.Contact.Shapes
+{
+    /// <summary>
+    /// A bounded solid the ball can hit in flight: a wall, a board, a post, the net cord, a rim. Give an array of them to a
+    /// FlightStepper (or a FixedStepDriver): the first touch of the ball's surface within each step is located on the step's
+    /// dense output (no tunnelling at any speed the integrator accepts), the ball is answered with spin through
+    /// <see cref="Impact"/>, and a Contact flight event names the shape by its <see cref="Id"/>. Immutable; share it
+    /// between balls. See docs/contacts.md.
+    /// </summary>
+    public abstract class ContactShape
+    {
+        private protected ContactShape(int id, in ContactProperties contact, double effectiveMassKg)
+        {
+            if (!(effectiveMassKg > 0) || double.IsNaN(effectiveMassKg))
+            {
+                throw new ArgumentOutOfRangeException(
+                    nameof(effectiveMassKg), effectiveMassKg,
+                    $"effectiveMassKg must be > 0 kg (positive infinity for a fixed shape); got {Require.Format(effectiveMassKg)}.");
+            }
+
+            Id = id;
+            Contact = contact;
+            EffectiveMassKg = effectiveMassKg;
+        }
+
+        /// <summary>The caller's id for this shape, reported as the contact event's ShapeId when it is hit.</summary>
+        public int Id { get; }
+
+        /// <summary>The contact parameters of a hit (restitution, friction, grip recoil).</summary>
+        public ContactProperties Contact { get; }
+
+        /// <summary>The shape's effective mass at the contact point, kg; positive infinity for a fixed shape.</summary>
+        public double EffectiveMassKg { get; }
+
+        /// <summary>Lower corner of the shape's axis-aligned bounding box, m.</summary>
+        internal Vector3d BoundsMin { get; private protected set; }
+
+        /// <summary>Upper corner of the shape's axis-aligned bounding box, m.</summary>
+        internal Vector3d BoundsMax { get; private protected set; }
+
+        /// <summary>
+        /// The signed distance from <paramref name="point"/> to the shape's surface, m (negative inside), and the unit
+        /// outward normal there (the gradient of the distance). An exact distance: it changes by at most the distance the
+        /// point moves (the sweep's bound rests on this).
+        /// </summary>
+        internal abstract double SignedDistance(in Vector3d point, out Vector3d normal);
+
+        /// <summary>
+        /// The ball's velocity and spin after it touches the shape with its centre at <paramref name="position"/>, the
+        /// shape's outward normal there being <paramref name="normal"/>: <see cref="Impact.Resolve(Ball, in Vector3d, in Vector3d, in Vector3d, in ImpactBody, in ContactProperties)"/>
+        /// with a body at rest of mass <see cref="EffectiveMassKg"/>.
+        /// </summary>
+        internal virtual ImpactOutcome Respond(Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in Vector3d normal) =>
+            Impact.Resolve(ball, position, velocity, angularVelocity,
+                new ImpactBody(position - normal * ball.Radius, Vector3d.Zero, Vector3d.Zero, normal, EffectiveMassKg), Contact);
+
+        /// <summary>A checked finite point or vector.</summary>
+        private protected static Vector3d Finite(in Vector3d value, string name) => Require.Finite(value, name);
+
+        /// <summary>A checked finite radius &gt; 0.</summary>
+        private protected static double Radius(double value, string name) => Require.Positive(value, name);
+
+        /// <summary>The bounding box of a segment inflated by a radius.</summary>
+        private protected void SetBounds(in Vector3d a, in Vector3d b, double inflate)
+        {
+            var r = new Vector3d(inflate, inflate, inflate);
+            BoundsMin = new Vector3d(Math.Min(a.X, b.X), Math.Min(a.Y, b.Y), Math.Min(a.Z, b.Z)) - r;
+            BoundsMax = new Vector3d(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z)) + r;
+        }
+
+        /// <summary>A unit vector from a finite non-zero one.</summary>
+        private protected static Vector3d Unit(in Vector3d value, string name) => Require.NonZero(value, name).NormalizedOrZero();
+
+        /// <summary>The length of the segment from a to b, refused when zero.</summary>
+        private protected static double AxisLength(in Vector3d a, in Vector3d b, string name)
+        {
+            double length = (b - a).Length;
+            if (!(length > 0) || !double.IsFinite(length))
+            {
+                throw new ArgumentException($"{name} must have a finite non-zero length (the two ends differ); got {a} to {b}.", name);
+            }
+
+            return length;
+        }
+    }
+}
