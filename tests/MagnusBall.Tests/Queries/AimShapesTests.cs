@@ -122,6 +122,27 @@ namespace MagnusBall.Tests.Queries
             }
         }
 
+        [TestCase(false)]
+        [TestCase(true)]
+        public void ABankShot_FromTheSide_ByBothAngles_AndBySpeed_ReachesTheRimsCentre(bool adaptive)
+        {
+            ContactShape[] hoop = Hoop();
+            var rimCentre = ((TorusShape)hoop[0]).Centre;
+            var from = new Vector3d(1, 2.5, 2.2); // off to the side: the bank goes off the board at an angle
+            AimSolution both = Solver(Basketball, hoop, adaptive).AnglesToReach(from, 9, LaunchSpin.None, rimCentre, arc: AimArc.High, viaShapeId: 11);
+            TestContext.Out.WriteLine(both.ToString());
+            Assert.That(both.Status, Is.EqualTo(AimStatus.Solved), both.ToString());
+            Assert.That(both.Miss, Is.LessThan(1e-4));
+            Assert.That(Contacts(Basketball, hoop, from, both)[0].ShapeId, Is.EqualTo(11));
+
+            var straight = new Vector3d(0, 0, 2.2);
+            AimSolution bySpeed = Solver(Basketball, hoop, adaptive).SpeedToReach(straight, 64 * Math.PI / 180, 0, LaunchSpin.None, rimCentre, viaShapeId: 11);
+            TestContext.Out.WriteLine(bySpeed.ToString());
+            Assert.That(bySpeed.Status, Is.EqualTo(AimStatus.Solved), bySpeed.ToString());
+            Assert.That(bySpeed.Miss, Is.LessThan(1e-6));
+            Assert.That(Contacts(Basketball, hoop, straight, bySpeed)[0].ShapeId, Is.EqualTo(11));
+        }
+
         [Test]
         public void ShapesAndViaIds_AreChecked()
         {
