@@ -53,9 +53,17 @@ namespace MagnusBall.Cli
             "  maxTime          s (default 10)\n" +
             "  ground           {\"point\", \"normal\"} (default: through the origin, normal up); null for none\n" +
             "  planes           [{\"name\", \"point\", \"normal\", \"bounds\": {\"height\": [min, max], \"width\": [min, max]}}]\n" +
+            "  shapes           [{\"type\": box, rectangle, capsule, cylinder, torus, net-mesh, tennis-net, soccer-goal-frame,\n" +
+            "                   basketball-hoop or table-tennis-net, \"id\" (a fixture's \"firstId\") and its geometry: box centre,\n" +
+            "                   halfExtents, xAxis, yAxis; rectangle centre, normal, widthDirection, width, height; capsule and\n" +
+            "                   cylinder endA, endB, radius; torus centre, axis, ringRadius, tubeRadius; net-mesh as rectangle\n" +
+            "                   plus tangentialSpeedKept; primitives restitution (0.7), friction (0.3), mass (fixed); fixtures\n" +
+            "                   tennis-net centreOnGround, across; soccer-goal-frame goalLineCentre, across; basketball-hoop\n" +
+            "                   boardFootOnGround, towardCourt; table-tennis-net centreOnSurface, across; each up (the model's)}]\n" +
             "output: {\"results\": [{\"name\", \"landing\": {time, position, velocity} or null, \"apex\", \"crossings\",\n" +
+            "  \"contacts\" (with shapes),\n" +
             "  \"steps\", \"derivativeEvaluations\"}]}; with --csv: scenario,time,x,y,z,vx,vy,vz,wx,wy,wz\n" +
-            "\naim FILE: {\"aims\": [ aim, ... ]}; each aim has the flight fields above (not initial or planes) and\n" +
+            "\naim FILE: {\"aims\": [ aim, ... ]}; each aim has the flight fields above (not initial, planes or shapes) and\n" +
             "  launch           {\"position\": m, \"spin\": {\"topspin\", \"sidespin\", \"gyro\"} in rad/s}\n" +
             "  find             {\"kind\": minimum-elevation-to-clear (speed, plane {point, normal}, height, azimuthDegrees)\n" +
             "                   | elevation-to-reach (speed, target, azimuthDegrees) | angles-to-reach (speed, target)\n" +

@@ -12,7 +12,7 @@ namespace MagnusBall.Cli
     {
         /// <summary>
         /// {"results": [{"name", "landing", "apex", "crossings", "steps", "derivativeEvaluations"}]}, plus
-        /// "samples" when <paramref name="samples"/> is given.
+        /// "contacts" for a scenario with shapes and "samples" when <paramref name="samples"/> is given.
         /// </summary>
         public static string Json(IReadOnlyList<FlightResult> results, int? samples)
         {
@@ -65,6 +65,26 @@ namespace MagnusBall.Cli
                     }
 
                     w.WriteEndArray();
+                    if (r.Scenario.Shapes is { Count: > 0 })
+                    {
+                        // Issue 40: every touch of a shape, in time order (the field is absent for a scenario without shapes).
+                        w.WriteStartArray("contacts");
+                        foreach (MagnusBall.Flight.FlightEvent c in r.Contacts ?? System.Array.Empty<MagnusBall.Flight.FlightEvent>())
+                        {
+                            w.WriteStartObject();
+                            w.WriteNumber("shapeId", c.ShapeId);
+                            w.WriteNumber("time", c.State.Time);
+                            WriteVector(w, "position", c.State.Position);
+                            WriteVector(w, "normal", c.ContactNormal);
+                            WriteVector(w, "velocity", c.State.Velocity);
+                            WriteVector(w, "velocityAfter", c.After.Velocity);
+                            WriteVector(w, "angularVelocityAfter", c.After.AngularVelocity);
+                            w.WriteEndObject();
+                        }
+
+                        w.WriteEndArray();
+                    }
+
                     w.WriteNumber("steps", r.Steps);
                     w.WriteNumber("derivativeEvaluations", r.DerivativeEvaluations);
                     if (samples is int n)

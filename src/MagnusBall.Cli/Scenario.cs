@@ -14,7 +14,8 @@ namespace MagnusBall.Cli
         NamedPlane? Ground,
         IReadOnlyList<NamedPlane> Planes,
         double MaxTime,
-        IReadOnlyList<string>? Warnings = null);
+        IReadOnlyList<string>? Warnings = null,
+        IReadOnlyList<MagnusBall.Contact.Shapes.ContactShape>? Shapes = null);
 
     /// <summary>The flight parts a scenario and an aim share: the model, how to step it, the ground, the time limit.</summary>
     internal sealed record FlightSetup(FlightModel Model, IIntegrator Integrator, double Step, NamedPlane? Ground, double MaxTime, MagnusBall.Presets.SportPreset? Preset = null);

@@ -21,7 +21,8 @@ namespace MagnusBall.Cli
         int Steps,
         long DerivativeEvaluations,
         FlightState End,
-        IReadOnlyList<StepPoint>? Points)
+        IReadOnlyList<StepPoint>? Points,
+        IReadOnlyList<FlightEvent>? Contacts = null)
     {
         /// <summary>
         /// The state at <paramref name="time"/> (clamped to the flight) on the cubic Hermite of the step
@@ -184,7 +185,11 @@ namespace MagnusBall.Cli
             // of the step costs nothing more, and the events are located on it to 1e-12 s.
             Plane? ground = scenario.Ground is NamedPlane g ? new Plane(g.Point, g.Normal) : null;
             var planes = scenario.Planes.Select(p => new Plane(p.Point, p.Normal)).ToArray();
-            var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes));
+            // Shapes (issue 40): a touch is a Contact event, answered by the shape; the flight goes on.
+            var shapes = scenario.Shapes is { Count: > 0 } list ? list.ToArray() : null;
+            var stepper = new FlightStepper(model, scenario.Integrator, new FlightEventSet(model.Up, ground, planes), null, shapes);
+            var contacts = new List<FlightEvent>();
+            var stepContacts = new List<StepPoint>(); // this step's contacts: the states before and after each
             if (!budget.TrySpend(1))
             {
                 throw OverBudget(scenario, budget, scenario.Initial.Time);
@@ -251,9 +256,17 @@ namespace MagnusBall.Cli
                 }
 
                 // The core stops at the landing: the events it reports are those that happen (nothing after the landing).
+                stepContacts.Clear();
                 foreach (FlightEvent e in stepper.Events)
                 {
-                    if (e.Kind == FlightEventKinds.Landing)
+                    if (e.Kind == FlightEventKinds.Contact)
+                    {
+                        // The velocity jumps there: the samples' Hermite pieces end before it and start after it.
+                        contacts.Add(e);
+                        stepContacts.Add(new StepPoint(e.State, model.Derivative(e.State)));
+                        stepContacts.Add(new StepPoint(e.After, model.Derivative(e.After)));
+                    }
+                    else if (e.Kind == FlightEventKinds.Landing)
                     {
                         landing = e.State;
                     }
@@ -286,6 +299,7 @@ namespace MagnusBall.Cli
                             points.Add(start);
                         }
 
+                        points.AddRange(stepContacts);
                         points.Add(end);
                     }
                 }
@@ -303,6 +317,7 @@ namespace MagnusBall.Cli
                     }
                     else
                     {
+                        points.AddRange(stepContacts);
                         points.Add(end);
                     }
                 }
@@ -319,7 +334,7 @@ namespace MagnusBall.Cli
             }
 
             FlightState final = stepper.State;
-            return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, final, points);
+            return new FlightResult(scenario, landing, apex, crossings, checked((int)stepper.StepCount), stepper.DerivativeEvaluations, final, points, contacts);
         }
     }
 }

@@ -97,11 +97,12 @@ namespace MagnusBall.Cli
                 }
             }
 
+            IReadOnlyList<MagnusBall.Contact.Shapes.ContactShape> shapes = ScenarioShapes.Read(s, setup.Model.Up);
             s.RejectUnknown();
             IReadOnlyList<string> warnings = SportWarnings.For(
                 setup.Preset, setup.Model.Ball, initial.Velocity.Length, initial.AngularVelocity.Length,
                 s.PathOf("ball"), initialFields.PathOf("velocity"), initialFields.PathOf("angularVelocity"));
-            return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime, warnings);
+            return new Scenario(index, name, setup.Model, initial, setup.Integrator, setup.Step, setup.Ground, planes, setup.MaxTime, warnings, shapes);
         }
 
         /// <summary>

@@ -3,6 +3,8 @@ using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using System.Text;
+using MagnusBall.Contact.Shapes;
+using MagnusBall.Flight;
 
 namespace MagnusBall.Cli
 {
@@ -93,6 +95,12 @@ namespace MagnusBall.Cli
                 }
             }
 
+            var shapes = results.SelectMany(r => r.Scenario.Shapes ?? Array.Empty<ContactShape>()).ToList();
+            foreach (ContactShape shape in shapes)
+            {
+                points.AddRange(BoxCorners(shape.BoundsMin, shape.BoundsMax).Where(c => c.IsFinite));
+            }
+
             double minA = Math.Min(0, points.Min(along)), maxA = points.Max(along);
             foreach (FlightResult r in results)
             {
@@ -149,6 +157,11 @@ namespace MagnusBall.Cli
                     }
                 }
 
+                foreach (ContactShape shape in shapes)
+                {
+                    Shape(svg, view, shape, along);
+                }
+
                 for (int i = 0; i < results.Count; i++)
                 {
                     string colour = Palette[i % Palette.Length];
@@ -172,6 +185,13 @@ namespace MagnusBall.Cli
                         (double x, double y) = Map(view, along(c.State.Position), view.Vertical(c.State.Position));
                         svg.Append($"<rect x=\"{F(x - 3)}\" y=\"{F(y - 3)}\" width=\"6\" height=\"6\" fill=\"white\" stroke=\"{colour}\" stroke-width=\"1.5\"/>\n");
                     }
+
+                    foreach (FlightEvent c in r.Contacts ?? Array.Empty<FlightEvent>())
+                    {
+                        // A contact with a shape: a diamond at the ball's centre.
+                        (double x, double y) = Map(view, along(c.State.Position), view.Vertical(c.State.Position));
+                        svg.Append($"<polygon points=\"{F(x)},{F(y - 4.5)} {F(x + 4.5)},{F(y)} {F(x)},{F(y + 4.5)} {F(x - 4.5)},{F(y)}\" fill=\"white\" stroke=\"{colour}\" stroke-width=\"1.5\"/>\n");
+                    }
                 }
             }
 
@@ -186,9 +206,108 @@ namespace MagnusBall.Cli
                 legendY += 16;
             }
 
-            svg.Append($"<text x=\"{F(Left)}\" y=\"{F(legendY)}\" fill=\"#555\" font-size=\"11\">dot: landing; square: plane crossing; dashed: unbounded plane; bold: a plane's bounds (net, goal)</text>\n");
+            svg.Append($"<text x=\"{F(Left)}\" y=\"{F(legendY)}\" fill=\"#555\" font-size=\"11\">dot: landing; square: plane crossing; dashed: unbounded plane; bold: a plane's bounds (net, goal)" +
+                (shapes.Count > 0 ? "; grey solid: a shape; diamond: contact with a shape" : string.Empty) + "</text>\n");
             svg.Append("</svg>\n");
             return svg.ToString();
+        }
+
+        private const string ShapeFill = "#777777";
+
+        // A contact shape in the view (issue 40): a box, rectangle or net mesh as the rectangle of its bounding box; a capsule
+        // or cylinder as a thick line along its axis (a circle where its axis points out of the view: the net cord seen from
+        // the side); a torus as its cross-section by the view's plane through its centre (the two circles of its tube; seen
+        // along its axis, the ring).
+        private static void Shape(StringBuilder svg, View view, ContactShape shape, Func<Vector3d, double> along)
+        {
+            switch (shape)
+            {
+                case CapsuleShape c:
+                    Rod(svg, view, c.EndA, c.EndB, c.RadiusM, along, round: true);
+                    return;
+                case CylinderShape c:
+                    Rod(svg, view, c.EndA, c.EndB, c.RadiusM, along, round: false);
+                    return;
+                case TorusShape t:
+                    Torus(svg, view, t, along);
+                    return;
+                default:
+                {
+                    var box = BoxCorners(shape.BoundsMin, shape.BoundsMax).Select(p => (A: along(p), B: view.Vertical(p))).ToList();
+                    var quad = Clip(new List<(double A, double B)>
+                    {
+                        (box.Min(p => p.A), box.Min(p => p.B)), (box.Max(p => p.A), box.Min(p => p.B)),
+                        (box.Max(p => p.A), box.Max(p => p.B)), (box.Min(p => p.A), box.Max(p => p.B)),
+                    }, view, closed: true);
+                    if (quad.Count == 0)
+                    {
+                        return;
+                    }
+
+                    string pts = string.Join(" ", quad.Select(q => { (double x, double y) = Map(view, q.A, q.B); return F(x) + "," + F(y); }));
+                    string fill = shape is NetMeshShape ? "fill-opacity=\"0.25\"" : "fill-opacity=\"0.6\"";
+                    svg.Append($"<polygon points=\"{pts}\" fill=\"{ShapeFill}\" {fill} stroke=\"#333\" stroke-width=\"1\"/>\n");
+                    return;
+                }
+            }
+        }
+
+        private static void Rod(StringBuilder svg, View view, Vector3d a, Vector3d b, double radius, Func<Vector3d, double> along, bool round)
+        {
+            (double x0, double y0) = Map(view, along(a), view.Vertical(a));
+            (double x1, double y1) = Map(view, along(b), view.Vertical(b));
+            (double rx, double ry) = Radii(view, radius);
+            double length = Math.Sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
+            if (length < Math.Max(rx, ry))
+            {
+                svg.Append($"<ellipse cx=\"{F(0.5 * (x0 + x1))}\" cy=\"{F(0.5 * (y0 + y1))}\" rx=\"{F(rx)}\" ry=\"{F(ry)}\" fill=\"{ShapeFill}\" stroke=\"#333\" stroke-width=\"1\"/>\n");
+                return;
+            }
+
+            // Thickness across the line: the radius at the view's scale across its direction.
+            double across = Math.Abs(x1 - x0) >= Math.Abs(y1 - y0) ? ry : rx;
+            svg.Append($"<line x1=\"{F(x0)}\" y1=\"{F(y0)}\" x2=\"{F(x1)}\" y2=\"{F(y1)}\" stroke=\"{ShapeFill}\" stroke-width=\"{F(2 * across)}\" stroke-linecap=\"{(round ? "round" : "butt")}\"/>\n");
+        }
+
+        private static void Torus(StringBuilder svg, View view, TorusShape t, Func<Vector3d, double> along)
+        {
+            double ca = along(t.Centre), cb = view.Vertical(t.Centre);
+            (double x, double y) = Map(view, ca, cb);
+            (double rx, double ry) = Radii(view, t.TubeRadiusM);
+            (double Rx, double Ry) = Radii(view, t.RingRadiusM);
+            // The axis's parts along the view's two directions (unit directions: p -> along(p) and p -> Vertical(p) are linear).
+            double axisA = along(t.Centre + t.Axis) - ca, axisB = view.Vertical(t.Centre + t.Axis) - cb;
+            if (axisA * axisA + axisB * axisB < 0.01)
+            {
+                // Seen along its axis: the ring.
+                svg.Append($"<ellipse cx=\"{F(x)}\" cy=\"{F(y)}\" rx=\"{F(Rx)}\" ry=\"{F(Ry)}\" fill=\"none\" stroke=\"{ShapeFill}\" stroke-width=\"{F(Math.Max(1, rx + ry))}\"/>\n");
+                return;
+            }
+
+            // The cross-section: the tube's circles at the centre plus and minus the ring radius across the axis, in the view.
+            double norm = Math.Sqrt(axisA * axisA + axisB * axisB);
+            double ua = -axisB / norm, ub = axisA / norm;
+            foreach (double sign in new[] { -1.0, 1.0 })
+            {
+                (double cx, double cy) = Map(view, ca + sign * ua * t.RingRadiusM, cb + sign * ub * t.RingRadiusM);
+                svg.Append($"<ellipse cx=\"{F(cx)}\" cy=\"{F(cy)}\" rx=\"{F(Math.Max(1.5, rx))}\" ry=\"{F(Math.Max(1.5, ry))}\" fill=\"{ShapeFill}\" stroke=\"#333\" stroke-width=\"1\"/>\n");
+            }
+        }
+
+        // A length in metres as pixels along the view's two axes (they are scaled separately), at least 1.5 px.
+        private static (double X, double Y) Radii(View v, double metres)
+        {
+            double x = metres / (v.MaxA * 0.5 - v.MinA * 0.5) * 0.5 * (Width - Left - Right);
+            double y = metres / (v.MaxB * 0.5 - v.MinB * 0.5) * 0.5 * PanelHeight;
+            return (Pixel(Math.Max(1.5, x)), Pixel(Math.Max(1.5, y)));
+        }
+
+        private static IEnumerable<Vector3d> BoxCorners(Vector3d lo, Vector3d hi)
+        {
+            for (int i = 0; i < 8; i++)
+            {
+                yield return new Vector3d((i & 1) == 0 ? lo.X : hi.X, (i & 2) == 0 ? lo.Y : hi.Y, (i & 4) == 0 ? lo.Z : hi.Z);
+            }
         }
 
         private static void Frame(StringBuilder svg, View view)

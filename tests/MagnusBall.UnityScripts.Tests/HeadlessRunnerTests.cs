@@ -56,12 +56,43 @@ namespace MagnusBall.UnityScripts.Tests
                 Assert.That(output, Does.Contain("picture: " + svg));
                 string picture = File.ReadAllText(svg);
                 Assert.That(picture, Does.StartWith("<svg"));
-                Assert.That(picture.Split("<polyline").Length - 1, Is.EqualTo(12), "six shots in two views");
+                Assert.That(picture.Split("<polyline").Length - 1, Is.EqualTo(14), "six shots and the let in two views");
             }
             finally
             {
                 File.Delete(svg);
             }
+        }
+
+        [Test]
+        public void TheNetCordLet_ClipsTheTape_AndDropsInTheServiceBox_InTheTableAndThePicture()
+        {
+            // Issue 40, item 6b: the scene's net is SportShapes.TennisNet; the let's serve touches the cord (a Contact event)
+            // and lands in the far deuce service box.
+            string svg = Path.Combine(Path.GetTempPath(), $"tennis-scene-{Guid.NewGuid():N}.svg");
+            try
+            {
+                (int code, string output, string error) = Run("--svg", svg);
+                Assert.That(code, Is.EqualTo(0), error);
+                string row = output.Split('\n').Single(r => r.StartsWith("net-cord let", StringComparison.Ordinal));
+                string[] cells = row.Split(' ', StringSplitOptions.RemoveEmptyEntries);
+                Assert.That(cells, Does.Contain("cord"), row);
+                Assert.That(cells, Does.Contain("LET"), row);
+                string picture = File.ReadAllText(svg);
+                Assert.That(picture, Does.Contain("a LET (clipped the cord, in the box)"));
+                Assert.That(picture.Split("<polygon").Length - 1, Is.EqualTo(2), "the touch of the cord, a diamond in each view");
+            }
+            finally
+            {
+                File.Delete(svg);
+            }
+
+            var simulation = new MagnusBall.Samples.TennisScene.ShotSimulation(new MagnusBall.Samples.TennisScene.SceneSettings());
+            MagnusBall.Samples.TennisScene.ShotReport report = simulation.Run(MagnusBall.Samples.TennisScene.StandardShots.NetCordLet, Span<Vector3d>.Empty);
+            Assert.That(report.IsLet, Is.True);
+            Assert.That(report.NetContact.HasValue && MagnusBall.Samples.TennisScene.ShotSimulation.IsCord(report.NetContact.Value.ShapeId), Is.True);
+            Assert.That(report.Landing.X, Is.InRange(0, MagnusBall.Samples.TennisScene.TennisCourt.ServiceLineFromNet));
+            Assert.That(report.Landing.Z, Is.InRange(0, MagnusBall.Samples.TennisScene.TennisCourt.HalfSinglesWidth));
         }
 
         [Test]

@@ -201,6 +201,9 @@ namespace UnityEngine
             return new Vector3(r.x / s.x, r.y / s.y, r.z / s.z);
         }
 
+        // Unity: the point through the transform's localToWorldMatrix (scale, rotate, translate, then the parents').
+        public Vector3 TransformPoint(Vector3 position) => StubToWorld(position);
+
         public int childCount => StubChildren.Count;
 
         public Transform GetChild(int index) => StubChildren[index];
@@ -363,6 +366,36 @@ namespace UnityEngine
         Acceleration = 5,
         Impulse = 1,
         VelocityChange = 2,
+    }
+
+    // Unity's colliders, as far as MagnusBall.Components.ColliderShapes reads them: the geometry in the object's local space.
+    public partial class Collider : Component
+    {
+    }
+
+    public partial class BoxCollider : Collider
+    {
+        public Vector3 center { get; set; }
+
+        public Vector3 size { get; set; } = new Vector3(1, 1, 1);
+    }
+
+    public class CapsuleCollider : Collider
+    {
+        public Vector3 center { get; set; }
+
+        public float radius { get; set; } = 0.5f;
+
+        public float height { get; set; } = 2;
+
+        public int direction { get; set; } = 1;
+    }
+
+    public class SphereCollider : Collider
+    {
+        public Vector3 center { get; set; }
+
+        public float radius { get; set; } = 0.5f;
     }
 
     public class Rigidbody : Component

@@ -17,7 +17,8 @@ namespace MagnusBall.Samples.TennisScene.Headless
 @"usage: dotnet run --project samples/TennisScene/Headless -- [options]
 
 With no shot options, flies the six standard shots (flat serve, kick serve, topspin forehand,
-slice backhand, topspin lob, drop shot), then the same six made by racket swings, each swing
+slice backhand, topspin lob, drop shot) and a net-cord let (a serve that clips the tape, the net
+being the library's contact shapes, and drops in the box), then the six made by racket swings, each swing
 printed next to the launch it produced. Any shot option flies one custom shot instead, starting
 from the topspin forehand's values.
 
@@ -217,8 +218,9 @@ exit codes: 0 ok, 2 bad options";
             TennisShot basis = StandardShots.TopspinForehand;
             if (values.TryGetValue("--shot", out string? shotName))
             {
-                basis = Array.Find(StandardShots.All(), s => string.Equals(s.Name, shotName, StringComparison.OrdinalIgnoreCase))
-                    ?? throw new ArgumentException($"--shot must be one of: {string.Join(", ", Array.ConvertAll(StandardShots.All(), s => "\"" + s.Name + "\""))}; got \"{shotName}\".");
+                TennisShot[] named = [.. StandardShots.All(), StandardShots.NetCordLet];
+                basis = Array.Find(named, s => string.Equals(s.Name, shotName, StringComparison.OrdinalIgnoreCase))
+                    ?? throw new ArgumentException($"--shot must be one of: {string.Join(", ", Array.ConvertAll(named, s => "\"" + s.Name + "\""))}; got \"{shotName}\".");
             }
 
             // The options that change the shot itself (the integrator, step, air and picture options do not).
@@ -242,7 +244,9 @@ exit codes: 0 ok, 2 bad options";
                 }
                 else
                 {
+                    // The six, then a serve that clips the net cord and drops in (a let): the net is contact shapes.
                     options.Shots.AddRange(StandardShots.All());
+                    options.Shots.Add(StandardShots.NetCordLet);
                 }
 
                 options.Swings.AddRange(StandardSwings.All());

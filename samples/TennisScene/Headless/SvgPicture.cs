@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using MagnusBall.Flight;
 
 namespace MagnusBall.Samples.TennisScene.Headless
 {
@@ -13,7 +14,8 @@ namespace MagnusBall.Samples.TennisScene.Headless
     {
         private const double Scale = 30;          // px per metre
         private const double XMin = -14.5, XMax = 24.5;
-        private const double SideYMax = 6.5, SideYMin = -0.3;
+        private const double SideYMin = -0.3;
+        private static double SideYMax = 6.5; // raised to fit a ball the net cord pops up (Draw)
         private const double TopZMax = 7.2;
         private const double Margin = 40;
 
@@ -21,6 +23,15 @@ namespace MagnusBall.Samples.TennisScene.Headless
 
         public static string Draw(IReadOnlyList<ShotReport> reports, IReadOnlyList<Vector3d[]> paths, string subtitle)
         {
+            SideYMax = 6.5;
+            foreach (Vector3d[] path in paths)
+            {
+                foreach (Vector3d p in path)
+                {
+                    SideYMax = Math.Max(SideYMax, Math.Ceiling(p.Y + 0.5));
+                }
+            }
+
             double width = (XMax - XMin) * Scale + 2 * Margin;
             double sideHeight = (SideYMax - SideYMin) * Scale;
             double topHeight = 2 * TopZMax * Scale;
@@ -33,7 +44,7 @@ namespace MagnusBall.Samples.TennisScene.Headless
             svg.AppendLine(F("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:F0}\" height=\"{1:F0}\" viewBox=\"0 0 {0:F0} {1:F0}\" font-family=\"sans-serif\" font-size=\"13\">", width, height));
             svg.AppendLine(F("<rect width=\"{0:F0}\" height=\"{1:F0}\" fill=\"white\"/>", width, height));
             svg.AppendLine(F("<text x=\"{0:F0}\" y=\"22\" font-size=\"16\" font-weight=\"bold\">MagnusBall tennis scene: side view (x, y) and top view (x, z), same scale, metres</text>", Margin));
-            svg.AppendLine(F("<text x=\"{0:F0}\" y=\"40\" fill=\"#555\">{1}. Dot: first bounce (X: out); square: second bounce.</text>", Margin, Escape(subtitle)));
+            svg.AppendLine(F("<text x=\"{0:F0}\" y=\"40\" fill=\"#555\">{1}. Dot: first bounce (X: out); square: second bounce; diamond: the ball touched the net (its cord, mesh or a post).</text>", Margin, Escape(subtitle)));
 
             svg.AppendLine(F("<defs><clipPath id=\"side\"><rect x=\"{0:F1}\" y=\"{1:F1}\" width=\"{2:F1}\" height=\"{3:F1}\"/></clipPath>" +
                 "<clipPath id=\"top\"><rect x=\"{0:F1}\" y=\"{4:F1}\" width=\"{2:F1}\" height=\"{5:F1}\"/></clipPath></defs>",
@@ -68,6 +79,7 @@ namespace MagnusBall.Samples.TennisScene.Headless
             {
                 string colour = Colours[i % Colours.Length];
                 svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => sy(p.Y), colour, "side"));
+                NetMarker(svg, reports[i], p => sx(p.X), p => sy(p.Y), colour);
                 Vector3d? second = reports[i].SecondBounce;
                 Marker(svg, reports[i], sx(reports[i].Landing.X), sy(0), colour, second.HasValue ? sx(second.Value.X) : (double?)null, sy(0));
             }
@@ -91,6 +103,7 @@ namespace MagnusBall.Samples.TennisScene.Headless
             {
                 string colour = Colours[i % Colours.Length];
                 svg.AppendLine(Polyline(paths[i], p => sx(p.X), p => tz(p.Z), colour, "top"));
+                NetMarker(svg, reports[i], p => sx(p.X), p => tz(p.Z), colour);
                 Vector3d? second = reports[i].SecondBounce;
                 Marker(svg, reports[i], sx(reports[i].Landing.X), tz(reports[i].Landing.Z), colour,
                     second.HasValue ? sx(second.Value.X) : (double?)null, second.HasValue ? tz(second.Value.Z) : (double?)null);
@@ -104,10 +117,13 @@ namespace MagnusBall.Samples.TennisScene.Headless
                 string colour = Colours[i % Colours.Length];
                 svg.AppendLine(F("<line x1=\"{0:F0}\" y1=\"{1:F1}\" x2=\"{2:F0}\" y2=\"{1:F1}\" stroke=\"{3}\" stroke-width=\"3\"/>", Margin, y - 4, Margin + 30, colour));
                 string landing = r.Landed
-                    ? F("bounces at ({0:F2}, {1:F2}) m, {2}; leaves at {3:F1} m/s, {4:F1} deg", r.Landing.X, r.Landing.Z, r.IsIn ? "in" : r.ClearedNet ? "OUT" : "NET",
+                    ? F("bounces at ({0:F2}, {1:F2}) m, {2}; leaves at {3:F1} m/s, {4:F1} deg", r.Landing.X, r.Landing.Z,
+                        r.IsLet ? "a LET (clipped the cord, in the box)" : r.IsIn ? "in" : r.ClearedNet ? "OUT" : "NET",
                         r.SpeedAfterBounce, r.ReboundAngleDegrees)
                     : "no landing";
-                string clearance = r.NetClearance.HasValue ? F("net +{0:F2} m", r.NetClearance.Value) : "no net";
+                string clearance = r.NetContact.HasValue
+                    ? (ShotSimulation.IsCord(r.NetContact.Value.ShapeId) ? "clips the net cord" : "hits the net")
+                    : r.NetClearance.HasValue ? F("net +{0:F2} m", r.NetClearance.Value) : "no net";
                 svg.AppendLine(F("<text x=\"{0:F0}\" y=\"{1:F1}\">{2}: {3:F0} m/s at {4:F1} deg, topspin {5:F0} rpm, sidespin {6:F0} rpm; {7}; {8}</text>",
                     Margin + 40, y, Escape(r.Shot.Name), r.Shot.Speed, r.Shot.ElevationDegrees, r.Shot.TopspinRpm, r.Shot.SidespinRpm, clearance, landing, r.ApexHeight, r.TimeOfFlight));
             }
@@ -138,6 +154,17 @@ namespace MagnusBall.Samples.TennisScene.Headless
             }
         }
 
+        // A diamond where the ball touched the net.
+        private static void NetMarker(StringBuilder svg, ShotReport report, Func<Vector3d, double> x, Func<Vector3d, double> y, string colour)
+        {
+            if (report.NetContact is FlightEvent contact)
+            {
+                double cx = x(contact.Position), cy = y(contact.Position);
+                svg.AppendLine(F("<polygon points=\"{0:F1},{1:F1} {2:F1},{3:F1} {0:F1},{4:F1} {5:F1},{3:F1}\" fill=\"white\" stroke=\"{6}\" stroke-width=\"2\"/>",
+                    cx, cy - 6, cx + 6, cy, cy + 6, cx - 6, colour));
+            }
+        }
+
         private static string Polyline(Vector3d[] points, Func<Vector3d, double> x, Func<Vector3d, double> y, string colour, string clip)
         {
             var text = new StringBuilder();
@@ -145,13 +172,25 @@ namespace MagnusBall.Samples.TennisScene.Headless
             for (int i = 0; i < points.Length; i++)
             {
                 // Every 4th fixed state and the last: ~60 points a second are plenty at this scale.
-                if (i % 4 == 0 || i == points.Length - 1)
+                if (i % 4 == 0 || i == points.Length - 1 || Kink(points, i))
                 {
                     text.Append(F("{0:F1},{1:F1} ", x(points[i]), y(points[i])));
                 }
             }
 
             return text.Append("\"/>").ToString();
+        }
+
+        // A bounce or a touch of the net: the path turns there, so the point is drawn.
+        private static bool Kink(Vector3d[] points, int i)
+        {
+            if (i == 0 || i == points.Length - 1)
+            {
+                return false;
+            }
+
+            Vector3d a = points[i] - points[i - 1], b = points[i + 1] - points[i];
+            return Vector3d.Dot(a, b) < 0.95 * a.Length * b.Length;
         }
 
         private static string Escape(string text) => text.Replace("&", "&amp;").Replace("<", "&lt;").Replace(">", "&gt;");

@@ -20,8 +20,9 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// The target is reached at this speed, but every launch that reaches it hits the obstacle (its bottom passes
-        /// below the <see cref="AimObstacle"/>'s top): the fields describe the blocked launch (for
-        /// <see cref="AimSolution.Miss"/>, how far the ball's bottom passes below the top, m, negative).
+        /// below the <see cref="AimObstacle"/>'s top) or touches one of the solver's shapes on the way: the fields describe
+        /// the blocked launch (for <see cref="AimSolution.Miss"/>, how far the ball's bottom passes below the obstacle's top,
+        /// m, negative; for a shape, the blocked launch's distance from the target as its trial flew without the shape).
         /// </summary>
         Blocked = 3,
     }

@@ -8,7 +8,8 @@ namespace MagnusBall.Queries
     public sealed partial class AimSolver
     {
         private AimSolution AnglesToReachCore(
-            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees, AimArc arc, in AimObstacle obstacle)
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees, AimArc arc, in AimObstacle obstacle,
+            int? viaShapeId)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
@@ -17,19 +18,20 @@ namespace MagnusBall.Queries
             double limit = maximumAzimuthDegrees * (Math.PI / 180);
             AimGoal goal = TargetGoal(position, target, spin);
             AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
+            goal = ViaGoal(goal, viaShapeId);
             _trials.StartSolve(SolveBudget);
             AimSolution s = BothAngles(goal, speed, limit, arc == AimArc.High);
-            if (obstacle.IsNone)
+            if (!Checks(obstacle))
             {
                 return s;
             }
 
-            s = CheckClears(s, wall);
+            s = CheckAll(s, goal, obstacle, wall);
             if (s.Status == AimStatus.Blocked && arc == AimArc.Low)
             {
                 // The flat solution hits the obstacle: the lowest one that clears it is the lob, where it does.
                 _trials.RestartFirstStep(); // the lob's trials as a lob solve's own
-                AimSolution lob = CheckClears(BothAngles(goal, speed, limit, high: true), wall);
+                AimSolution lob = CheckAll(BothAngles(goal, speed, limit, high: true), goal, obstacle, wall);
                 return lob.Status == AimStatus.Solved || lob.Status == AimStatus.Blocked ? lob : WithFlights(s);
             }
 

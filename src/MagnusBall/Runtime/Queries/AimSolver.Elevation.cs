@@ -51,7 +51,8 @@ namespace MagnusBall.Queries
         }
 
         private AimSolution ElevationToReachCore(
-            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthFromTargetRadians, AimArc arc, in AimObstacle obstacle)
+            in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthFromTargetRadians, AimArc arc, in AimObstacle obstacle,
+            int? viaShapeId)
         {
             CheckTarget(position, target);
             Require.Positive(speed, nameof(speed));
@@ -59,20 +60,21 @@ namespace MagnusBall.Queries
             CheckArc(arc);
             AimGoal goal = TargetGoal(position, target, spin);
             AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
+            goal = ViaGoal(goal, viaShapeId);
             _trials.StartSolve(SolveBudget);
             double path = PathToTarget(goal, azimuthFromTargetRadians);
             AimSolution s = SolveElevation(goal, speed, azimuthFromTargetRadians, path, double.NaN, arc == AimArc.High, out _);
-            if (obstacle.IsNone)
+            if (!Checks(obstacle))
             {
                 return s;
             }
 
-            s = CheckClears(s, wall);
+            s = CheckAll(s, goal, obstacle, wall);
             if (s.Status == AimStatus.Blocked && arc == AimArc.Low)
             {
                 // The flat solution hits the obstacle: the lowest one that clears it is the lob, where it does.
                 _trials.RestartFirstStep(); // the lob's trials as a lob solve's own
-                AimSolution lob = CheckClears(SolveElevation(goal, speed, azimuthFromTargetRadians, path, double.NaN, true, out _), wall);
+                AimSolution lob = CheckAll(SolveElevation(goal, speed, azimuthFromTargetRadians, path, double.NaN, true, out _), goal, obstacle, wall);
                 return lob.Status == AimStatus.Solved || lob.Status == AimStatus.Blocked ? lob : WithFlights(s);
             }
 
@@ -181,9 +183,12 @@ namespace MagnusBall.Queries
             }
 
             double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
-            bool probed = _trials.HasCoarse; // with coarse trials, SolveFromGuess probes where the coarse secant fails
+            // The reach probe's golden sections look for one hump of the margin: a bank shot's (which banks in a window of
+            // elevations and fails outside it) can hide from them, so its solve goes to the scan instead.
+            bool probe = !goal.HasVia;
+            bool probed = _trials.HasCoarse && probe; // with coarse trials, SolveFromGuess probes where the coarse secant fails
             if (SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
-                    ref margin, probe: true, out elevation, out AimSolution atRoot, out bool outOfReach))
+                    ref margin, probe, out elevation, out AimSolution atRoot, out bool outOfReach))
             {
                 return WithFlights(atRoot);
             }
@@ -194,7 +199,7 @@ namespace MagnusBall.Queries
                 return Unreachable(speed, azimuth);
             }
 
-            if (!probed && !ProbeReaches(ref margin, out _))
+            if (!probed && probe && !ProbeReaches(ref margin, out _))
             {
                 elevation = double.NaN;
                 return Unreachable(speed, azimuth);
@@ -263,9 +268,10 @@ namespace MagnusBall.Queries
 
             double guess = VacuumAim.HighElevation(_gravity, speed, path, goal.Rise, out double slope);
             var mirrored = new MirroredMargin<ElevationMargin>(margin);
-            bool probed = _trials.HasCoarse;
+            bool probe = !goal.HasVia; // as for the low arc
+            bool probed = _trials.HasCoarse && probe;
             if (SolveFromGuess(ref mirrored, -guess, -slope, -MaximumElevationRadians, -MinimumElevationRadians, AngleStride, AngleTolerance,
-                    ref margin, probe: true, out double root, out AimSolution atRoot, out bool outOfReach))
+                    ref margin, probe, out double root, out AimSolution atRoot, out bool outOfReach))
             {
                 elevation = -root;
                 return WithFlights(atRoot);
@@ -277,7 +283,7 @@ namespace MagnusBall.Queries
                 return Unreachable(speed, azimuth);
             }
 
-            if (!probed && !ProbeReaches(ref margin, out _))
+            if (!probed && probe && !ProbeReaches(ref margin, out _))
             {
                 elevation = double.NaN;
                 return Unreachable(speed, azimuth);

@@ -8,21 +8,21 @@ namespace MagnusBall.Queries
     public sealed partial class AimSolver
     {
         private AimSolution SpeedToReachCore(
-            in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target, in AimObstacle obstacle)
+            in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target, in AimObstacle obstacle,
+            int? viaShapeId)
         {
             CheckTarget(position, target);
             AimGoal goal = TargetGoal(position, target, spin);
             AimGoal wall = obstacle.IsNone ? default : ObstacleGoal(goal, obstacle);
-            AimSolution s = SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, spin, target);
-            return obstacle.IsNone ? s : CheckClears(s, wall);
+            goal = ViaGoal(goal, viaShapeId);
+            AimSolution s = SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, goal);
+            return Checks(obstacle) ? CheckAll(s, goal, obstacle, wall) : s;
         }
 
-        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target)
+        private AimSolution SpeedToReachCore(in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in AimGoal goal)
         {
-            CheckTarget(position, target);
             Require.InRange(elevationRadians, -0.5 * Math.PI + 1e-9, 0.5 * Math.PI - 1e-9, nameof(elevationRadians));
             Require.Finite(azimuthFromTargetRadians, nameof(azimuthFromTargetRadians));
-            AimGoal goal = TargetGoal(position, target, spin);
             _trials.StartSolve(SolveBudget);
             var margin = new SpeedMargin(_trials, goal, elevationRadians, azimuthFromTargetRadians);
             double scan = 0.01 * MaximumSpeed;

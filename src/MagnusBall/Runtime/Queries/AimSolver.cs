@@ -3,6 +3,7 @@
 // AimSolver.Elevation.cs (the elevation solves and the bracket-and-refine root finder every one-variable solve uses),
 // AimSolver.Speed.cs (the speed solve), AimSolver.Angles.cs (both angles at once: Broyden, then an azimuth search).
 using System;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
@@ -20,7 +21,7 @@ namespace MagnusBall.Queries
     /// <remarks>
     /// <para><b>Trials.</b> Every trial is a full flight through the one flight core (<see cref="FlightStepper"/>) with
     /// the plane crossing located on the step's dense output. A solver built without an integrator
-    /// (<see cref="AimSolver(FlightModel, Plane, double, double, double, double, double, long)"/>) flies adaptive
+    /// (<see cref="AimSolver(FlightModel, Plane, double, double, double, double, double, long, ContactShape[])"/>) flies adaptive
     /// Dormand-Prince 5(4) trials (<see cref="FlightStepper.TryStepAdaptive"/>, relative and absolute tolerance
     /// <see cref="TrialTolerance"/> = 1e-8; the early trials of a solve, far from its answer, at 1e-5), events on the
     /// method's own interpolant. Its answers are within 2e-8 rad (1.2e-6 degree) and 1e-7 m/s of the same solve with
@@ -46,6 +47,14 @@ namespace MagnusBall.Queries
     /// Solved, and <see cref="AimSolution.Miss"/> is the target's depth below the landing. A target given on the court
     /// while the ground plane is at the ball's centre height, one radius up (as the tennis scene's), is such a case:
     /// Miss is the radius.</para>
+    /// <para><b>Shapes.</b> A solver built with shapes (<see cref="ContactShape"/>: a net, posts, a backboard, a rim) treats
+    /// them as obstacles: the solve's answer is flown once more among them, and an answer that touches one before it reaches
+    /// the target is not a solution; the low arc then tries the lob, and where that touches one too the solve returns
+    /// <see cref="AimStatus.Blocked"/>. A solve given a viaShapeId aims a bank shot off the shapes of that id: its trials fly
+    /// with those shapes alone and arrive only at a crossing of the target's plane after touching them, that plane's normal
+    /// being the horizontal direction from the middle of their bounding box to the target (the way the ball comes back); the
+    /// answer is then checked among every shape as above. Shapes behind the target (met after the answer arrives) do not
+    /// block it. Without shapes the trials and answers are those of a solver without them, bit for bit.</para>
     /// <para>Holds one <see cref="FlightStepper"/>: not thread-safe; create one solver per thread.</para>
     /// </remarks>
     public sealed partial class AimSolver
@@ -137,7 +146,8 @@ namespace MagnusBall.Queries
         /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>. A solution window narrower than this can be missed where the scan is used.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
         /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. Fixed steps cost what they cost (an RK4 tennis solve at 1/240 s makes 5,000-15,000), so the default is 1,000,000.</param>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <param name="shapes">The world's shapes (a net, posts, a backboard and rim; copied), obstacles to every solve and the shapes a bank shot can go off (the solves' viaShapeId); null or empty for none. See the remarks.</param>
+        /// <exception cref="ArgumentException">An argument is out of range, or an element of shapes is null; the message names it.</exception>
         public AimSolver(
             FlightModel model,
             IIntegrator integrator,
@@ -148,9 +158,10 @@ namespace MagnusBall.Queries
             double maximumElevationDegrees = 80,
             double elevationScanDegrees = 2,
             double maximumSpeed = 100,
-            long maximumEvaluationsPerSolve = MaxEvaluationsPerSolve)
+            long maximumEvaluationsPerSolve = MaxEvaluationsPerSolve,
+            ContactShape[]? shapes = null)
             : this(model, Require.NotNull(integrator, nameof(integrator)), step, ground, maximumFlightTime, minimumElevationDegrees,
-                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: false)
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: false, shapes)
         {
         }
 
@@ -166,7 +177,8 @@ namespace MagnusBall.Queries
         /// <param name="elevationScanDegrees">Elevation scan step of the fallback scan, degrees; in (0, 10], and no finer than (maximum - minimum) / <see cref="MaximumScanTrials"/>.</param>
         /// <param name="maximumSpeed">Highest speed tried by <see cref="SpeedToReach"/>, m/s; finite and &gt; 0.</param>
         /// <param name="maximumEvaluationsPerSolve">The work budget of one solve: model evaluations plus steps over all its trials; in [1,000, 1e9]. Past it the solve returns <see cref="AimStatus.WorkLimitReached"/>. The default, 20,000, is about 1 ms of tennis-model work on a desktop core; an ordinary drive makes 200-700, a lob a few thousand (docs/queries.md).</param>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <param name="shapes">The world's shapes (a net, posts, a backboard and rim; copied), obstacles to every solve and the shapes a bank shot can go off (the solves' viaShapeId); null or empty for none. See the remarks.</param>
+        /// <exception cref="ArgumentException">An argument is out of range, or an element of shapes is null; the message names it.</exception>
         public AimSolver(
             FlightModel model,
             Plane ground,
@@ -175,9 +187,10 @@ namespace MagnusBall.Queries
             double maximumElevationDegrees = 80,
             double elevationScanDegrees = 2,
             double maximumSpeed = 100,
-            long maximumEvaluationsPerSolve = DefaultAdaptiveEvaluationsPerSolve)
+            long maximumEvaluationsPerSolve = DefaultAdaptiveEvaluationsPerSolve,
+            ContactShape[]? shapes = null)
             : this(model, TrialMethod, LongestAdaptiveStep, ground, maximumFlightTime, minimumElevationDegrees,
-                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: true)
+                maximumElevationDegrees, elevationScanDegrees, maximumSpeed, maximumEvaluationsPerSolve, adaptive: true, shapes)
         {
         }
 
@@ -192,9 +205,21 @@ namespace MagnusBall.Queries
             double elevationScanDegrees,
             double maximumSpeed,
             long maximumEvaluationsPerSolve,
-            bool adaptive)
+            bool adaptive,
+            ContactShape[]? shapes)
         {
             Require.NotNull(model, nameof(model));
+            if (shapes != null)
+            {
+                for (int i = 0; i < shapes.Length; i++)
+                {
+                    if (shapes[i] == null)
+                    {
+                        throw new ArgumentException($"shapes[{i}] is null; every element must be a shape.", nameof(shapes));
+                    }
+                }
+            }
+
             if (model.Up.LengthSquared == 0)
             {
                 throw new ArgumentException("model must have non-zero gravity: aiming needs an up direction.", nameof(model));
@@ -243,7 +268,7 @@ namespace MagnusBall.Queries
             Model = model;
             Integrator = integrator;
             _gravity = model.Gravity.Length;
-            _trials = new AimTrials(model, integrator, step, ground, maximumFlightTime, adaptive, adaptive ? CoarseMethod : null);
+            _trials = new AimTrials(model, integrator, step, ground, maximumFlightTime, adaptive, adaptive ? CoarseMethod : null, shapes);
         }
 
         /// <summary>The flight model.</summary>
@@ -317,12 +342,13 @@ namespace MagnusBall.Queries
         /// <param name="azimuthFromTargetRadians">Azimuth from the direction to the target toward the frame's side, rad; finite.</param>
         /// <param name="arc">The low (flat) or high (lob) solution where both exist.</param>
         /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable (no elevation reaches the target at this speed), Blocked (every one that does hits the obstacle) or WorkLimitReached.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <param name="viaShapeId">A bank shot: the id of the solver's shapes the ball must go off on its way to the target (the backboard); null (the default) for a direct shot.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable (no elevation reaches the target at this speed), Blocked (every one that does hits the obstacle or one of the solver's shapes) or WorkLimitReached.</returns>
+        /// <exception cref="ArgumentException">An argument is out of range, or viaShapeId names none of the solver's shapes; the message names it.</exception>
         public AimSolution ElevationToReach(
             in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double azimuthFromTargetRadians = 0,
-            AimArc arc = AimArc.Low, AimObstacle obstacle = default) =>
-            Finish(ElevationToReachCore(position, speed, spin, target, azimuthFromTargetRadians, arc, obstacle));
+            AimArc arc = AimArc.Low, AimObstacle obstacle = default, int? viaShapeId = null) =>
+            Finish(ElevationToReachCore(position, speed, spin, target, azimuthFromTargetRadians, arc, obstacle, viaShapeId));
 
         /// <summary>
         /// (b') The elevation and azimuth at which a ball launched from <paramref name="position"/> at
@@ -341,12 +367,13 @@ namespace MagnusBall.Queries
         /// <param name="maximumAzimuthDegrees">The largest azimuth turn tried either way, degrees; in (0, 89].</param>
         /// <param name="arc">The low (flat) or high (lob) solution where both exist.</param>
         /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (every launch that reaches the target hits the obstacle) or WorkLimitReached.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <param name="viaShapeId">A bank shot: the id of the solver's shapes the ball must go off on its way to the target (the backboard); null (the default) for a direct shot.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (every launch that reaches the target hits the obstacle or one of the solver's shapes) or WorkLimitReached.</returns>
+        /// <exception cref="ArgumentException">An argument is out of range, or viaShapeId names none of the solver's shapes; the message names it.</exception>
         public AimSolution AnglesToReach(
             in Vector3d position, double speed, in LaunchSpin spin, in Vector3d target, double maximumAzimuthDegrees = 45,
-            AimArc arc = AimArc.Low, AimObstacle obstacle = default) =>
-            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees, arc, obstacle));
+            AimArc arc = AimArc.Low, AimObstacle obstacle = default, int? viaShapeId = null) =>
+            Finish(AnglesToReachCore(position, speed, spin, target, maximumAzimuthDegrees, arc, obstacle, viaShapeId));
 
         /// <summary>
         /// (c) The lowest speed at which a ball launched from <paramref name="position"/> at the given elevation
@@ -358,12 +385,13 @@ namespace MagnusBall.Queries
         /// <param name="spin">The spin, by effect relative to the launch direction.</param>
         /// <param name="target">The target point, m; finite, not straight above or below the launch point.</param>
         /// <param name="obstacle">A wall or net the ball must clear on the way (default: none); its distance short of the target's.</param>
-        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (the speed that reaches the target hits the obstacle) or WorkLimitReached.</returns>
-        /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+        /// <param name="viaShapeId">A bank shot: the id of the solver's shapes the ball must go off on its way to the target (the backboard); null (the default) for a direct shot.</param>
+        /// <returns>The solution (<see cref="AimSolution.Miss"/> is the distance from the target), Unreachable, Blocked (the speed that reaches the target hits the obstacle or one of the solver's shapes) or WorkLimitReached.</returns>
+        /// <exception cref="ArgumentException">An argument is out of range, or viaShapeId names none of the solver's shapes; the message names it.</exception>
         public AimSolution SpeedToReach(
             in Vector3d position, double elevationRadians, double azimuthFromTargetRadians, in LaunchSpin spin, in Vector3d target,
-            AimObstacle obstacle = default) =>
-            Finish(SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, spin, target, obstacle));
+            AimObstacle obstacle = default, int? viaShapeId = null) =>
+            Finish(SpeedToReachCore(position, elevationRadians, azimuthFromTargetRadians, spin, target, obstacle, viaShapeId));
 
         private AimSolution Unreachable(double speed, double azimuth) =>
             new AimSolution(AimStatus.Unreachable, speed, 0, azimuth, default, default, default, double.PositiveInfinity, _trials.Flights);
@@ -421,6 +449,54 @@ namespace MagnusBall.Queries
                 ? WithFlights(s)
                 : new AimSolution(AimStatus.Blocked, s.Speed, s.ElevationRadians, s.AzimuthFromTargetRadians, s.Velocity, s.AngularVelocity, s.Arrival,
                     double.IsNaN(clearance) ? double.NegativeInfinity : clearance, _trials.Flights);
+        }
+
+        /// <summary>Whether a solve's answer is checked after its search: against an obstacle, or among the solver's shapes.</summary>
+        private bool Checks(in AimObstacle obstacle) => !obstacle.IsNone || _trials.HasShapes;
+
+        /// <summary>
+        /// A solved target launch checked against the obstacle (<see cref="CheckClears"/>, where there is one) and then among the
+        /// solver's shapes by one flight to its plane: Blocked, with the solved trial's miss, where it touches a shape before it
+        /// arrives (other than a bank shot's via shape, first). Unsolved results pass through.
+        /// </summary>
+        private AimSolution CheckAll(in AimSolution s, in AimGoal goal, in AimObstacle obstacle, in AimGoal wall)
+        {
+            AimSolution c = obstacle.IsNone ? s : CheckClears(s, wall);
+            if (!c.IsSolved || !_trials.HasShapes)
+            {
+                return c;
+            }
+
+            return _trials.ClearsShapes(goal, c, out _)
+                ? WithFlights(c)
+                : new AimSolution(AimStatus.Blocked, c.Speed, c.ElevationRadians, c.AzimuthFromTargetRadians, c.Velocity, c.AngularVelocity, c.Arrival, c.Miss, _trials.Flights);
+        }
+
+        /// <summary>
+        /// A bank shot's goal: <paramref name="goal"/> with its plane through the target facing the horizontal direction from
+        /// the middle of the via shapes' bounds to the target (where that is vertical, back along the frame's forward).
+        /// </summary>
+        /// <exception cref="ArgumentException">No shape of the solver has id <paramref name="viaShapeId"/>.</exception>
+        private AimGoal ViaGoal(in AimGoal goal, int? viaShapeId)
+        {
+            if (viaShapeId == null)
+            {
+                return goal;
+            }
+
+            int id = viaShapeId.Value;
+            if (!_trials.HasShape(id))
+            {
+                throw new ArgumentException(
+                    $"viaShapeId must be the id of one of the solver's shapes ({(_trials.HasShapes ? "it has none of id " + id : "it has no shapes: give them to the constructor")}); got {id}.",
+                    nameof(viaShapeId));
+            }
+
+            Vector3d up = Model.Up;
+            Vector3d back = goal.Target - _trials.ShapeCentre(id);
+            back -= up * Vector3d.Dot(back, up);
+            Vector3d normal = back.Length > 1e-9 ? back.NormalizedOrZero() : -goal.Frame.Forward;
+            return new AimGoal(goal.Position, goal.Frame, goal.Spin, new Plane(goal.Target, normal), goal.Target, missToTarget: true, hasVia: true, viaId: id);
         }
 
         private static void CheckTarget(in Vector3d position, in Vector3d target)

@@ -1,4 +1,5 @@
 using System;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Flight;
 using MagnusBall.Integration;
 
@@ -18,7 +19,14 @@ namespace MagnusBall.Queries
         public readonly Vector3d Target;
         public readonly bool MissToTarget;
 
-        public AimGoal(in Vector3d position, in LaunchFrame frame, in LaunchSpin spin, in Plane plane, in Vector3d target, bool missToTarget)
+        /// <summary>True for a bank shot: the trial arrives only at a crossing after it touched the shapes of id <see cref="ViaId"/>.</summary>
+        public readonly bool HasVia;
+
+        /// <summary>The id of the shapes a bank shot must touch first (see <see cref="HasVia"/>).</summary>
+        public readonly int ViaId;
+
+        public AimGoal(in Vector3d position, in LaunchFrame frame, in LaunchSpin spin, in Plane plane, in Vector3d target, bool missToTarget,
+            bool hasVia = false, int viaId = 0)
         {
             Position = position;
             Frame = frame;
@@ -26,6 +34,8 @@ namespace MagnusBall.Queries
             Plane = plane;
             Target = target;
             MissToTarget = missToTarget;
+            HasVia = hasVia;
+            ViaId = viaId;
         }
 
         /// <summary>The target's height above the launch point, along up, m (infinite where it exceeds a double, never NaN).</summary>
@@ -45,6 +55,15 @@ namespace MagnusBall.Queries
         public const int MaximumAdaptiveSteps = 100_000;
 
         private readonly FlightStepper _stepper;
+        // With the solver's shapes: the check flight of a solution (every shape), and the trials of a bank shot (the shapes of
+        // its via id alone; built on the first solve with that id, kept for the next). Null without shapes.
+        private readonly FlightStepper? _world;
+        private readonly ContactShape[]? _shapes;
+        private readonly FlightModel _model;
+        private readonly IIntegrator _integrator;
+        private readonly Plane _ground;
+        private FlightStepper? _via;
+        private int _viaId;
         private readonly Plane[] _plane = new Plane[1]; // the current trial's plane, watched by _stepper's event set
         private readonly DormandPrince54? _adaptive;
         private readonly DormandPrince54? _coarse;
@@ -66,10 +85,21 @@ namespace MagnusBall.Queries
         /// <param name="maximumFlightTime">The longest trial, s.</param>
         /// <param name="adaptive">True: adaptive trials with <paramref name="integrator"/> (a <see cref="DormandPrince54"/>).</param>
         /// <param name="coarse">For adaptive trials, the looser method of <see cref="Coarse"/> trials (null: none).</param>
-        public AimTrials(FlightModel model, IIntegrator integrator, double step, in Plane ground, double maximumFlightTime, bool adaptive, DormandPrince54? coarse)
+        /// <param name="shapes">The solver's shapes (checked, copied; null or empty: none).</param>
+        public AimTrials(FlightModel model, IIntegrator integrator, double step, in Plane ground, double maximumFlightTime, bool adaptive, DormandPrince54? coarse,
+            ContactShape[]? shapes = null)
         {
             _coarse = adaptive ? coarse : null;
             _stepper = new FlightStepper(model, integrator, FlightEventSet.Sharing(ground, _plane));
+            _model = model;
+            _integrator = integrator;
+            _ground = ground;
+            if (shapes != null && shapes.Length > 0)
+            {
+                _world = new FlightStepper(model, integrator, FlightEventSet.Sharing(ground, _plane), null, shapes);
+                _shapes = (ContactShape[])shapes.Clone();
+            }
+
             _adaptive = adaptive ? (DormandPrince54)integrator : null;
             _step = step;
             _maximumFlightTime = maximumFlightTime;
@@ -140,13 +170,14 @@ namespace MagnusBall.Queries
                 arrival = new FlightState(goal.Position, velocity, spin);
                 margin = double.NegativeInfinity;
             }
-            else if (Fly(new FlightState(goal.Position, velocity, spin), goal.Plane, out arrival, out landed))
+            else if (Fly(new FlightState(goal.Position, velocity, spin), goal, out arrival, out landed))
             {
                 margin = Vector3d.DotOfDifference(arrival.Position, goal.Target, _up); // never NaN: the target may be near 1e308 away
             }
             else
             {
-                margin = landed ? ShortMargin(goal, arrival) : double.NegativeInfinity;
+                // A bank shot's trial that lands before it touched its shape did not bank (margin -infinity, as a failed trial).
+                margin = landed && (!goal.HasVia || _viaTouched) ? ShortMargin(goal, arrival) : double.NegativeInfinity;
             }
 
             double miss = goal.MissToTarget ? Vector3d.Distance(arrival.Position, goal.Target) : margin;
@@ -176,11 +207,12 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>
-        /// Flies one trial to <paramref name="plane"/>: true with the crossing state when the ball crosses it along its
+        /// Flies one trial to the goal's plane (after its via shape, for a bank shot): true with the crossing state when the ball crosses it along its
         /// normal before landing; false with the landing (or last) state otherwise.
         /// </summary>
-        private bool Fly(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        private bool Fly(in FlightState launch, in AimGoal goal, out FlightState arrival, out bool landed)
         {
+            _viaTouched = false;
             if (WorkLimitReached)
             {
                 // Past the work cap: no more trials are flown (each fails), so the solve ends quickly.
@@ -189,8 +221,9 @@ namespace MagnusBall.Queries
                 return false;
             }
 
-            bool arrived = FlyTrial(launch, plane, out arrival, out landed);
-            Work += _stepper.DerivativeEvaluations + _stepper.StepCount;
+            FlightStepper stepper = goal.HasVia ? ViaStepper(goal.ViaId) : _stepper;
+            bool arrived = FlyTrial(stepper, launch, goal, out arrival, out landed);
+            Work += stepper.DerivativeEvaluations + stepper.StepCount;
             return arrived;
         }
 
@@ -202,14 +235,14 @@ namespace MagnusBall.Queries
             return tolerance == _firstTolerance ? _firstStep : _firstStep * DormandPrince54.PowMinusOneFifth(_firstTolerance / tolerance);
         }
 
-        private bool FlyTrial(in FlightState launch, in Plane plane, out FlightState arrival, out bool landed)
+        private bool FlyTrial(FlightStepper stepper, in FlightState launch, in AimGoal goal, out FlightState arrival, out bool landed)
         {
             Flights++;
-            FlightStepper stepper = _stepper;
-            _plane[0] = plane;
+            _plane[0] = goal.Plane;
             stepper.Reset(launch);
             double endTime = launch.Time + _maximumFlightTime;
-            const FlightEventKinds stopAt = FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing;
+            // A bank shot's trial does not stop at a crossing: only one after its touch of the shape counts (found below).
+            FlightEventKinds stopAt = goal.HasVia ? FlightEventKinds.Landing : FlightEventKinds.Landing | FlightEventKinds.PlaneCrossing;
             // Bounded: fixed trials advance the clock by a step per pass (at most maximumFlightTime / step + 1 passes, the
             // last step trimmed to the time limit by the one end-time rule); adaptive trials take at most
             // MaximumAdaptiveSteps steps; no trial goes past the solve's work budget.
@@ -257,6 +290,19 @@ namespace MagnusBall.Queries
                     break; // this trial fails (margin -infinity), the solve goes on
                 }
 
+                if (goal.HasVia && ViaArrival(stepper, goal.ViaId, out arrival))
+                {
+                    landed = false;
+                    return true;
+                }
+
+                if (stepper.IsStopped && goal.HasVia)
+                {
+                    arrival = stepper.StopEvent.State;
+                    landed = true;
+                    return false;
+                }
+
                 if (stepper.IsStopped)
                 {
                     // A crossing at the same instant as the landing still arrives.
@@ -284,6 +330,159 @@ namespace MagnusBall.Queries
             arrival = stepper.State;
             landed = false;
             return false;
+        }
+        // True once the current bank-shot trial touched its shape.
+        private bool _viaTouched;
+
+        /// <summary>True when the solver has shapes.</summary>
+        public bool HasShapes => _shapes != null;
+
+        /// <summary>True when one of the solver's shapes has id <paramref name="id"/>.</summary>
+        public bool HasShape(int id)
+        {
+            if (_shapes != null)
+            {
+                foreach (ContactShape shape in _shapes)
+                {
+                    if (shape.Id == id)
+                    {
+                        return true;
+                    }
+                }
+            }
+
+            return false;
+        }
+
+        /// <summary>The middle of the bounding boxes of the solver's shapes of id <paramref name="id"/> (one of them must exist).</summary>
+        public Vector3d ShapeCentre(int id)
+        {
+            Vector3d lo = default, hi = default;
+            bool any = false;
+            foreach (ContactShape shape in _shapes!)
+            {
+                if (shape.Id == id)
+                {
+                    Vector3d a = shape.BoundsMin, b = shape.BoundsMax;
+                    lo = any ? new Vector3d(Math.Min(lo.X, a.X), Math.Min(lo.Y, a.Y), Math.Min(lo.Z, a.Z)) : a;
+                    hi = any ? new Vector3d(Math.Max(hi.X, b.X), Math.Max(hi.Y, b.Y), Math.Max(hi.Z, b.Z)) : b;
+                    any = true;
+                }
+            }
+
+            return (lo + hi) * 0.5;
+        }
+
+        // The stepper of a bank shot's trials: the shapes of its id alone (the others are met by the solution's check flight).
+        private FlightStepper ViaStepper(int id)
+        {
+            if (_via == null || _viaId != id)
+            {
+                int count = 0;
+                foreach (ContactShape shape in _shapes!)
+                {
+                    count += shape.Id == id ? 1 : 0;
+                }
+
+                var via = new ContactShape[count];
+                count = 0;
+                foreach (ContactShape shape in _shapes)
+                {
+                    if (shape.Id == id)
+                    {
+                        via[count++] = shape;
+                    }
+                }
+
+                _via = new FlightStepper(_model, _integrator, FlightEventSet.Sharing(_ground, _plane), null, via);
+                _viaId = id;
+            }
+
+            return _via;
+        }
+
+        // The last step's crossing of the goal's plane after the trial touched the shapes of id `via` (in this step or before).
+        private bool ViaArrival(FlightStepper stepper, int via, out FlightState arrival)
+        {
+            foreach (FlightEvent e in SpanView.Of(stepper.Events))
+            {
+                if (e.Kind == FlightEventKinds.Contact && e.ShapeId == via)
+                {
+                    _viaTouched = true;
+                }
+                else if (e.Kind == FlightEventKinds.PlaneCrossing && _viaTouched)
+                {
+                    arrival = e.State;
+                    return true;
+                }
+            }
+
+            arrival = default;
+            return false;
+        }
+
+        /// <summary>
+        /// The check flight of a solution among every shape, to its goal's plane (after the via shape for a bank shot): true when
+        /// it touches no shape but the via one before it arrives (or lands); false with the id of the first other shape touched.
+        /// </summary>
+        public bool ClearsShapes(in AimGoal goal, in AimSolution s, out int touched)
+        {
+            touched = 0;
+            FlightStepper stepper = _world!;
+            Flights++;
+            _plane[0] = goal.Plane;
+            stepper.Reset(new FlightState(goal.Position, s.Velocity, s.AngularVelocity));
+            double endTime = stepper.CurrentTime + _maximumFlightTime;
+            bool viaTouched = false;
+            bool clear = true;
+            for (int pass = 0; pass < MaximumAdaptiveSteps && !stepper.IsStopped; pass++)
+            {
+                double left = endTime - stepper.CurrentTime;
+                if (!(left > 0) || Work + stepper.DerivativeEvaluations + stepper.StepCount >= Budget)
+                {
+                    break;
+                }
+
+                StepOutcome outcome = _adaptive != null
+                    ? stepper.TryStepAdaptive(_adaptive, Math.Min(left, _step), FlightEventKinds.Landing)
+                    : stepper.TryStep(FlightStepper.StepTowardUnchecked(stepper.CurrentTime, endTime, _step, out _), FlightEventKinds.Landing);
+                if (outcome == StepOutcome.Diverged || outcome == StepOutcome.TimeCannotAdvance)
+                {
+                    break;
+                }
+
+                bool done = false;
+                foreach (FlightEvent e in SpanView.Of(stepper.Events))
+                {
+                    if (e.Kind == FlightEventKinds.Contact)
+                    {
+                        if (goal.HasVia && e.ShapeId == goal.ViaId && !viaTouched)
+                        {
+                            viaTouched = true;
+                            continue;
+                        }
+
+                        touched = e.ShapeId;
+                        clear = false;
+                        done = true;
+                        break;
+                    }
+
+                    if (e.Kind == FlightEventKinds.PlaneCrossing && (!goal.HasVia || viaTouched))
+                    {
+                        done = true;
+                        break;
+                    }
+                }
+
+                if (done)
+                {
+                    break;
+                }
+            }
+
+            Work += stepper.DerivativeEvaluations + stepper.StepCount;
+            return clear;
         }
     }
 }

@@ -3,6 +3,7 @@
 using System;
 using MagnusBall.Flight;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Integration;
 using MagnusBall.Stepping;
 using UnityEngine;
@@ -33,6 +34,11 @@ namespace MagnusBall.Components
                 case FlightEventKinds.Rest:
                     Raise(Stopped, onStopped, e);
                     break;
+                case FlightEventKinds.Contact:
+                    _segmentStart = e.After; // a new arc starts at the hit, as at a bounce
+                    _segmentVersion++;
+                    Raise(Contacted, onContact, e);
+                    break;
             }
         }
 
@@ -55,13 +61,14 @@ namespace MagnusBall.Components
             }
         }
 
-        private void Set(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        private void Set(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame, ContactShape[]? shapes)
         {
-            CheckConfiguration(model, integratorToUse, step, events, bounce, maxFrame);
-            Assign(model, integratorToUse, step, events, bounce, maxFrame);
+            CheckConfiguration(model, integratorToUse, step, events, bounce, maxFrame, shapes);
+            Assign(model, integratorToUse, step, events, bounce, maxFrame, shapes);
         }
 
-        private static void CheckConfiguration(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        private static void CheckConfiguration(
+            FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame, ContactShape[]? shapes)
         {
             if (model == null)
             {
@@ -79,7 +86,7 @@ namespace MagnusBall.Components
             }
 
             // The driver checks the numbers (fixed step, clamp, a ground for the bounce) and names them.
-            _ = new FixedStepDriver(model, integratorToUse, step, new FlightState(Vector3d.Zero, Vector3d.Zero, Vector3d.Zero), events, bounce, maxFrame);
+            _ = new FixedStepDriver(model, integratorToUse, step, new FlightState(Vector3d.Zero, Vector3d.Zero, Vector3d.Zero), events, bounce, maxFrame, shapes: shapes);
             if (!(step <= maxFrame))
             {
                 // Frames are cut to the clamp, so a longer step is never reached: the ball would hang at its start.
@@ -88,8 +95,9 @@ namespace MagnusBall.Components
             }
         }
 
-        private void Assign(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+        private void Assign(FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame, ContactShape[]? shapes)
         {
+            _shapes = shapes;
             _model = model;
             _integrator = integratorToUse;
             _fixedStep = step;

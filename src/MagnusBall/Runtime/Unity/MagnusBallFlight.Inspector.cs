@@ -27,7 +27,7 @@ namespace MagnusBall.Components
                 _reported = null;
                 if (_flying && _driver != null && !_driver.IsFinished)
                 {
-                    StartFlight(Build(_driver.State, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta), announce: false);
+                    StartFlight(Build(_driver.State, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta, _shapes), announce: false);
                 }
             }
             catch (ArgumentException e)

@@ -1,7 +1,9 @@
 #nullable enable
 using System;
+using System.Collections.Generic;
 using MagnusBall.Flight;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Integration;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;
@@ -86,6 +88,23 @@ namespace MagnusBall.Components
         /// <summary>The watched plane's normal (need not be unit length).</summary>
         public Vector3 planeNormal = new Vector3(1, 0, 0);
 
+        /// <summary>
+        /// The scene's colliders the ball hits in flight (walls, boards, posts): each becomes a MagnusBall contact shape where the
+        /// match is exact (BoxCollider: a box, CapsuleCollider: a capsule; see <see cref="ColliderShapes"/>), with id its index
+        /// here; others are skipped with a warning. Read at <see cref="ApplySettings"/>: move a collider, apply again.
+        /// </summary>
+        [Tooltip("Colliders the ball hits in flight: boxes and capsules become exact MagnusBall shapes (id = index); others are skipped with a warning.")]
+        public List<Collider> shapeColliders = new List<Collider>();
+
+        /// <summary>The normal restitution of a hit on a collider's shape, in [0, 1].</summary>
+        [Tooltip("Normal restitution of a hit on those colliders, 0..1.")]
+        [Range(0, 1)]
+        public float shapeRestitution = 0.7f;
+
+        /// <summary>The friction of a hit on a collider's shape, &gt;= 0.</summary>
+        [Tooltip("Friction of a hit on those colliders, >= 0.")]
+        public float shapeFriction = 0.3f;
+
         /// <summary>Turn the transform with the ball's spin (for the eye; the physics does not need it).</summary>
         [Tooltip("Turn the transform with the ball's spin.")]
         public bool rotateWithSpin = true;
@@ -109,11 +128,15 @@ namespace MagnusBall.Components
         /// <summary>Raised with <see cref="Stopped"/>: the ball came to rest.</summary>
         public FlightEventUnityEvent onStopped = new FlightEventUnityEvent();
 
+        /// <summary>Raised with <see cref="Contacted"/>: the ball hit one of the shapes (its ShapeId: the index in shapeColliders).</summary>
+        public FlightEventUnityEvent onContact = new FlightEventUnityEvent();
+
         private FlightEvent[] _events = new FlightEvent[16]; // grown at a launch to the driver's MaximumEventsPerStep: no event is lost
         private FlightModel? _model;
         private IIntegrator? _integrator;
         private FlightEventSet? _eventSet;
         private IBounceModel? _bounce;
+        private ContactShape[]? _shapes;
         private double _fixedStep;
         private double _maxFrameDelta;
         private FixedStepDriver? _driver;
@@ -141,6 +164,12 @@ namespace MagnusBall.Components
 
         /// <summary>The ball came to rest (the driver's <see cref="FlightEventKinds.Rest"/> event): the flight has ended (with a bounce model).</summary>
         public event Action<FlightEvent>? Stopped;
+
+        /// <summary>
+        /// The ball hit one of the contact shapes (the driver's <see cref="FlightEventKinds.Contact"/> event: its ShapeId, the
+        /// index in <see cref="shapeColliders"/> or the caller's id, and ContactNormal); the flight goes on.
+        /// </summary>
+        public event Action<FlightEvent>? Contacted;
 
         /// <summary>The driver of the current flight (null before the first launch).</summary>
         public FixedStepDriver? Driver => _driver;
@@ -244,7 +273,25 @@ namespace MagnusBall.Components
                 ? new FlightEventSet(up, ground, new[] { new Plane(UnityFrame.ToLibrary(planePoint), UnityFrame.ToLibrary(planeNormal)) })
                 : new FlightEventSet(up, ground);
             IIntegrator chosen = FlightSettings.Integrator(integrator);
-            Set(model, chosen, fixedStep, events, bounce, maxFrameDelta);
+            ContactShape[]? shapes = null;
+            if (shapeColliders != null && shapeColliders.Count > 0)
+            {
+                RequireField(shapeRestitution, nameof(shapeRestitution));
+                RequireField(shapeFriction, nameof(shapeFriction));
+                if (!(shapeRestitution >= 0 && shapeRestitution <= 1))
+                {
+                    throw new ArgumentOutOfRangeException(nameof(shapeRestitution), shapeRestitution, FormattableString.Invariant($"shapeRestitution must be in [0, 1]; got {shapeRestitution}."));
+                }
+
+                if (!(shapeFriction >= 0))
+                {
+                    throw new ArgumentOutOfRangeException(nameof(shapeFriction), shapeFriction, FormattableString.Invariant($"shapeFriction must be >= 0; got {shapeFriction}."));
+                }
+
+                shapes = ColliderShapes.FromColliders(shapeColliders.ToArray(), new ContactProperties(shapeRestitution, shapeFriction));
+            }
+
+            Set(model, chosen, fixedStep, events, bounce, maxFrameDelta, shapes);
             _configuredInCode = false;
         }
 
@@ -258,12 +305,13 @@ namespace MagnusBall.Components
         /// <param name="events">What to scan each step for; its ground is where the ball's centre touches down.</param>
         /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0, and at least the fixed step (frames are cut to it).</param>
+        /// <param name="shapes">Contact shapes the ball hits in flight (copied by the driver), or null for none (<see cref="ColliderShapes"/> builds them from colliders).</param>
         /// <exception cref="ArgumentException">A value is null or out of range (the message names it); nothing changes.</exception>
         public void Configure(
             FlightModel model, IIntegrator integratorToUse, double fixedStepSeconds, FlightEventSet events, IBounceModel? bounce,
-            double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds)
+            double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds, ContactShape[]? shapes = null)
         {
-            Set(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            Set(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, shapes);
             _configuredInCode = true;
         }
 
@@ -306,7 +354,7 @@ namespace MagnusBall.Components
             RequireFiniteStart(start);
             EnsureConfigured();
             // Build first, swap after: a refused start throws with the old flight intact.
-            StartFlight(Build(start, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta));
+            StartFlight(Build(start, _model!, _integrator!, _fixedStep, _eventSet!, _bounce, _maxFrameDelta, _shapes));
         }
 
         /// <summary>
@@ -322,16 +370,17 @@ namespace MagnusBall.Components
         /// <param name="events">What to scan each step for; its ground is where the ball's centre touches down.</param>
         /// <param name="bounce">The bounce model, or null: the flight ends at the first landing.</param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s; finite and &gt; 0, and at least the fixed step.</param>
+        /// <param name="shapes">Contact shapes the ball hits in flight, or null for none.</param>
         /// <exception cref="ArgumentException">A value is null, not finite or out of range, or the start is refused as
         /// <see cref="Launch(in FlightState)"/> refuses it (the message names which); nothing changes.</exception>
         public void Launch(
             in FlightState start, FlightModel model, IIntegrator integratorToUse, double fixedStepSeconds, FlightEventSet events,
-            IBounceModel? bounce, double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds)
+            IBounceModel? bounce, double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds, ContactShape[]? shapes = null)
         {
             RequireFiniteStart(start);
-            CheckConfiguration(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
-            FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
-            Assign(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds);
+            CheckConfiguration(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, shapes);
+            FixedStepDriver driver = Build(start, model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, shapes);
+            Assign(model, integratorToUse, fixedStepSeconds, events, bounce, maxFrameDeltaSeconds, shapes);
             _configuredInCode = true;
             StartFlight(driver);
         }
@@ -346,10 +395,11 @@ namespace MagnusBall.Components
 
         // The driver for a start under a configuration; refuses (throws) before anything is changed.
         private static FixedStepDriver Build(
-            in FlightState start, FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame)
+            in FlightState start, FlightModel model, IIntegrator integratorToUse, double step, FlightEventSet events, IBounceModel? bounce, double maxFrame,
+            ContactShape[]? shapes)
         {
             FlightState from = OnOrAboveTheGround(start, events, bounce);
-            return new FixedStepDriver(model, integratorToUse, step, from, events, bounce, maxFrame);
+            return new FixedStepDriver(model, integratorToUse, step, from, events, bounce, maxFrame, shapes: shapes);
         }
 
         // The arc starts, and the transform is put, where the driver starts: with a bounce model the flight core moves a start

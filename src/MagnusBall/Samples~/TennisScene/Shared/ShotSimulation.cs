@@ -2,6 +2,7 @@
 using System;
 using MagnusBall.Flight;
 using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Contact.Swings;
 using MagnusBall.Queries;
 using MagnusBall.Stepping;
@@ -12,7 +13,8 @@ namespace MagnusBall.Samples.TennisScene
     public sealed class ShotReport
     {
         internal ShotReport(
-            TennisShot shot, double? netClearance, FlightEvent? firstBounce, Vector3d? secondBounce, double apexHeight, int pathCount)
+            TennisShot shot, double? netClearance, FlightEvent? firstBounce, Vector3d? secondBounce, double apexHeight, int pathCount,
+            FlightEvent? netContact = null)
         {
             Shot = shot;
             NetClearance = netClearance;
@@ -20,9 +22,21 @@ namespace MagnusBall.Samples.TennisScene
             SecondBounce = secondBounce;
             ApexHeight = apexHeight;
             PathCount = pathCount;
-            ClearedNet = netClearance.HasValue && netClearance.Value > 0;
+            NetContact = netContact;
+            // A ball that touched the net went over it when it came down on the far side (x > 0).
+            ClearedNet = netContact.HasValue
+                ? netClearance.HasValue && Landed && Landing.X > 0
+                : netClearance.HasValue && netClearance.Value > 0;
             IsIn = Landed && ClearedNet && TennisCourt.IsIn(shot.Target, Landing.X, Landing.Z);
+            IsLet = IsIn && netContact.HasValue && ShotSimulation.IsCord(netContact.Value.ShapeId)
+                && (shot.Target == TargetArea.FarDeuceServiceBox || shot.Target == TargetArea.FarAdServiceBox);
         }
+
+        /// <summary>The ball's first touch of the net (its cord, mesh or a post: <see cref="ShotSimulation.Net"/>), or null.</summary>
+        public FlightEvent? NetContact { get; }
+
+        /// <summary>A let: a serve that touched the net cord and then landed in its service box (it is played again).</summary>
+        public bool IsLet { get; }
 
         /// <summary>The shot.</summary>
         public TennisShot Shot { get; }
@@ -115,6 +129,10 @@ namespace MagnusBall.Samples.TennisScene
         {
             Settings = settings ?? throw new ArgumentNullException(nameof(settings));
 
+            // The net as the library's contact shapes (SportShapes.TennisNet: the cord in two sagging halves, the mesh
+            // and the posts, ids 0-4), so a ball that clips the tape is answered by it (a let, a net cord winner).
+            Net = MagnusBall.Shots.SportShapes.TennisNet(NetFirstId, Vector3d.Zero, TennisCourt.Left, TennisCourt.Up);
+
             // The ground sits one ball radius above the court: the ball lands when it touches the court, not
             // when its centre reaches it. The net's plane (x = 0) is crossed along +x by a shot from the near side.
             Events = new FlightEventSet(
@@ -123,8 +141,18 @@ namespace MagnusBall.Samples.TennisScene
                 new[] { new Plane(Vector3d.Zero, TennisCourt.Downrange) });
         }
 
+        /// <summary>The first id of the net's shapes: cord (left half, right half), mesh, posts (<see cref="Net"/>).</summary>
+        public const int NetFirstId = 0;
+
         /// <summary>The settings.</summary>
         public SceneSettings Settings { get; }
+
+        /// <summary>The net, as contact shapes every ball of this scene can hit (MagnusBall.Shots.SportShapes.TennisNet).</summary>
+        public ContactShape[] Net { get; }
+
+        /// <summary>True for the id of one of the net cord's two halves.</summary>
+        /// <param name="shapeId">A contact event's shape id.</param>
+        public static bool IsCord(int shapeId) => shapeId == NetFirstId || shapeId == NetFirstId + 1;
 
         /// <summary>The bounce model, or null when flights end at the first landing.</summary>
         public IBounceModel? Bounce => Settings.Bounce;
@@ -136,7 +164,7 @@ namespace MagnusBall.Samples.TennisScene
         /// <param name="start">The launch state.</param>
         /// <param name="maxFrameDeltaSeconds">The frame-time clamp, s.</param>
         public FixedStepDriver CreateDriver(in FlightState start, double maxFrameDeltaSeconds = FixedStepDriver.DefaultMaxFrameDeltaSeconds) =>
-            new FixedStepDriver(Settings.Model, Settings.Integrator, Settings.FixedStep, start, Events, Bounce, maxFrameDeltaSeconds);
+            new FixedStepDriver(Settings.Model, Settings.Integrator, Settings.FixedStep, start, Events, Bounce, maxFrameDeltaSeconds, shapes: Net);
 
         /// <summary>The clearance of the bottom of the ball over the net cord where it crosses the net's plane, m.</summary>
         /// <param name="crossing">The ball's centre at the crossing, m.</param>
@@ -162,6 +190,7 @@ namespace MagnusBall.Samples.TennisScene
             double apex = driver.State.Position.Y;
             double? clearance = null;
             FlightEvent? first = null;
+            FlightEvent? net = null;
             Vector3d? second = null;
             while (second == null && !driver.IsFinished && driver.State.Time < MaxFlightSeconds)
             {
@@ -174,6 +203,11 @@ namespace MagnusBall.Samples.TennisScene
                     {
                         case FlightEventKinds.PlaneCrossing:
                             clearance ??= NetClearance(e.Position);
+                            break;
+                        case FlightEventKinds.Contact:
+                            // The net: the path bends there.
+                            Append(path, ref count, e.Position);
+                            net ??= e;
                             break;
                         case FlightEventKinds.Apex:
                             if (first == null)
@@ -204,7 +238,7 @@ namespace MagnusBall.Samples.TennisScene
                 }
             }
 
-            return new ShotReport(shot, clearance, first, second, apex, count);
+            return new ShotReport(shot, clearance, first, second, apex, count, net);
         }
 
         /// <summary>

@@ -28,12 +28,14 @@ namespace MagnusBall.Samples.TennisScene
         public static string Row(ShotReport report)
         {
             TennisShot s = report.Shot;
-            string clearance = report.NetClearance.HasValue
+            string clearance = report.NetContact.HasValue
+                ? (ShotSimulation.IsCord(report.NetContact.Value.ShapeId) ? "cord" : "net")
+                : report.NetClearance.HasValue
                 ? report.NetClearance.Value.ToString("+0.00;-0.00", CultureInfo.InvariantCulture)
                 : "none";
             string landing = report.Landed ? Point(report.Landing) : "none";
             string second = report.SecondBounce.HasValue ? Point(report.SecondBounce.Value) : "rests";
-            string verdict = report.IsIn ? "in" : report.ClearedNet ? "OUT" : "NET";
+            string verdict = report.IsLet ? "LET" : report.IsIn ? "in" : report.ClearedNet ? "OUT" : "NET";
             return string.Format(
                 CultureInfo.InvariantCulture, Layout,
                 s.Name, F(s.Speed, "0.0"), F(s.ElevationDegrees, "0.0"), F(s.AzimuthDegrees, "0.0"), F(s.TopspinRpm, "0"), F(s.SidespinRpm, "0"),
@@ -63,8 +65,9 @@ namespace MagnusBall.Samples.TennisScene
         public const string Legend =
             "shot: a name with * is a standard shot changed by the shot options.\n" +
             "v, elev, azim: launch speed and angles (azimuth + toward the hitter's left); top, side: launch spin (top < 0: backspin; side > 0 curls left).\n" +
-            "net: bottom of the ball above the net cord; landing: first contact point (x from the net, z + to the hitter's left); in?: in the target\n" +
-            "area (service box for serves), NET if it did not clear; tof: time to the first bounce; apex: highest centre height; v_in, a_in: speed and\n" +
+            "net: bottom of the ball above the net cord (cord: it clipped the tape, net: it hit the mesh or a post); landing: first contact point\n" +
+            "(x from the net, z + to the hitter's left); in?: in the target area (service box for serves), NET if it did not clear, LET for a serve\n" +
+            "that clipped the cord and dropped in its box; tof: time to the first bounce; apex: highest centre height; v_in, a_in: speed and\n" +
             "descent angle into the first bounce; v_out, a_out, w_out: speed, rebound angle and topspin (rpm, < 0 backspin) out of it; slip: whether\n" +
             "the contact slid throughout or gripped (Cross's bounce model); 2nd bounce: the next contact point.";
 

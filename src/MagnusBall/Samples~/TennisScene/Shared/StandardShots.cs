@@ -39,6 +39,15 @@ namespace MagnusBall.Samples.TennisScene
             "drop shot", new Vector3d(-5.0, 0.9, -1.0),
             11, 17.0, 5.0, -2500, 0, TargetArea.FarSinglesCourt);
 
+        /// <summary>
+        /// A net-cord let: a flat serve at 40 m/s down the middle, hit 0.5 degree lower than one that clears, so that it clips the tape (the scene's net is the library's
+        /// contact shapes, MagnusBall.Shots.SportShapes.TennisNet) and drops in the service box. Not one of the six
+        /// (<see cref="All"/>): the headless runner flies it after them.
+        /// </summary>
+        public static TennisShot NetCordLet => new TennisShot(
+            "net-cord let", new Vector3d(-TennisCourt.HalfLength - 0.1, TennisCourt.ServeHeight, 0.5),
+            40, -5.79, 2.0, 800, 0, TargetArea.FarDeuceServiceBox);
+
         /// <summary>All six, in the order of the table.</summary>
         public static TennisShot[] All() => new[] { FlatServe, KickServe, TopspinForehand, SliceBackhand, Lob, DropShot };
     }
