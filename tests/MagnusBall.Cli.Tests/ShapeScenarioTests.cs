@@ -65,7 +65,7 @@ namespace MagnusBall.Cli.Tests
             Assert.That(plain.FirstResult().TryGetProperty("contacts", out _), Is.False);
         }
 
-        [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 0, 1], "radius": 0.1}]""", "scenarios[0].shapes[0].endB: endB must have a finite non-zero length")]
+        [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 0, 1], "radius": 0.1}]""", "scenarios[0].shapes[0].endB: endB must lie between 1e-150 m")]
         [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 1, 1], "radius": -0.1}]""", "scenarios[0].shapes[0].radius: must be finite and > 0; got -0.1")]
         [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 1, 1], "radius": 0.1, "radus": 1}]""", "scenarios[0].shapes[0].radus: unknown field; expected one of:")]
         [TestCase("""[{"type": "sphere", "id": 1}]""", "scenarios[0].shapes[0].type: unknown shape type 'sphere'; expected one of: box, rectangle, capsule")]
@@ -106,7 +106,9 @@ namespace MagnusBall.Cli.Tests
                 var grey = svg.Descendants().Where(e => (string?)e.Attribute("fill") == "#777777" || (string?)e.Attribute("stroke") == "#777777").ToList();
                 // Side view: the cords as two circles (their axis out of the view), the mesh and the box as rectangles, the
                 // posts as thick lines, the torus as its two tube circles; the top view: the cords and posts, the mesh, box, ring.
-                Assert.That(grey.Count(e => e.Name == ns + "polygon"), Is.EqualTo(4), "mesh and box, in each view");
+                // The tennis net's mesh is 2 x SportShapes.TennisMeshPiecesPerHalf rectangles (following its sagging cord).
+                int meshPieces = 2 * MagnusBall.Shots.SportShapes.TennisMeshPiecesPerHalf;
+                Assert.That(grey.Count(e => e.Name == ns + "polygon"), Is.EqualTo(2 * (meshPieces + 1)), "the mesh's pieces and the box, in each view");
                 Assert.That(grey.Count(e => e.Name == ns + "ellipse"), Is.GreaterThanOrEqualTo(4));
                 Assert.That(grey.Count(e => e.Name == ns + "line"), Is.GreaterThanOrEqualTo(4));
                 Assert.That(svg.Descendants(ns + "polygon").Count(e => (string?)e.Attribute("fill") == "white"), Is.GreaterThanOrEqualTo(2), "the contact's diamond in each view");
