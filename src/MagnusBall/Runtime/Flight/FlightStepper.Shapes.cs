@@ -1,7 +1,7 @@
 // FlightStepper, part: contact shapes (Contact/Shapes). A piece of flight is searched for the first touch of each shape on its
 // cubic Hermite (FindShapeContact, through Contact/Shapes/ShapeSweep.cs); a touch becomes a new piece of the step as a ground
 // bounce does (HandleEvents in FlightStepper.Pieces.cs takes the earlier of the two), answered by the shape through
-// Contact.Impact (ShapeContact). A slow touch where gravity holds the ball on the shape settles it there instead: the rest of
+// Contact.Impact (ShapeContact). A slow touch where the ball's acceleration holds it on the shape settles it there instead: the rest of
 // the step is flown with the shape as its support (Support). The main path is TryStep in FlightStepper.cs.
 using MagnusBall.Contact;
 using MagnusBall.Contact.Shapes;
