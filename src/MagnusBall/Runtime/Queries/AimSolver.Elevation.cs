@@ -47,7 +47,7 @@ namespace MagnusBall.Queries
             double along = Vector3d.Dot(plane.Normal, frame.Direction(0, azimuthRadians));
             double path = along > 0 ? -side / along : double.NaN;
             _trials.StartSolve(SolveBudget);
-            return SolveElevation(goal, speed, azimuthRadians, path, double.NaN, out _);
+            return SolveElevation(goal, speed, azimuthRadians, path, double.NaN, false, out _);
         }
 
         private AimSolution ElevationToReachCore(
@@ -143,170 +143,101 @@ namespace MagnusBall.Queries
         }
 
         /// <summary>
-        /// The lowest elevation whose trial margin is &gt;= 0, at a fixed speed and azimuth: near a hint (the azimuth
-        /// search's last elevation) by a small bracket; else the lower limit when it works, the fast path from the
-        /// vacuum's lower elevation over <paramref name="path"/> metres, or the scan upward from the lower limit.
+        /// The elevation at the edge of the arc asked for whose trial margin is &gt;= 0, at a fixed speed and azimuth: the lowest
+        /// (<paramref name="high"/> false) or the highest, the lob. Near a hint (the azimuth search's last elevation) by a small
+        /// bracket; else the arc's own limit when it works, the fast path from the vacuum's elevation on that arc over
+        /// <paramref name="path"/> metres (the high arc on the mirrored margin, which grows through the root), or the scan
+        /// from the arc's limit toward the other. Each bracket is (the failing end, the working end), as AimRoots.Refine takes it.
         /// </summary>
-        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, bool high, out double elevation) =>
-            high ? SolveHighElevation(goal, speed, azimuth, path, hint, out elevation) : SolveElevation(goal, speed, azimuth, path, hint, out elevation);
-
-        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
+        private AimSolution SolveElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, bool high, out double elevation)
         {
             var margin = new ElevationMargin(_trials, goal, speed, azimuth);
-            double lo, flo, hi, fhi;
-            AimSolution atLo, atHi;
+            double fail, failMargin, works, worksMargin;
+            AimSolution atFail, atWorks;
             if (double.IsFinite(hint))
             {
                 // Near a previous solution (the azimuth search moves it a little): try a small bracket first.
                 double width = ElevationScanRadians;
-                lo = Math.Max(MinimumElevationRadians, hint - width);
-                hi = Math.Min(MaximumElevationRadians, hint + width);
-                flo = margin.Evaluate(lo, out _);
-                if (flo < 0)
+                double lo = Math.Max(MinimumElevationRadians, hint - width);
+                double hi = Math.Min(MaximumElevationRadians, hint + width);
+                fail = high ? hi : lo;
+                works = high ? lo : hi;
+                failMargin = margin.Evaluate(fail, out _);
+                if (failMargin < 0)
                 {
-                    fhi = margin.Evaluate(hi, out atHi);
-                    if (fhi >= 0)
+                    worksMargin = margin.Evaluate(works, out atWorks);
+                    if (worksMargin >= 0)
                     {
-                        elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
-                        return WithFlights(atHi);
+                        elevation = AimRoots.Refine(ref margin, fail, failMargin, works, worksMargin, ref atWorks, AngleTolerance, out _);
+                        return WithFlights(atWorks);
                     }
                 }
             }
 
-            lo = MinimumElevationRadians;
-            flo = margin.Evaluate(lo, out atLo);
-            if (flo >= 0)
+            fail = high ? MaximumElevationRadians : MinimumElevationRadians;
+            failMargin = margin.Evaluate(fail, out atFail);
+            if (failMargin >= 0)
             {
-                // Even the lowest elevation tried does it: report that limit.
-                elevation = lo;
-                return WithFlights(atLo);
+                // Even the arc's limit does it: report that limit.
+                elevation = fail;
+                return WithFlights(atFail);
             }
 
-            double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
             // The reach probe's golden sections look for one hump of the margin: a bank shot's (which banks in a window of
             // elevations and fails outside it) can hide from them, so its solve goes to the scan instead.
             bool probe = !goal.HasVia;
             bool probed = _trials.HasCoarse && probe; // with coarse trials, SolveFromGuess probes where the coarse secant fails
-            if (SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
-                    ref margin, probe, out elevation, out AimSolution atRoot, out bool outOfReach))
+            bool solved, outOfReach;
+            double root;
+            AimSolution atRoot;
+            if (high)
             {
+                double guess = VacuumAim.HighElevation(_gravity, speed, path, goal.Rise, out double slope);
+                var mirrored = new MirroredMargin<ElevationMargin>(margin);
+                solved = SolveFromGuess(ref mirrored, -guess, -slope, -MaximumElevationRadians, -MinimumElevationRadians, AngleStride, AngleTolerance,
+                    ref margin, probe, out root, out atRoot, out outOfReach);
+                root = -root;
+            }
+            else
+            {
+                double guess = VacuumAim.LowElevation(_gravity, speed, path, goal.Rise, out double slope);
+                solved = SolveFromGuess(ref margin, guess, slope, MinimumElevationRadians, MaximumElevationRadians, AngleStride, AngleTolerance,
+                    ref margin, probe, out root, out atRoot, out outOfReach);
+            }
+
+            if (solved)
+            {
+                elevation = root;
                 return WithFlights(atRoot);
             }
 
-            if (outOfReach)
+            if (outOfReach || (!probed && probe && !ProbeReaches(ref margin, out _)))
             {
                 elevation = double.NaN;
                 return Unreachable(speed, azimuth);
             }
 
-            if (!probed && probe && !ProbeReaches(ref margin, out _))
-            {
-                elevation = double.NaN;
-                return Unreachable(speed, azimuth);
-            }
-
-            // The scan: bounded by MaximumScanTrials (the constructor checks the scan width).
+            // The scan from the arc's limit toward the other: bounded by MaximumScanTrials (the constructor checks the scan width).
+            double far = high ? MinimumElevationRadians : MaximumElevationRadians;
             for (int i = 1; ; i++)
             {
-                hi = Math.Min(MaximumElevationRadians, MinimumElevationRadians + i * ElevationScanRadians);
-                fhi = margin.Evaluate(hi, out atHi);
-                if (fhi >= 0)
+                works = high
+                    ? Math.Max(MinimumElevationRadians, MaximumElevationRadians - i * ElevationScanRadians)
+                    : Math.Min(MaximumElevationRadians, MinimumElevationRadians + i * ElevationScanRadians);
+                worksMargin = margin.Evaluate(works, out atWorks);
+                if (worksMargin >= 0)
                 {
-                    elevation = AimRoots.Refine(ref margin, lo, flo, hi, fhi, ref atHi, AngleTolerance, out _);
-                    return WithFlights(atHi);
+                    elevation = AimRoots.Refine(ref margin, fail, failMargin, works, worksMargin, ref atWorks, AngleTolerance, out _);
+                    return WithFlights(atWorks);
                 }
 
-                if (hi >= MaximumElevationRadians)
+                if (works == far)
                 {
                     break;
                 }
 
-                lo = hi;
-                flo = fhi;
-            }
-
-            elevation = double.NaN;
-            return Unreachable(speed, azimuth);
-        }
-
-        /// <summary>
-        /// The highest elevation whose trial margin is &gt;= 0 (the lob), at a fixed speed and azimuth: the mirror of
-        /// <see cref="SolveElevation(in AimGoal, double, double, double, double, out double)"/>: near a hint by a small
-        /// bracket; else the upper limit when it works, the fast path from the vacuum's higher elevation (on the mirrored
-        /// margin, which grows through the root), or the scan downward from the upper limit.
-        /// </summary>
-        private AimSolution SolveHighElevation(in AimGoal goal, double speed, double azimuth, double path, double hint, out double elevation)
-        {
-            var margin = new ElevationMargin(_trials, goal, speed, azimuth);
-            double lo, flo, hi, fhi;
-            AimSolution atLo, atHi;
-            if (double.IsFinite(hint))
-            {
-                double width = ElevationScanRadians;
-                lo = Math.Max(MinimumElevationRadians, hint - width);
-                hi = Math.Min(MaximumElevationRadians, hint + width);
-                fhi = margin.Evaluate(hi, out _);
-                if (fhi < 0)
-                {
-                    flo = margin.Evaluate(lo, out atLo);
-                    if (flo >= 0)
-                    {
-                        elevation = AimRoots.Refine(ref margin, hi, fhi, lo, flo, ref atLo, AngleTolerance, out _);
-                        return WithFlights(atLo);
-                    }
-                }
-            }
-
-            hi = MaximumElevationRadians;
-            fhi = margin.Evaluate(hi, out atHi);
-            if (fhi >= 0)
-            {
-                // Even the highest elevation tried does it: report that limit.
-                elevation = hi;
-                return WithFlights(atHi);
-            }
-
-            double guess = VacuumAim.HighElevation(_gravity, speed, path, goal.Rise, out double slope);
-            var mirrored = new MirroredMargin<ElevationMargin>(margin);
-            bool probe = !goal.HasVia; // as for the low arc
-            bool probed = _trials.HasCoarse && probe;
-            if (SolveFromGuess(ref mirrored, -guess, -slope, -MaximumElevationRadians, -MinimumElevationRadians, AngleStride, AngleTolerance,
-                    ref margin, probe, out double root, out AimSolution atRoot, out bool outOfReach))
-            {
-                elevation = -root;
-                return WithFlights(atRoot);
-            }
-
-            if (outOfReach)
-            {
-                elevation = double.NaN;
-                return Unreachable(speed, azimuth);
-            }
-
-            if (!probed && probe && !ProbeReaches(ref margin, out _))
-            {
-                elevation = double.NaN;
-                return Unreachable(speed, azimuth);
-            }
-
-            // The scan downward: bounded by MaximumScanTrials (the constructor checks the scan width).
-            for (int i = 1; ; i++)
-            {
-                lo = Math.Max(MinimumElevationRadians, MaximumElevationRadians - i * ElevationScanRadians);
-                flo = margin.Evaluate(lo, out atLo);
-                if (flo >= 0)
-                {
-                    elevation = AimRoots.Refine(ref margin, hi, fhi, lo, flo, ref atLo, AngleTolerance, out _);
-                    return WithFlights(atLo);
-                }
-
-                if (lo <= MinimumElevationRadians)
-                {
-                    break;
-                }
-
-                hi = lo;
-                fhi = flo;
+                fail = works;
+                failMargin = worksMargin;
             }
 
             elevation = double.NaN;
