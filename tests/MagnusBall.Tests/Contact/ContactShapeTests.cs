@@ -84,33 +84,42 @@ namespace MagnusBall.Tests.Contact
         [Test]
         public void BallAtRest_OnTableTop_DoesNotFallThrough()
         {
+            // Placed on the table at rest: it settles on the top (a Contact that starts rolling), comes to rest there (the flight
+            // is over) and stays at the top's height to rounding.
             FlightModel model = Tennis();
             var table = new BoxShape(3, new Vector3d(0, 0, 0.74), new Vector3d(1.37, 0.76, 0.02), Vector3d.UnitX, Vector3d.UnitY, Steel);
             double top = 0.76 + model.Ball.Radius;
             var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new ContactShape[] { table });
             stepper.Reset(new FlightState(new Vector3d(0.2, 0.1, top), Vector3d.Zero, Vector3d.Zero));
-            for (int i = 0; i < 600; i++)
+            var events = new List<FlightEvent>();
+            for (int i = 0; i < 600 && !stepper.IsStopped; i++)
             {
-                Assert.That(stepper.TryStep(1.0 / 60), Is.EqualTo(StepOutcome.Taken));
+                Assert.That(stepper.TryStep(1.0 / 60), Is.Not.EqualTo(StepOutcome.Diverged));
+                events.AddRange(stepper.Events.ToArray());
                 Assert.That(stepper.State.Position.Z, Is.EqualTo(top).Within(1e-9), $"step {i}");
             }
 
+            Assert.That(stepper.IsStopped, Is.True, "it comes to rest on the table");
+            Assert.That(events.FindAll(e => e.Kind == FlightEventKinds.Contact && e.StartsRolling).Count, Is.EqualTo(1));
+            Assert.That(stepper.StopEvent.Kind, Is.EqualTo(FlightEventKinds.Rest));
             Assert.That(stepper.State.Velocity.Length, Is.LessThan(1e-9));
         }
 
         [Test]
         public void BallRollingAlongBoard_StaysOnIt_AndDropsOffItsEnd()
         {
+            // Rolling (its spin matches its speed) at 3 m/s along a 2 m board: rolling resistance slows it (0.03 g), it stays on
+            // the top to rounding, and past the board's end (x = 2 m) it flies off and falls.
             FlightModel model = Tennis();
             var board = new BoxShape(3, new Vector3d(1, 0, 0.5), new Vector3d(1, 0.3, 0.01), Vector3d.UnitX, Vector3d.UnitY, Steel);
             double top = 0.51 + model.Ball.Radius;
             var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new ContactShape[] { board });
-            stepper.Reset(new FlightState(new Vector3d(0.1, 0, top), new Vector3d(2, 0, 0), Vector3d.Zero));
+            stepper.Reset(new FlightState(new Vector3d(0.1, 0, top), new Vector3d(3, 0, 0), new Vector3d(0, 3 / model.Ball.Radius, 0)));
             double lastX = 0.1;
             for (int i = 0; i < 60; i++)
             {
                 stepper.TryStep(1.0 / 120);
-                if (stepper.State.Position.X < 2 - 0.01)
+                if (stepper.State.Position.X < 2)
                 {
                     Assert.That(stepper.State.Position.Z, Is.EqualTo(top).Within(1e-9), $"step {i}");
                 }
@@ -119,6 +128,7 @@ namespace MagnusBall.Tests.Contact
                 lastX = stepper.State.Position.X;
             }
 
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
             // Past the end (x = 2 m) it falls.
             for (int i = 0; i < 120; i++)
             {

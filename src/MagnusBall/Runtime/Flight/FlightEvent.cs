@@ -34,7 +34,8 @@ namespace MagnusBall.Flight
         /// The ball touched one of the flight's contact shapes (<see cref="MagnusBall.Contact.Shapes.ContactShape"/>) and was
         /// answered by it: <see cref="FlightEvent.ShapeId"/> names the shape, <see cref="FlightEvent.ContactNormal"/> is its outward
         /// normal at the contact, <see cref="FlightEvent.State"/> the ball arriving and <see cref="FlightEvent.After"/> leaving.
-        /// The flight always goes on from the ball's response: a stop kind (stopAt) that names Contact does not stop it.
+        /// A slow touch that the ball's weight holds it in settles it on the shape (<see cref="FlightEvent.StartsRolling"/>): it rolls
+        /// on from there. A stop kind (stopAt) that names Contact ends the flight at the touch, with the ball arriving.
         /// </summary>
         Contact = 32,
 
@@ -68,7 +69,10 @@ namespace MagnusBall.Flight
         /// <summary>For a bounce, how it went (slide or grip); otherwise <see cref="BounceRegime.None"/>.</summary>
         public readonly BounceRegime Regime;
 
-        /// <summary>For a bounce, true when the ball left the surface too slowly to fly and rolls from here.</summary>
+        /// <summary>
+        /// For a bounce, true when the ball left the surface too slowly to fly and rolls from here; for a contact, true when the
+        /// ball settled on the shape (it arrived too slowly to bounce, held there by its weight) and rolls on it from here.
+        /// </summary>
         public readonly bool StartsRolling;
 
         /// <summary>
@@ -105,14 +109,14 @@ namespace MagnusBall.Flight
         }
 
         /// <summary>Creates a contact event: the shape's id (kept where a crossing keeps its plane's index) and normal.</summary>
-        internal FlightEvent(int shapeId, in FlightState state, in FlightState after, BounceRegime regime, in Vector3d normal)
+        internal FlightEvent(int shapeId, in FlightState state, in FlightState after, BounceRegime regime, in Vector3d normal, bool startsRolling)
         {
             Kind = FlightEventKinds.Contact;
             PlaneIndex = shapeId;
             State = state;
             After = after;
             Regime = regime;
-            StartsRolling = false;
+            StartsRolling = startsRolling;
             ContactNormal = normal;
         }
 

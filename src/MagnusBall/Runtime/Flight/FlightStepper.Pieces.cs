@@ -37,12 +37,12 @@ namespace MagnusBall.Flight
             _pendingEventCount = 0;
             _pendingSegmentCount = 0;
             _pendingImplicit = false;
-            _support = -1;
 
             try
             {
-                // Pieces of flight between bounces; bounded by MaxPiecesPerStep. The first piece takes the step as given.
-                for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase == FlightPhase.Flying; piece++)
+                // Pieces of flight and of rolling, cut at each bounce, contact or edge; bounded by MaxPiecesPerStep. The first piece
+                // takes the step as given.
+                for (int piece = 0; piece < MaxPiecesPerStep && _now.Phase != FlightPhase.Stopped; piece++)
                 {
                     double h = piece == 0 ? step : endTime - _now.State.Time;
                     if (!(_now.State.Time + h > _now.State.Time))
@@ -50,9 +50,19 @@ namespace MagnusBall.Flight
                         break; // less than one ulp of time left after a bounce
                     }
 
-                    bool ok = adaptive == null
-                        ? FlyPiece(h, endTime, piece, stopAt)
-                        : FlyAdaptivePiece(adaptive, h, piece, stopAt, ref endTime);
+                    bool ok;
+                    if (_now.Phase == FlightPhase.Rolling)
+                    {
+                        _refusal = StepOutcome.Diverged;
+                        ok = RollPiece(endTime, stopAt);
+                    }
+                    else
+                    {
+                        ok = adaptive == null
+                            ? FlyPiece(h, endTime, piece, stopAt)
+                            : FlyAdaptivePiece(adaptive, h, piece, stopAt, ref endTime);
+                    }
+
                     if (!ok)
                     {
                         _now = before;
@@ -65,12 +75,16 @@ namespace MagnusBall.Flight
                     }
                 }
 
-                if ((_now.Phase == FlightPhase.Rolling && !Roll(endTime)) || !_now.State.IsFinite)
+                if (!_now.State.IsFinite)
                 {
-                    // The roll would leave the state or its derivative non-finite (forces beyond double on the surface), or a
-                    // bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
+                    // A bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
                     _now = before;
                     return StepOutcome.Diverged;
+                }
+
+                if (_now.Phase != FlightPhase.Stopped && _now.State.Time < endTime)
+                {
+                    HoldUntil(endTime);
                 }
             }
             catch
@@ -206,17 +220,14 @@ namespace MagnusBall.Flight
             }
 
             double contactTime = double.PositiveInfinity;
-            // The last piece a step may hold ignores the contact (MaxPiecesPerStep bounds the work of one step).
-            if (Contact != null && piece < MaxPiecesPerStep - 1 &&
-                dense.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, false, out double t))
+            if (Contact != null && dense.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, false, out double t))
             {
                 contactTime = t;
             }
 
             int shapeIndex = -1;
             Vector3d shapeNormal = default;
-            if (_shapes != null && piece < MaxPiecesPerStep - 1 &&
-                FindShapeContact(hermite, out double shapeTime, out shapeIndex, out shapeNormal))
+            if (_shapes != null && FindShapeContact(hermite, -1, out double shapeTime, out shapeIndex, out shapeNormal))
             {
                 if (shapeTime < contactTime)
                 {
@@ -256,25 +267,16 @@ namespace MagnusBall.Flight
             Record(found.Slice(0, count));
             if (double.IsPositiveInfinity(contactTime))
             {
-                if (_support >= 0)
-                {
-                    FlightState supported = end;
-                    StateDerivative supportedDerivative = endDerivative;
-                    Support(ref supported, ref supportedDerivative);
-                    Continue(hermite, supported, supportedDerivative, implicitPiece);
-                    return true;
-                }
-
                 Continue(hermite, end, endDerivative, implicitPiece);
                 return true;
             }
 
             return shapeIndex >= 0
-                ? ShapeContact(hermite, contactTime, shapeIndex, shapeNormal)
-                : Bounce(ref dense, hermite, contactTime, piece);
+                ? ShapeContact(hermite, contactTime, shapeIndex, shapeNormal, stopAt)
+                : Bounce(ref dense, hermite, contactTime, piece, stopAt);
         }
 
-        private bool Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece)
+        private bool Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece, FlightEventKinds stopAt)
             where TDense : struct, IDenseOutput
         {
             GroundContact contact = Contact!;
@@ -299,7 +301,14 @@ namespace MagnusBall.Flight
             _now.Bounces++;
             var arriving = new FlightState(centre, touching.Velocity, touching.AngularVelocity, contactTime);
             var leaving = new FlightState(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
-            Write(new FlightEvent(FlightEventKinds.Bounce, -1, arriving, leaving, outcome.Regime, roll));
+            var bounce = new FlightEvent(FlightEventKinds.Bounce, -1, arriving, leaving, outcome.Regime, roll);
+            Write(bounce);
+            if ((stopAt & FlightEventKinds.Bounce) != 0)
+            {
+                Stop(bounce, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
+                return true;
+            }
+
             if (roll)
             {
                 StartRolling(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);

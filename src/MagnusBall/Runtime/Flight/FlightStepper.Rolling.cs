@@ -1,6 +1,11 @@
-// FlightStepper, part: rolling on a contact surface (StartRolling, Roll): steps of the rolling ball (Integration/RollingHeun) under slope,
-// rolling resistance and the air, and the stop where it comes to rest (StopWithin). Reached from the general step
-// (Advance, FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
+// FlightStepper, part: rolling on a surface: the ground (the GroundContact) or a contact shape the ball settled on (rolled on the
+// shape's tangent plane at the touch). StartRolling and StartRollingOnShape set the surface (in the snapshot, so a refused step puts
+// it back); RollPiece takes one step of the rolling ball (Integration/RollingHeun) under slope, rolling resistance and the air, and
+// cuts it where something happens first: a shape it rolls into (answered as in flight), the edge where it leaves the shape it
+// rolls on (it flies from there), or the stop where it comes to rest (StopWithin). Reached from the general step (Advance,
+// FlightStepper.Pieces.cs); the main path is TryStep in FlightStepper.cs.
+using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
 using MagnusBall.Integration;
 
 using MagnusBall.Integration.Kernels;
@@ -9,24 +14,55 @@ namespace MagnusBall.Flight
 {
     public sealed partial class FlightStepper
     {
-        private void StartRolling(in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity, double time)
+        /// <summary>
+        /// A ball rolling on a shape has left it where the gap between its surface and the shape exceeds this, m (a box's face
+        /// keeps the gap at rounding level; past an edge, or along a curved shape, it grows).
+        /// </summary>
+        internal const double LeaveGapM = 1e-7;
+
+        // Rolls on the ground (the GroundContact's plane of centres).
+        private void StartRolling(in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity, double time) =>
+            StartRollingOn(-1, _contactPlane, _rollingDeceleration, _canRest, centre, velocity, angularVelocity, time);
+
+        // Rolls on shape `index`, on the plane through the ball's centre at the touch normal to the shape there. Its rolling
+        // resistance is the ground's coefficient (GroundContact.DefaultRollingResistance without a ground) times gravity into it.
+        private void StartRollingOnShape(int index, in FlightState touching, in Vector3d normal)
         {
+            double gn = -Vector3d.Dot(Model.Gravity, normal);
+            Vector3d gt = Model.Gravity + normal * gn;
+            double deceleration = (Contact?.RollingResistance ?? GroundContact.DefaultRollingResistance) * System.Math.Max(gn, 0);
+            bool canRest = gt.Length / (1 + Model.Ball.InertiaFactor) <= deceleration;
+            StartRollingOn(
+                index, new Plane(touching.Position, normal), deceleration, canRest, touching.Position, touching.Velocity, touching.AngularVelocity,
+                touching.Time);
+        }
+
+        private void StartRollingOn(
+            int shape, in Plane plane, double deceleration, bool canRest, in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity,
+            double time)
+        {
+            _now.RollShape = shape;
+            _now.RollPlane = plane;
+            _now.RollDeceleration = deceleration;
+            _now.RollCanRest = canRest;
             // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
+            Vector3d normal = plane.Normal;
             double radius = Model.Ball.Radius, alpha = Model.Ball.InertiaFactor;
-            Vector3d vt = velocity - _normal * Vector3d.Dot(velocity, _normal);
-            Vector3d lambda = vt - Vector3d.Cross(_normal, angularVelocity) * (radius * alpha);
+            Vector3d vt = velocity - normal * Vector3d.Dot(velocity, normal);
+            Vector3d lambda = vt - Vector3d.Cross(normal, angularVelocity) * (radius * alpha);
             Vector3d rolling = lambda / (1 + alpha);
-            Vector3d spinNormal = _normal * Vector3d.Dot(angularVelocity, _normal);
+            Vector3d spinNormal = normal * Vector3d.Dot(angularVelocity, normal);
             _now.Phase = FlightPhase.Rolling;
             var state = new FlightState(centre, rolling, RollingSpin(rolling, spinNormal), time);
             _now.State = state;
             _now.Derivative = new StateDerivative(state.Velocity, RollingAcceleration(state), Vector3d.Zero);
         }
 
-        // The roll to endTime: one step of RollingHeun (exact for a constant acceleration, so exact on level ground in still air),
-        // with the stop located inside the step where the speed along the motion reaches zero. False, with nothing
-        // committed to the segments, when a state or derivative of the roll would not be finite (the caller refuses the step).
-        private bool Roll(double endTime)
+        // One piece of the roll toward endTime: one step of RollingHeun (exact for a constant acceleration, so exact on level ground
+        // in still air), with the stop located inside it where the speed along the motion reaches zero; cut at the first shape it
+        // touches or the edge where it leaves the shape it rolls on. False, with nothing committed to the segments, when a state or
+        // derivative of the roll would not be finite (the caller refuses the step).
+        private bool RollPiece(double endTime, FlightEventKinds stopAt)
         {
             if (!(_now.State.Time < endTime))
             {
@@ -36,76 +72,196 @@ namespace MagnusBall.Flight
             double h = endTime - _now.State.Time;
             FlightState s0 = _now.State;
             Vector3d v0 = s0.Velocity;
-            Vector3d spinNormal = _normal * Vector3d.Dot(s0.AngularVelocity, _normal);
+            Vector3d normal = _now.RollPlane.Normal;
+            Vector3d spinNormal = normal * Vector3d.Dot(s0.AngularVelocity, normal);
             Vector3d a0 = _now.Derivative.Acceleration;
             if (!s0.IsFinite || !_now.Derivative.IsFinite)
             {
                 return false;
             }
 
+            FlightState end;
+            StateDerivative endDerivative;
+            bool rests;
             RollingHeun.Predict(s0.Position, v0, a0, h, out Vector3d pPredicted, out Vector3d vPredicted);
-            if (_canRest && (v0.LengthSquared == 0 || Vector3d.Dot(vPredicted, v0) <= 0))
+            if (_now.RollCanRest && (v0.LengthSquared == 0 || Vector3d.Dot(vPredicted, v0) <= 0))
             {
-                return StopWithin(s0, a0, vPredicted, h, spinNormal);
+                rests = true;
+                RestWithin(s0, a0, vPredicted, h, spinNormal, out end, out endDerivative);
+            }
+            else
+            {
+                var predicted = new FlightState(pPredicted, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
+                if (!predicted.IsFinite)
+                {
+                    return false;
+                }
+
+                Vector3d a1 = RollingAcceleration(predicted);
+                RollingHeun.Correct(s0.Position, v0, a0, a1, h, out Vector3d average, out Vector3d p1, out Vector3d v1);
+                if (_now.RollCanRest && Vector3d.Dot(v1, v0) <= 0)
+                {
+                    rests = true;
+                    RestWithin(s0, average, v1, h, spinNormal, out end, out endDerivative);
+                }
+                else
+                {
+                    rests = false;
+                    end = new FlightState(_now.RollPlane.Project(p1), v1, RollingSpin(v1, spinNormal), endTime);
+                    endDerivative = end.IsFinite ? new StateDerivative(v1, RollingAcceleration(end), Vector3d.Zero) : default;
+                }
             }
 
-            var predicted = new FlightState(pPredicted, vPredicted, RollingSpin(vPredicted, spinNormal), endTime);
-            if (!predicted.IsFinite)
+            if (!end.IsFinite || !endDerivative.IsFinite || !(end.Time >= s0.Time))
             {
                 return false;
             }
 
-            Vector3d a1 = RollingAcceleration(predicted);
-            RollingHeun.Correct(s0.Position, v0, a0, a1, h, out Vector3d average, out Vector3d p1, out Vector3d v1);
-            if (_canRest && Vector3d.Dot(v1, v0) <= 0)
+            if (end.Time > s0.Time && _shapes != null)
             {
-                return StopWithin(s0, average, v1, h, spinNormal);
+                var segment = new HermiteSegment(s0, _now.Derivative, end, endDerivative);
+                double leave = _now.RollShape >= 0 ? LeaveTime(segment) : double.PositiveInfinity;
+                if (FindShapeContact(segment, _now.RollShape, out double touch, out int index, out Vector3d touchNormal) && touch <= leave)
+                {
+                    return RollContact(segment, touch, index, touchNormal, stopAt);
+                }
+
+                if (leave <= segment.EndTime)
+                {
+                    // Over the edge: it flies from where it left the shape.
+                    if (!segment.TryUntil(leave, out HermiteSegment cut))
+                    {
+                        return false;
+                    }
+
+                    PushSegment(cut);
+                    _now.Phase = FlightPhase.Flying;
+                    _now.State = segment.StateAt(leave);
+                    _now.Derivative = FlightKernel.DerivativeOf(Model, _now.State);
+                    _now.Evaluations++;
+                    return _now.State.IsFinite;
+                }
             }
 
-            var next = new FlightState(_contactPlane.Project(p1), v1, RollingSpin(v1, spinNormal), endTime);
-            if (!next.IsFinite)
+            if (end.Time > s0.Time)
             {
-                return false;
+                PushSegment(new HermiteSegment(s0, _now.Derivative, end, endDerivative));
             }
 
-            var nextDerivative = new StateDerivative(v1, RollingAcceleration(next), Vector3d.Zero);
-            if (!nextDerivative.IsFinite)
+            _now.State = end;
+            _now.Derivative = endDerivative;
+            if (rests)
             {
-                return false;
+                Rest(end);
             }
 
-            PushSegment(new HermiteSegment(s0, _now.Derivative, next, nextDerivative));
-            _now.State = next;
-            _now.Derivative = nextDerivative;
             return true;
         }
 
-        private bool StopWithin(in FlightState s0, in Vector3d a, in Vector3d v1, double h, in Vector3d spinNormal)
+        // Where the rolling ball stops inside the step: its velocity along the motion reaches zero after `stopAfter`.
+        private void RestWithin(in FlightState s0, in Vector3d a, in Vector3d v1, double h, in Vector3d spinNormal,
+            out FlightState rest, out StateDerivative restDerivative)
         {
             Vector3d v0 = s0.Velocity;
             double speed = v0.Length;
             double along = speed > 0 ? Vector3d.Dot(v1, v0) / speed : 0;
             double stopAfter = speed > 0 ? h * speed / (speed - along) : 0;
-            Vector3d position = _contactPlane.Project(s0.Position + v0 * stopAfter + a * (0.5 * stopAfter * stopAfter));
-            var rest = new FlightState(position, Vector3d.Zero, spinNormal, s0.Time + stopAfter);
-            var restDerivative = new StateDerivative(Vector3d.Zero, a, Vector3d.Zero);
-            if (!rest.IsFinite || !restDerivative.IsFinite || !(stopAfter >= 0))
-            {
-                return false;
-            }
+            Vector3d position = _now.RollPlane.Project(s0.Position + v0 * stopAfter + a * (0.5 * stopAfter * stopAfter));
+            rest = new FlightState(position, Vector3d.Zero, spinNormal, s0.Time + stopAfter);
+            restDerivative = new StateDerivative(Vector3d.Zero, a, Vector3d.Zero);
+        }
 
-            if (rest.Time > s0.Time)
-            {
-                PushSegment(new HermiteSegment(s0, _now.Derivative, rest, restDerivative));
-            }
-
+        // The flight is over: the ball rests at `rest`.
+        private void Rest(in FlightState rest)
+        {
             var stop = new FlightEvent(FlightEventKinds.Rest, -1, rest);
             Write(stop);
             _now.State = rest;
             _now.Derivative = default;
             _now.Phase = FlightPhase.Stopped;
             _pendingStop = stop;
-            return true;
+        }
+
+        // The first time on the rolling piece at which the ball's gap to the shape it rolls on exceeds LeaveGapM (bisection to the
+        // events' time tolerance; the gap only grows once the ball is past the edge), or +infinity when it stays on to the end.
+        private double LeaveTime(in HermiteSegment segment)
+        {
+            ContactShape shape = _shapes![_now.RollShape];
+            double radius = Model.Ball.Radius;
+            if (!(shape.SignedDistance(segment.End.Position, out _) - radius > LeaveGapM))
+            {
+                return double.PositiveInfinity;
+            }
+
+            double lo = segment.StartTime, hi = segment.EndTime;
+            for (int i = 0; i < 64 && hi - lo > HermiteSegment.TimeTolerance; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (shape.SignedDistance(segment.StateAt(mid).Position, out _) - radius > LeaveGapM)
+                {
+                    hi = mid;
+                }
+                else
+                {
+                    lo = mid;
+                }
+            }
+
+            return hi;
+        }
+
+        // The rolling ball touches shape `index` at `time`: the shape answers it (Contact.Impact); it rolls on from there on the same
+        // surface, or flies where the answer sends it off the surface faster than the rest speed. A slow touch into a shape that the
+        // rolling ball is pressed against (a wall at the foot of a slope) ends the flight at rest against it.
+        private bool RollContact(in HermiteSegment segment, double time, int index, in Vector3d normal, FlightEventKinds stopAt)
+        {
+            ContactShape shape = _shapes![index];
+            FlightState touching = segment.StateAt(time);
+            if (!touching.IsFinite || !segment.TryUntil(time, out HermiteSegment cut))
+            {
+                return false;
+            }
+
+            PushSegment(cut);
+            touching = new FlightState(_now.RollPlane.Project(touching.Position), touching.Velocity, touching.AngularVelocity, time);
+            double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
+            double approach = -Vector3d.Dot(touching.Velocity, normal);
+            Vector3d pressed = RollingAcceleration(touching);
+            if (approach < restSpeed && Vector3d.Dot(pressed, normal) < 0)
+            {
+                var against = new FlightState(touching.Position, Vector3d.Zero, touching.AngularVelocity, time);
+                Write(new FlightEvent(shape.Id, touching, against, BounceRegime.None, normal, startsRolling: false));
+                Rest(against);
+                return true;
+            }
+
+            ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
+            if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
+            {
+                return false;
+            }
+
+            var leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, time);
+            var contact = new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal, startsRolling: false);
+            Write(contact);
+            if ((stopAt & FlightEventKinds.Contact) != 0)
+            {
+                Stop(contact, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
+                return true;
+            }
+
+            if (Vector3d.Dot(outcome.Velocity, _now.RollPlane.Normal) > restSpeed)
+            {
+                _now.Phase = FlightPhase.Flying;
+                _now.State = leaving;
+                _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
+                _now.Evaluations++;
+                return true;
+            }
+
+            StartRollingOn(
+                _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, outcome.Velocity, outcome.AngularVelocity, time);
+            return _now.State.IsFinite && _now.Derivative.IsFinite;
         }
 
         private Vector3d RollingAcceleration(in FlightState state)
@@ -117,11 +273,12 @@ namespace MagnusBall.Flight
                 _now.Evaluations++;
             }
 
-            Vector3d tangential = a - _normal * Vector3d.Dot(a, _normal);
-            return tangential * (1.0 / (1 + Model.Ball.InertiaFactor)) - state.Velocity.NormalizedOrZero() * _rollingDeceleration;
+            Vector3d normal = _now.RollPlane.Normal;
+            Vector3d tangential = a - normal * Vector3d.Dot(a, normal);
+            return tangential * (1.0 / (1 + Model.Ball.InertiaFactor)) - state.Velocity.NormalizedOrZero() * _now.RollDeceleration;
         }
 
         private Vector3d RollingSpin(in Vector3d velocity, in Vector3d spinNormal) =>
-            Vector3d.Cross(_normal, velocity) * (1.0 / Model.Ball.Radius) + spinNormal;
+            Vector3d.Cross(_now.RollPlane.Normal, velocity) * (1.0 / Model.Ball.Radius) + spinNormal;
     }
 }

@@ -1,8 +1,8 @@
-// FlightStepper, part: contact shapes (Contact/Shapes). A piece of flight is searched for the first touch of each shape on its
-// cubic Hermite (FindShapeContact, through Contact/Shapes/ShapeSweep.cs); a touch becomes a new piece of the step as a ground
-// bounce does (HandleEvents in FlightStepper.Pieces.cs takes the earlier of the two), answered by the shape through
-// Contact.Impact (ShapeContact). A slow touch where the ball's acceleration holds it on the shape settles it there instead: the rest of
-// the step is flown with the shape as its support (Support). The main path is TryStep in FlightStepper.cs.
+// FlightStepper, part: contact shapes (Contact/Shapes). A piece of flight or of a roll is searched for the first touch of each shape on
+// its cubic Hermite (FindShapeContact, through Contact/Shapes/ShapeSweep.cs); a touch becomes a new piece of the step as a ground
+// bounce does (HandleEvents in FlightStepper.Pieces.cs takes the earlier of the two), answered by the shape through Contact.Impact
+// (ShapeContact). A slow touch where the ball's weight holds it on the shape settles it there: it rolls on the shape from then on
+// (StartRollingOnShape, FlightStepper.Rolling.cs). The main path is TryStep in FlightStepper.cs.
 using MagnusBall.Contact;
 using MagnusBall.Contact.Shapes;
 using MagnusBall.Integration;
@@ -13,11 +13,10 @@ namespace MagnusBall.Flight
     public sealed partial class FlightStepper
     {
         private readonly ContactShape[]? _shapes;
-        // The shape the ball settled on earlier in this step (its index), or -1: the rest of the step is flown on it.
-        private int _support = -1;
 
-        // The earliest touch of a shape on the piece's Hermite (its time, the shape's index and normal there); false when none.
-        private bool FindShapeContact(in HermiteSegment hermite, out double time, out int index, out Vector3d normal)
+        // The earliest touch of a shape on the piece's Hermite (its time, the shape's index and normal there), the shape at index
+        // `exclude` (the one the ball rolls on, or -1) left out; false when none.
+        private bool FindShapeContact(in HermiteSegment hermite, int exclude, out double time, out int index, out Vector3d normal)
         {
             time = double.PositiveInfinity;
             index = -1;
@@ -44,7 +43,7 @@ namespace MagnusBall.Flight
             double tolerance = HermiteSegment.TimeTolerance / h;
             for (int i = 0; i < shapes.Length; i++)
             {
-                if (i == _support || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
+                if (i == exclude || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
                 {
                     continue;
                 }
@@ -67,9 +66,9 @@ namespace MagnusBall.Flight
         }
 
         // The ball touches shape `index` at `contactTime` on the piece: the piece is cut there and the shape answers the ball
-        // (Contact.Impact through ContactShape.Respond), or, a slow touch where its acceleration holds the ball on the shape, the ball
-        // settles on it (its velocity into the shape removed) and the rest of the step is flown on it.
-        private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d sweepNormal)
+        // (Contact.Impact through ContactShape.Respond), or, a slow touch where the ball's weight and its whole acceleration hold it
+        // on the shape, the ball settles on it and rolls on it from there. A stop kind naming Contact ends the flight at the touch.
+        private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d sweepNormal, FlightEventKinds stopAt)
         {
             ContactShape shape = _shapes![index];
             FlightState touching = hermite.StateAt(contactTime);
@@ -78,54 +77,56 @@ namespace MagnusBall.Flight
                 return false;
             }
 
+            PushSegment(cut);
             Vector3d normal = sweepNormal;
             double approach = -Vector3d.Dot(touching.Velocity, normal);
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
-            // Held: the ball's whole acceleration there (gravity, drag, the Magnus force, the wind) presses it onto the shape.
-            bool held = Vector3d.Dot(FlightKernel.DerivativeOf(Model, touching).Acceleration, normal) < 0;
+            // Held: gravity presses the ball onto the shape (a floor-like face, not a wall or a ceiling), and so does its whole
+            // acceleration there (gravity, drag, the Magnus force, the wind).
+            bool held = Vector3d.Dot(Model.Gravity, normal) < 0 &&
+                Vector3d.Dot(FlightKernel.DerivativeOf(Model, touching).Acceleration, normal) < 0;
             _now.Evaluations++;
-            FlightState leaving;
-            if (held && approach < restSpeed)
+            FlightEvent contact;
+            if (held && approach < restSpeed && (stopAt & FlightEventKinds.Contact) == 0)
             {
-                // Settles: the ball stays on the shape for the rest of the step (Support), with no event.
-                leaving = new FlightState(touching.Position, touching.Velocity + normal * approach, touching.AngularVelocity, contactTime);
-                _support = index;
-            }
-            else
-            {
-                ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
-                if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
-                {
-                    return false; // the impact law overflowed on an extreme impact
-                }
-
-                leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, contactTime);
-                Write(new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal));
+                StartRollingOnShape(index, touching, normal);
+                contact = new FlightEvent(shape.Id, touching, _now.State, BounceRegime.None, normal, startsRolling: true);
+                Write(contact);
+                return _now.State.IsFinite && _now.Derivative.IsFinite;
             }
 
-            PushSegment(cut);
+            ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
+            if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
+            {
+                return false; // the impact law overflowed on an extreme impact
+            }
+
+            var leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, contactTime);
+            contact = new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal, startsRolling: false);
+            Write(contact);
+            if ((stopAt & FlightEventKinds.Contact) != 0)
+            {
+                Stop(contact, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
+                return true;
+            }
+
             _now.State = leaving;
             _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
             _now.Evaluations++;
             return true;
         }
 
-        // A piece flown on the shape the ball settled on: where its end is inside the shape, the ball is put back on the
-        // surface along the shape's normal and its velocity into it removed (one evaluation for the new derivative).
-        private void Support(ref FlightState end, ref StateDerivative endDerivative)
+        // The step's pieces ran out (MaxPiecesPerStep) before its end: the ball is held where it is, with its velocity and spin,
+        // until the end of the step, and goes on from there at the next one. Only a ball caught between surfaces (more contacts in
+        // one step than the cap) gets here; it loses that part of a step of motion instead of passing through a surface.
+        private void HoldUntil(double endTime)
         {
-            ContactShape shape = _shapes![_support];
-            double gap = shape.SignedDistance(end.Position, out Vector3d normal) - Model.Ball.Radius;
-            if (!(gap < 0))
-            {
-                return; // off the shape (over an edge): it flies on
-            }
-
-            double into = Vector3d.Dot(end.Velocity, normal);
-            Vector3d velocity = into < 0 ? end.Velocity - normal * into : end.Velocity;
-            end = new FlightState(end.Position - normal * gap, velocity, end.AngularVelocity, end.Time);
-            endDerivative = FlightKernel.DerivativeOf(Model, end);
-            _now.Evaluations++;
+            FlightState s = _now.State;
+            var still = new StateDerivative(Vector3d.Zero, Vector3d.Zero, Vector3d.Zero);
+            PushSegment(new HermiteSegment(
+                new FlightState(s.Position, Vector3d.Zero, s.AngularVelocity, s.Time), still,
+                new FlightState(s.Position, Vector3d.Zero, s.AngularVelocity, endTime), still));
+            _now.State = new FlightState(s.Position, s.Velocity, s.AngularVelocity, endTime);
         }
     }
 }

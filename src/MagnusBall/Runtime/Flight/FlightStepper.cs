@@ -20,7 +20,7 @@ namespace MagnusBall.Flight
         /// <summary>In the air (free flight under gravity, drag and Magnus).</summary>
         Flying = 0,
 
-        /// <summary>Rolling on the contact surface.</summary>
+        /// <summary>Rolling on the contact surface, or on a contact shape the ball settled on.</summary>
         Rolling = 1,
 
         /// <summary>Stopped: at rest on the surface, or the flight ended at a stop event (a landing).</summary>
@@ -69,8 +69,9 @@ namespace MagnusBall.Flight
     /// <para><b>Costs.</b> <see cref="DerivativeEvaluations"/> adds what each integrator call reports, plus one
     /// evaluation at each restart (the start, a bounce). A fixed step without events costs exactly the
     /// integrator's <see cref="IIntegrator.DerivativeEvaluationsPerStep"/>.</para>
-    /// <para><b>Bounds.</b> A step holds at most <see cref="MaxPiecesPerStep"/> pieces of flight between bounces;
-    /// at the last one the ball is put to rolling. <see cref="TryStepAdaptive"/> retries a rejected adaptive step at
+    /// <para><b>Bounds.</b> A step holds at most <see cref="MaxPiecesPerStep"/> pieces of flight or roll between bounces and
+    /// contacts; a ball bouncing on the ground that late is put to rolling, and a ball that would touch more often than that is
+    /// held at its last touch until the step's end. <see cref="TryStepAdaptive"/> retries a rejected adaptive step at
     /// most <see cref="MaxAdaptiveAttempts"/> times. Nothing here loops without a cap.</para>
     /// <para><b>Failure.</b> A refused step (<see cref="StepOutcome.Diverged"/>, <see cref="StepOutcome.TimeCannotAdvance"/>)
     /// and every call that throws leave the stepper exactly as it was.</para>
@@ -79,7 +80,7 @@ namespace MagnusBall.Flight
     /// </remarks>
     public sealed partial class FlightStepper
     {
-        /// <summary>The most pieces of flight (between bounces) one step holds; the last puts the ball to rolling.</summary>
+        /// <summary>The most pieces of flight or roll (between bounces and contacts) one step holds.</summary>
         internal const int MaxPiecesPerStep = 16;
 
         /// <summary>The most attempts <see cref="TryStepAdaptive"/> makes before it accepts the smallest step it tried.</summary>
@@ -342,7 +343,8 @@ namespace MagnusBall.Flight
         /// <paramref name="stopAt"/> kinds), locating and applying every event inside. Allocates nothing.
         /// </summary>
         /// <param name="step">The step, s; finite and &gt; 0.</param>
-        /// <param name="stopAt">The event kinds that end the flight (for example <see cref="FlightEventKinds.Landing"/>);
+        /// <param name="stopAt">The event kinds that end the flight (for example <see cref="FlightEventKinds.Landing"/>;
+        /// <see cref="FlightEventKinds.Bounce"/> or <see cref="FlightEventKinds.Contact"/> end it at the touch, the ball arriving);
         /// a rest always does.</param>
         /// <returns>What happened; a refused step (<see cref="StepOutcome.Diverged"/>, <see cref="StepOutcome.TimeCannotAdvance"/>) changes nothing.</returns>
         /// <exception cref="InvalidOperationException">No state was given yet (<see cref="Reset"/>).</exception>
@@ -511,6 +513,13 @@ namespace MagnusBall.Flight
             public int Bounces;
             public bool StartsFlight;
             public double NextAdaptiveStep;
+
+            // The surface the ball rolls on (Phase Rolling): a shape's index, or -1 for the ground; the plane of its centre there,
+            // the rolling resistance's deceleration and whether the slope alone cannot keep it moving.
+            public int RollShape;
+            public Plane RollPlane;
+            public double RollDeceleration;
+            public bool RollCanRest;
         }
     }
 }

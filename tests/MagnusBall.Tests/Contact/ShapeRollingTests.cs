@@ -1,0 +1,211 @@
+using System;
+using System.Collections.Generic;
+using MagnusBall.Contact;
+using MagnusBall.Contact.Shapes;
+using MagnusBall.Flight;
+using MagnusBall.Integration;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Contact
+{
+    /// <summary>
+    /// A rolling or settled ball and the shapes (issue 40): a ball rolling on the ground meets the shapes on it, a ball settled on a
+    /// shape rolls on it and stays on it for any step, a slow touch is an event, stop kinds name contacts, and a ball caught between
+    /// surfaces never passes through one.
+    /// </summary>
+    public class ShapeRollingTests
+    {
+        private static readonly ContactProperties Wood = new ContactProperties(0.7, 0.3);
+
+        private static GroundContact Ground() => new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ));
+
+        // A 10 cm thick wall across x = 3 m (its face toward the ball at x = 2.95 m), standing on the ground.
+        private static BoxShape Wall() =>
+            new BoxShape(4, new Vector3d(3, 0, 0.5), new Vector3d(0.05, 2, 0.5), Vector3d.UnitX, Vector3d.UnitY, Wood);
+
+        // Flies with fixed steps, checking after every step that the ball is not inside any shape, and collects the events.
+        private static List<FlightEvent> FlyOutside(FlightStepper stepper, ContactShape[] shapes, double radius, double step, double seconds)
+        {
+            var events = new List<FlightEvent>();
+            double end = stepper.State.Time + seconds;
+            for (int i = 0; i < 100000 && !stepper.IsStopped; i++)
+            {
+                double h = FlightStepper.StepToward(stepper.State.Time, end, step, out bool last);
+                Assert.That(stepper.TryStep(h), Is.Not.EqualTo(StepOutcome.Diverged));
+                events.AddRange(stepper.Events.ToArray());
+                foreach (ContactShape shape in shapes)
+                {
+                    double gap = shape.SignedDistance(stepper.State.Position, out _) - radius;
+                    Assert.That(gap, Is.GreaterThan(-1e-9), $"inside shape {shape.Id} after step {i} (t = {stepper.State.Time})");
+                }
+
+                if (last)
+                {
+                    break;
+                }
+            }
+
+            return events;
+        }
+
+        [TestCase(1.0 / 60)]
+        [TestCase(0.25)]
+        [TestCase(2.0)]
+        public void BallRollingOnTheGround_MeetsAWall_ForAnyStep(double step)
+        {
+            // Rolling at 4 m/s toward the wall 2.9 m away: with steps up to 2 s (8 m of roll in one step) it hits the wall, where
+            // the surfaces touch, and comes back.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            BoxShape wall = Wall();
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { wall });
+            stepper.Reset(new FlightState(new Vector3d(0, 0, r), new Vector3d(4, 0, 0), new Vector3d(0, 4 / r, 0)));
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { wall }, r, step, 8);
+            FlightEvent hit = events.Find(e => e.Kind == FlightEventKinds.Contact);
+            Assert.That(hit.ShapeId, Is.EqualTo(4), "the wall is hit");
+            Assert.That(hit.Position.X, Is.EqualTo(2.95 - r).Within(1e-9), "where the surfaces touch");
+            Assert.That(hit.After.Velocity.X, Is.LessThan(0), "it comes back off the wall");
+            Assert.That(stepper.State.Position.X, Is.LessThan(2.95 - r + 1e-9));
+        }
+
+        [TestCase(0.1)]
+        [TestCase(1.0)]
+        public void BallSettledOnATable_WithLongSteps_NeverReachesTheGround(double step)
+        {
+            // Dropped on a 2.5 cm table top 0.75 m above the ground: it bounces, settles and rolls on the top; steps of 0.1 s and
+            // 1 s (a free fall of 5 cm and 4.9 m) must not carry it through the top to the ground.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            var table = new BoxShape(3, new Vector3d(0, 0, 0.75), new Vector3d(1, 1, 0.0125), Vector3d.UnitX, Vector3d.UnitY, Wood);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { table });
+            stepper.Reset(new FlightState(new Vector3d(0.2, 0, 1.2), new Vector3d(0.3, 0, 0), Vector3d.Zero));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { table }, r, step, 10);
+            Assert.That(events.Exists(e => e.Kind == FlightEventKinds.Bounce), Is.False, "it never reaches the ground");
+            Assert.That(events.FindAll(e => e.Kind == FlightEventKinds.Contact && e.StartsRolling).Count, Is.EqualTo(1), "it settles once");
+            Assert.That(stepper.IsStopped, Is.True);
+            Assert.That(stepper.State.Position.Z, Is.EqualTo(0.7625 + r).Within(1e-9), "at rest on the top");
+        }
+
+        [Test]
+        public void BallSettledOnATable_Adaptive_NeverReachesTheGround()
+        {
+            // The adaptive method grows its steps without bound on a parabola (its error estimate is zero there): the settled ball
+            // must stay on the table however long they get.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            var table = new BoxShape(3, new Vector3d(0, 0, 0.75), new Vector3d(1, 1, 0.0125), Vector3d.UnitX, Vector3d.UnitY, Wood);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { table });
+            stepper.Reset(new FlightState(new Vector3d(0.2, 0, 1.2), new Vector3d(0.3, 0, 0), Vector3d.Zero));
+            var method = new DormandPrince54(1e-6, 1e-6);
+            for (int i = 0; i < 2000 && !stepper.IsStopped && stepper.State.Time < 30; i++)
+            {
+                Assert.That(stepper.TryStepAdaptive(method, 10), Is.Not.EqualTo(StepOutcome.Diverged));
+                foreach (FlightEvent e in stepper.Events)
+                {
+                    Assert.That(e.Kind, Is.Not.EqualTo(FlightEventKinds.Bounce), $"reached the ground at t = {e.Time}");
+                }
+            }
+
+            Assert.That(stepper.IsStopped, Is.True);
+            Assert.That(stepper.State.Position.Z, Is.EqualTo(0.7625 + r).Within(1e-9));
+        }
+
+        [Test]
+        public void SlowTouch_IsOneEvent_ThatSaysTheBallSettled()
+        {
+            // Lowered onto the table at 5 cm/s (below the rest speed, 0.1 m/s): one Contact event, StartsRolling, its After on the
+            // top with no velocity into it; later steps write no more.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            var table = new BoxShape(3, new Vector3d(0, 0, 0.75), new Vector3d(1, 1, 0.0125), Vector3d.UnitX, Vector3d.UnitY, Wood);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new ContactShape[] { table });
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 0.7625 + r + 1e-4), new Vector3d(0.2, 0, -0.05), new Vector3d(0, 0.2 / r, 0)));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { table }, r, 1.0 / 60, 5);
+            List<FlightEvent> contacts = events.FindAll(e => e.Kind == FlightEventKinds.Contact);
+            Assert.That(contacts.Count, Is.EqualTo(1));
+            Assert.That(contacts[0].StartsRolling, Is.True);
+            Assert.That(contacts[0].ShapeId, Is.EqualTo(3));
+            Assert.That(contacts[0].After.Velocity.Z, Is.EqualTo(0).Within(1e-12));
+            Assert.That(contacts[0].ContactNormal.Z, Is.EqualTo(1).Within(1e-12));
+        }
+
+        [Test]
+        public void StopAtContact_EndsTheFlightAtTheTouch()
+        {
+            // A stop kind that names Contact ends the flight where the ball touches the post, the ball arriving.
+            FlightModel model = ContactShapeTests.Tennis();
+            var post = new CylinderShape(7, new Vector3d(1.7, 0, -1), new Vector3d(1.7, 0, 3), 0.01, Wood);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new ContactShape[] { post });
+            stepper.Reset(new FlightState(new Vector3d(0, 0.01, 1), new Vector3d(30, 0, 0), Vector3d.Zero));
+            StepOutcome outcome = StepOutcome.Taken;
+            for (int i = 0; i < 60 && outcome == StepOutcome.Taken; i++)
+            {
+                outcome = stepper.TryStep(1.0 / 30, FlightEventKinds.Contact);
+            }
+
+            Assert.That(outcome, Is.EqualTo(StepOutcome.Stopped));
+            Assert.That(stepper.StopEvent.Kind, Is.EqualTo(FlightEventKinds.Contact));
+            Assert.That(stepper.StopEvent.ShapeId, Is.EqualTo(7));
+            Assert.That(stepper.State.Velocity.X, Is.GreaterThan(0), "the state is the ball arriving");
+            Assert.That(post.SignedDistance(stepper.State.Position, out _) - model.Ball.Radius, Is.EqualTo(0).Within(1e-9));
+        }
+
+        [Test]
+        public void StopAtBounce_EndsTheFlightAtTheFirstBounce()
+        {
+            FlightModel model = ContactShapeTests.Tennis();
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground());
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(10, 0, 2), Vector3d.Zero));
+            StepOutcome outcome = StepOutcome.Taken;
+            for (int i = 0; i < 600 && outcome == StepOutcome.Taken; i++)
+            {
+                outcome = stepper.TryStep(1.0 / 60, FlightEventKinds.Bounce);
+            }
+
+            Assert.That(outcome, Is.EqualTo(StepOutcome.Stopped));
+            Assert.That(stepper.StopEvent.Kind, Is.EqualTo(FlightEventKinds.Bounce));
+            Assert.That(stepper.State.Position.Z, Is.EqualTo(model.Ball.Radius).Within(1e-9));
+            Assert.That(stepper.State.Velocity.Z, Is.LessThan(0), "the state is the ball arriving");
+        }
+
+        [Test]
+        public void BallRollingDownASlope_IntoAWall_ComesToRestAgainstIt()
+        {
+            // The ground tilted 20 degrees toward the wall: the slope alone would keep the ball rolling (tan 20 deg against a
+            // rolling resistance of 0.03), so only the wall can stop it. It bounces off the wall until it arrives slower than the
+            // rest speed, then rests against it; it never passes into it.
+            double tilt = 20 * Math.PI / 180;
+            var gravity = new Vector3d(9.81 * Math.Sin(tilt), 0, -9.81 * Math.Cos(tilt)); // downhill is +x in the ground's frame
+            var model = new FlightModel(Ball.Tennis, Air.SeaLevel, gravity);
+            double r = model.Ball.Radius;
+            BoxShape wall = Wall();
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { wall });
+            stepper.Reset(new FlightState(new Vector3d(0, 0, r), new Vector3d(1, 0, 0), new Vector3d(0, 1 / r, 0)));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { wall }, r, 1.0 / 60, 30);
+            Assert.That(stepper.IsStopped, Is.True, "it rests against the wall");
+            Assert.That(stepper.StopEvent.Kind, Is.EqualTo(FlightEventKinds.Rest));
+            Assert.That(stepper.State.Position.X, Is.EqualTo(2.95 - r).Within(1e-6));
+            Assert.That(events.FindAll(e => e.Kind == FlightEventKinds.Contact).Count, Is.GreaterThan(1));
+        }
+
+        [Test]
+        public void BallCaughtBetweenTwoWalls_NeverPassesThrough()
+        {
+            // Two walls 7 cm apart (a tennis ball is 6.6 cm across) and a ball shot between them at 60 m/s across the gap, in a
+            // vacuum with no gravity: hundreds of contacts a step, far more than a step's pieces. The ball is held at its last
+            // contact for the rest of such a step instead of flying on through a wall.
+            var model = new FlightModel(Ball.Tennis, Air.Vacuum, Vector3d.Zero);
+            double r = model.Ball.Radius;
+            var hard = new ContactProperties(1.0, 0);
+            var left = new BoxShape(1, new Vector3d(0, -0.035 - 0.05, 0), new Vector3d(1, 0.05, 1), Vector3d.UnitX, Vector3d.UnitY, hard);
+            var right = new BoxShape(2, new Vector3d(0, 0.035 + 0.05, 0), new Vector3d(1, 0.05, 1), Vector3d.UnitX, Vector3d.UnitY, hard);
+            var shapes = new ContactShape[] { left, right };
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, shapes);
+            stepper.Reset(new FlightState(Vector3d.Zero, new Vector3d(0.1, 60, 0), Vector3d.Zero));
+            List<FlightEvent> events = FlyOutside(stepper, shapes, r, 1.0 / 30, 1);
+            Assert.That(events.Count, Is.GreaterThan(FlightStepper.MaxPiecesPerStep));
+            Assert.That(Math.Abs(stepper.State.Position.Y), Is.LessThan(0.035 - r + 1e-9));
+        }
+    }
+}
