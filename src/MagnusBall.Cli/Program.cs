@@ -57,7 +57,7 @@ namespace MagnusBall.Cli
             "                   basketball-hoop or table-tennis-net, \"id\" (a fixture's \"firstId\") and its geometry: box centre,\n" +
             "                   halfExtents, xAxis, yAxis; rectangle centre, normal, widthDirection, width, height; capsule and\n" +
             "                   cylinder endA, endB, radius; torus centre, axis, ringRadius, tubeRadius; net-mesh as rectangle\n" +
-            "                   plus tangentialSpeedKept; primitives restitution (0.7), friction (0.3), mass (fixed); fixtures\n" +
+            "                   plus tangentialSpeedKept and mass (fixed); primitives restitution (0.7), friction (0.3), mass (fixed); fixtures\n" +
             "                   tennis-net centreOnGround, across; soccer-goal-frame goalLineCentre, across; basketball-hoop\n" +
             "                   boardFootOnGround, towardCourt; table-tennis-net centreOnSurface, across; each up (the model's)}]\n" +
             "output: {\"results\": [{\"name\", \"landing\": {time, position, velocity} or null, \"apex\", \"crossings\",\n" +

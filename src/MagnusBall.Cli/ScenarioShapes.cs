@@ -95,7 +95,8 @@ namespace MagnusBall.Cli
                     throw new InputError(f.PathOf("tangentialSpeedKept"), "must be in [0, 1]; got " + JsonFields.Format(kept));
                 }
 
-                return new NetMeshShape(id, c, n, w, width, height, kept);
+                double meshMass = f.Has("mass") ? f.Positive("mass") : double.PositiveInfinity;
+                return new NetMeshShape(id, c, n, w, width, height, kept, meshMass);
             }
 
             double restitution = f.Number("restitution", DefaultRestitution);

@@ -214,7 +214,7 @@ namespace MagnusBall.Cli
 
         private const string ShapeFill = "#777777";
 
-        // A contact shape in the view (issue 40): a box, rectangle or net mesh as the rectangle of its bounding box; a capsule
+        // A contact shape in the view (issue 40): a box, rectangle or net mesh as the outline of its corners; a capsule
         // or cylinder as a thick line along its axis (a circle where its axis points out of the view: the net cord seen from
         // the side); a torus as its cross-section by the view's plane through its centre (the two circles of its tube; seen
         // along its axis, the ring).
@@ -233,12 +233,9 @@ namespace MagnusBall.Cli
                     return;
                 default:
                 {
-                    var box = BoxCorners(shape.BoundsMin, shape.BoundsMax).Select(p => (A: along(p), B: view.Vertical(p))).ToList();
-                    var quad = Clip(new List<(double A, double B)>
-                    {
-                        (box.Min(p => p.A), box.Min(p => p.B)), (box.Max(p => p.A), box.Min(p => p.B)),
-                        (box.Max(p => p.A), box.Max(p => p.B)), (box.Min(p => p.A), box.Max(p => p.B)),
-                    }, view, closed: true);
+                    // A box, rectangle or mesh: the outline of its eight corners as the view sees them (their convex hull).
+                    BoxShape box = shape is NetMeshShape mesh ? mesh.Sheet : (BoxShape)shape;
+                    var quad = Clip(Hull(box.Corners().Select(p => (A: along(p), B: view.Vertical(p))).ToList()), view, closed: true);
                     if (quad.Count == 0)
                     {
                         return;
@@ -250,6 +247,37 @@ namespace MagnusBall.Cli
                     return;
                 }
             }
+        }
+
+        // The convex hull of points in the view's plane, counter-clockwise (Andrew's monotone chain).
+        private static List<(double A, double B)> Hull(List<(double A, double B)> points)
+        {
+            var sorted = points.Distinct().OrderBy(p => p.A).ThenBy(p => p.B).ToList();
+            if (sorted.Count < 3)
+            {
+                return sorted;
+            }
+
+            static double Turn((double A, double B) o, (double A, double B) a, (double A, double B) b) =>
+                (a.A - o.A) * (b.B - o.B) - (a.B - o.B) * (b.A - o.A);
+            var hull = new List<(double A, double B)>();
+            for (int pass = 0; pass < 2; pass++)
+            {
+                int start = hull.Count;
+                foreach (var p in pass == 0 ? sorted : Enumerable.Reverse(sorted))
+                {
+                    while (hull.Count >= start + 2 && Turn(hull[hull.Count - 2], hull[hull.Count - 1], p) <= 0)
+                    {
+                        hull.RemoveAt(hull.Count - 1);
+                    }
+
+                    hull.Add(p);
+                }
+
+                hull.RemoveAt(hull.Count - 1);
+            }
+
+            return hull;
         }
 
         private static void Rod(StringBuilder svg, View view, Vector3d a, Vector3d b, double radius, Func<Vector3d, double> along, bool round)

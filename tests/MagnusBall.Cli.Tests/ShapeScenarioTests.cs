@@ -119,5 +119,37 @@ namespace MagnusBall.Cli.Tests
                 File.Delete(path);
             }
         }
+
+        [Test]
+        public void TheSvg_DrawsARotatedBox_AsItsOutline_NotItsBoundingBox()
+        {
+            // A cube turned 45 degrees about the vertical: from above it is a diamond, each corner at the middle of the
+            // outline's extent along one axis (the bounding box would put every corner at a corner of the extent).
+            string path = Path.Combine(Path.GetTempPath(), $"magnusball-{Guid.NewGuid():N}.svg");
+            try
+            {
+                const string shapes = """
+                    [{"type": "box", "id": 7, "centre": [15, 0, 1], "halfExtents": [0.5, 0.5, 0.5], "xAxis": [1, 1, 0], "yAxis": [-1, 1, 0]}]
+                    """;
+                CliRun run = CliRun.Simulate(IntoTheNet(shapes), "--svg", path);
+                Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+                XNamespace ns = "http://www.w3.org/2000/svg";
+                var outlines = XDocument.Load(path).Descendants(ns + "polygon")
+                    .Where(e => (string?)e.Attribute("fill") == "#777777")
+                    .Select(e => ((string)e.Attribute("points")!).Split(' ').Select(p => p.Split(',').Select(v => double.Parse(v, System.Globalization.CultureInfo.InvariantCulture)).ToArray()).ToList())
+                    .ToList();
+                Assert.That(outlines, Has.Count.EqualTo(2), "one outline in each view");
+                bool diamond = outlines.Any(o =>
+                {
+                    double midX = 0.5 * (o.Min(p => p[0]) + o.Max(p => p[0])), midY = 0.5 * (o.Min(p => p[1]) + o.Max(p => p[1]));
+                    return o.Count == 4 && o.Count(p => Math.Abs(p[0] - midX) < 0.5 || Math.Abs(p[1] - midY) < 0.5) == 4;
+                });
+                Assert.That(diamond, Is.True, "the top view's outline is the turned square");
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
     }
 }

@@ -70,6 +70,7 @@ namespace MagnusBall.Tests.Contact
             Assert.That(e!.ParamName, Is.EqualTo("shapes"));
             Assert.That(e.Message, Does.Contain("at least 1e-12 of the ball's mass"));
             Refused(() => new NetMeshShape(1, A, Vector3d.UnitX, Vector3d.UnitY, 1, 1, 1.5), "tangentialSpeedKept", "[0, 1]");
+            Refused(() => new NetMeshShape(1, A, Vector3d.UnitX, Vector3d.UnitY, 1, 1, 0.25, -0.2), "effectiveMassKg", "> 0");
         }
 
         [Test]

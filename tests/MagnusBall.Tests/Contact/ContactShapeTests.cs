@@ -235,6 +235,24 @@ namespace MagnusBall.Tests.Contact
         }
 
         [Test]
+        public void NetMesh_OfFiniteMass_GivesWay()
+        {
+            // A fixed mesh sends the ball back at 0.1 of its normal speed; 0.2 kg of mesh moving with a 57 g ball gives way: by
+            // the impact law the ball goes on through the net's plane direction at (m - e M)/(m + M) = 0.15 of its normal speed.
+            FlightModel model = Tennis();
+            Ball ball = model.Ball;
+            var fixedMesh = new NetMeshShape(9, new Vector3d(5, 0, 0.45), Vector3d.UnitX, Vector3d.UnitY, 12, 0.9);
+            var lightMesh = new NetMeshShape(9, new Vector3d(5, 0, 0.45), Vector3d.UnitX, Vector3d.UnitY, 12, 0.9, effectiveMassKg: 0.2);
+            var position = new Vector3d(5 - ball.Radius, 0, 0.45);
+            var velocity = new Vector3d(30, 0, 0);
+            ImpactOutcome still = fixedMesh.Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX);
+            ImpactOutcome gives = lightMesh.Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX);
+            Assert.That(still.Velocity.X, Is.EqualTo(-0.1 * 30).Within(1e-9));
+            double m = ball.Mass, mesh = 0.2;
+            Assert.That(gives.Velocity.X, Is.EqualTo(30 * (m - 0.1 * mesh) / (m + mesh)).Within(1e-9));
+        }
+
+        [Test]
         public void Driver_TakesShapes_AndReportsTheContact()
         {
             FlightModel model = Tennis();

@@ -94,6 +94,19 @@ namespace MagnusBall.Contact.Shapes
         /// <summary>The box's unit z axis (x cross y): a rectangle's face normal.</summary>
         public Vector3d ZAxis => _z;
 
+        /// <summary>The box's eight corners (a rectangle's four, each twice), m: for drawing it.</summary>
+        internal Vector3d[] Corners()
+        {
+            var corners = new Vector3d[8];
+            for (int i = 0; i < 8; i++)
+            {
+                corners[i] = Centre + _x * ((i & 1) == 0 ? -HalfExtentsM.X : HalfExtentsM.X) + _y * ((i & 2) == 0 ? -HalfExtentsM.Y : HalfExtentsM.Y) +
+                    _z * ((i & 4) == 0 ? -HalfExtentsM.Z : HalfExtentsM.Z);
+            }
+
+            return corners;
+        }
+
         /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal)
         {

@@ -27,16 +27,21 @@ namespace MagnusBall.Contact.Shapes
         /// <param name="widthM">The width, m; finite and &gt; 0.</param>
         /// <param name="heightM">The height (along normal cross width), m; finite and &gt; 0.</param>
         /// <param name="tangentialSpeedKept">The fraction of the ball's velocity along the mesh and of its spin it keeps after the hit; in [0, 1].</param>
+        /// <param name="effectiveMassKg">The mass of mesh that moves with the ball at the hit, kg; &gt; 0, positive infinity (the
+        /// default) for a mesh held still. A light mesh gives way: the ball leaves it slower along the normal than off a fixed one.</param>
         /// <exception cref="ArgumentException">A value is outside its range (the message names it); nothing is created.</exception>
         public NetMeshShape(int id, Vector3d centre, Vector3d normal, Vector3d widthDirection, double widthM, double heightM,
-            double tangentialSpeedKept = DefaultTangentialSpeedKept)
-            : base(id, DefaultContact, double.PositiveInfinity)
+            double tangentialSpeedKept = DefaultTangentialSpeedKept, double effectiveMassKg = double.PositiveInfinity)
+            : base(id, DefaultContact, effectiveMassKg)
         {
             TangentialSpeedKept = Require.InRange(tangentialSpeedKept, 0, 1, nameof(tangentialSpeedKept));
             _sheet = BoxShape.Rectangle(id, centre, normal, widthDirection, widthM, heightM, DefaultContact);
             BoundsMin = _sheet.BoundsMin;
             BoundsMax = _sheet.BoundsMax;
         }
+
+        /// <summary>The mesh's sheet (a rectangle), for drawing it.</summary>
+        internal BoxShape Sheet => _sheet;
 
         /// <summary>The fraction of the ball's velocity along the mesh and of its spin it keeps after the hit.</summary>
         public double TangentialSpeedKept { get; }
