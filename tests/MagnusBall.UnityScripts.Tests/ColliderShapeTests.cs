@@ -132,5 +132,34 @@ namespace MagnusBall.UnityScripts.Tests
             var refused = Assert.Throws<ArgumentOutOfRangeException>(() => flight.ApplySettings())!;
             Assert.That(refused.ParamName, Is.EqualTo("shapeRestitution"));
         }
+
+        [Test]
+        public void ThePreview_PredictsWithTheFlightsShapes_TheLineTurnsAtTheWall()
+        {
+            // The preview predicts with the ball's shapes: the line of a shot at the wall comes back off its face (before, it
+            // went through the wall to the ground behind it).
+            BoxCollider wall = Collider<BoxCollider>("wall", new Vector3(8, 2, 0), Quaternion.identity, new Vector3(0.2f, 4, 10));
+            var holder = new GameObject("ball");
+            holder.transform.position = new Vector3(0, 1.5f, 0);
+            MagnusBallFlight flight = Add<MagnusBallFlight>(holder);
+            flight.shapeColliders.Add(wall);
+            flight.ApplySettings();
+            var lineHolder = new GameObject("line");
+            LineRenderer line = lineHolder.AddComponent<LineRenderer>();
+            MagnusBallTrajectoryPreview preview = Add<MagnusBallTrajectoryPreview>(lineHolder);
+            preview.flight = flight;
+            preview.Show(new FlightState(new Vector3d(0, 1.5, 0), new Vector3d(20, 3, 0), Vector3d.Zero));
+            Call(preview, "LateUpdate");
+            Assert.That(line.positionCount, Is.GreaterThan(2));
+            double face = 8 - 0.1 - flight.Model.Ball.Radius;
+            float furthest = float.NegativeInfinity;
+            for (int i = 0; i < line.positionCount; i++)
+            {
+                furthest = Math.Max(furthest, line.GetPosition(i).x);
+            }
+
+            Assert.That(furthest, Is.LessThanOrEqualTo(face + 1e-5), "no point beyond the wall's face");
+            Assert.That(line.GetPosition(line.positionCount - 1).x, Is.LessThan(face - 1), "it ends back in front of the wall");
+        }
     }
 }

@@ -72,7 +72,7 @@ namespace MagnusBall.Components
             }
 
             _gizmoPath ??= new Vector3d[1024];
-            var predictor = new TrajectoryPredictor(_model!, _integrator!, _fixedStep, _eventSet);
+            var predictor = new TrajectoryPredictor(_model!, _integrator!, _fixedStep, _eventSet, _shapes);
             int count = predictor.Predict(_segmentStart, 10, _gizmoPath).SampleCount;
             Gizmos.color = Color.yellow;
             for (int i = 1; i < count; i++)

@@ -137,6 +137,9 @@ namespace MagnusBall.Components
         private FlightEventSet? _eventSet;
         private IBounceModel? _bounce;
         private ContactShape[]? _shapes;
+
+        /// <summary>The contact shapes the ball's flights meet (from shapeColliders or Configure), or null: the preview predicts with them.</summary>
+        internal ContactShape[]? Shapes => _shapes;
         private double _fixedStep;
         private double _maxFrameDelta;
         private FixedStepDriver? _driver;

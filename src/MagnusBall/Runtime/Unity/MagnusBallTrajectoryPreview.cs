@@ -9,8 +9,8 @@ namespace MagnusBall.Components
 {
     /// <summary>
     /// Draws a ball's predicted path with a <see cref="LineRenderer"/>, from MagnusBall's
-    /// <see cref="TrajectoryPredictor"/> with the same model, integrator, fixed step and events as a
-    /// <see cref="MagnusBallFlight"/>, so the ball follows the line exactly. It re-predicts only when the
+    /// <see cref="TrajectoryPredictor"/> with the same model, integrator, fixed step, events and contact shapes as a
+    /// <see cref="MagnusBallFlight"/>, so the ball follows the line exactly (off a wall or the net cord too). It re-predicts only when the
     /// launch changes: a new launch or bounce of the followed flight (<see cref="MagnusBallFlight.ArcVersion"/>),
     /// or a different state given to <see cref="Show"/>. The points go to the line with one
     /// <c>SetPositions</c> from an array allocated once; a frame with nothing new allocates nothing.
@@ -52,6 +52,7 @@ namespace MagnusBall.Components
 
         private LineRenderer? _line;
         private TrajectoryPredictor? _predictor;
+        private MagnusBall.Contact.Shapes.ContactShape[]? _predictorShapes;
         private Vector3d[] _path = Array.Empty<Vector3d>();
         private Vector3[] _points = Array.Empty<Vector3>();
         private FlightState _requested;
@@ -167,9 +168,10 @@ namespace MagnusBall.Components
             PointCount = 0;
             MagnusBallFlight ball = flight!;
             if (_predictor == null || _predictor.Model != ball.Model || _predictor.Integrator != ball.Integrator ||
-                _predictor.Step != ball.FixedStep || _predictor.Events != ball.EventSet)
+                _predictor.Step != ball.FixedStep || _predictor.Events != ball.EventSet || _predictorShapes != ball.Shapes)
             {
-                _predictor = new TrajectoryPredictor(ball.Model, ball.Integrator, ball.FixedStep, ball.EventSet);
+                _predictor = new TrajectoryPredictor(ball.Model, ball.Integrator, ball.FixedStep, ball.EventSet, ball.Shapes);
+                _predictorShapes = ball.Shapes;
             }
 
             int count = _predictor.Predict(from, maxDuration, _path).SampleCount;
