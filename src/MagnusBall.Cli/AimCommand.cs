@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using System.Text;
 using System.Text.Encodings.Web;
 using System.Text.Json;
@@ -135,8 +136,11 @@ namespace MagnusBall.Cli
                 limits.RejectUnknown();
             }
 
+            // Shapes are obstacles: a trial that touches one is not a solution, unless find names it as "viaShapeId" (a bank shot).
+            IReadOnlyList<MagnusBall.Contact.Shapes.ContactShape> shapes = ScenarioShapes.Read(a, setup.Model.Up);
             var solver = new AimSolver(
-                setup.Model, setup.Integrator, setup.Step, new Plane(ground.Point, ground.Normal), setup.MaxTime, minElevation, maxElevation, scan, maxSpeed);
+                setup.Model, setup.Integrator, setup.Step, new Plane(ground.Point, ground.Normal), setup.MaxTime, minElevation, maxElevation, scan, maxSpeed,
+                shapes: shapes.Count > 0 ? shapes.ToArray() : null);
 
             JsonFields find = a.Object("find");
             string kind = find.String("kind");
@@ -161,7 +165,8 @@ namespace MagnusBall.Cli
                     double speed = launchSpeed = find.Positive("speed");
                     Vector3d target = find.Vector("target");
                     double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
-                    solve = s => s.ElevationToReach(position, speed, spin, target, azimuth);
+                    int? via = ViaShapeId(find, shapes);
+                    solve = s => s.ElevationToReach(position, speed, spin, target, azimuth, viaShapeId: via);
                     break;
                 }
 
@@ -170,7 +175,8 @@ namespace MagnusBall.Cli
                     double speed = launchSpeed = find.Positive("speed");
                     Vector3d target = find.Vector("target");
                     double maxAzimuth = InRange(find, "maximumAzimuthDegrees", 45, 1e-9, 89);
-                    solve = s => s.AnglesToReach(position, speed, spin, target, maxAzimuth);
+                    int? via = ViaShapeId(find, shapes);
+                    solve = s => s.AnglesToReach(position, speed, spin, target, maxAzimuth, viaShapeId: via);
                     break;
                 }
 
@@ -179,7 +185,8 @@ namespace MagnusBall.Cli
                     double elevation = InRange(find, "elevationDegrees", double.NaN, -89.999, 89.999) * DegreesToRadians;
                     double azimuth = find.Number("azimuthDegrees", 0) * DegreesToRadians;
                     Vector3d target = find.Vector("target");
-                    solve = s => s.SpeedToReach(position, elevation, azimuth, spin, target);
+                    int? via = ViaShapeId(find, shapes);
+                    solve = s => s.SpeedToReach(position, elevation, azimuth, spin, target, viaShapeId: via);
                     launchSpeed = maxSpeed;
                     break;
                 }
@@ -231,6 +238,24 @@ namespace MagnusBall.Cli
             return value;
         }
 
+        // find's optional "viaShapeId": the id of one of the aim's shapes the ball must touch on its way (a bank shot).
+        private static int? ViaShapeId(JsonFields find, IReadOnlyList<MagnusBall.Contact.Shapes.ContactShape> shapes)
+        {
+            if (!find.Has("viaShapeId"))
+            {
+                return null;
+            }
+
+            double value = find.Number("viaShapeId");
+            if (!shapes.Any(shape => shape.Id == value))
+            {
+                string ids = shapes.Count == 0 ? "the aim has no shapes" : "the aim's shape ids are " + string.Join(", ", shapes.Select(shape => shape.Id).Distinct());
+                throw new InputError(find.PathOf("viaShapeId"), $"must be the id of one of the aim's shapes ({ids}); got {JsonFields.Format(value)}");
+            }
+
+            return (int)value;
+        }
+
         private static string Write(List<(AimRequest Request, AimSolution Solution)> solutions)
         {
             return JsonOutput.Write(w =>
@@ -241,7 +266,13 @@ namespace MagnusBall.Cli
                 {
                     w.WriteStartObject();
                     w.WriteString("name", request.Name);
-                    w.WriteString("status", s.Status switch { AimStatus.Solved => "solved", AimStatus.WorkLimitReached => "work-limit-reached", _ => "unreachable" });
+                    w.WriteString("status", s.Status switch
+                    {
+                        AimStatus.Solved => "solved",
+                        AimStatus.WorkLimitReached => "work-limit-reached",
+                        AimStatus.Blocked => "blocked",
+                        _ => "unreachable",
+                    });
                     if (s.IsSolved)
                     {
                         w.WriteNumber("speed", s.Speed);

@@ -63,14 +63,16 @@ namespace MagnusBall.Cli
             "output: {\"results\": [{\"name\", \"landing\": {time, position, velocity} or null, \"apex\", \"crossings\",\n" +
             "  \"contacts\" (with shapes),\n" +
             "  \"steps\", \"derivativeEvaluations\"}]}; with --csv: scenario,time,x,y,z,vx,vy,vz,wx,wy,wz\n" +
-            "\naim FILE: {\"aims\": [ aim, ... ]}; each aim has the flight fields above (not initial, planes or shapes) and\n" +
+            "\naim FILE: {\"aims\": [ aim, ... ]}; each aim has the flight fields above (not initial or planes; shapes are\n" +
+            "  obstacles) and\n" +
             "  launch           {\"position\": m, \"spin\": {\"topspin\", \"sidespin\", \"gyro\"} in rad/s}\n" +
             "  find             {\"kind\": minimum-elevation-to-clear (speed, plane {point, normal}, height, azimuthDegrees)\n" +
             "                   | elevation-to-reach (speed, target, azimuthDegrees) | angles-to-reach (speed, target)\n" +
-            "                   | speed-to-reach (elevationDegrees, target, azimuthDegrees)}\n" +
+            "                   | speed-to-reach (elevationDegrees, target, azimuthDegrees); the *-to-reach kinds take\n" +
+            "                   viaShapeId (a bank shot off that shape)}\n" +
             "  limits           {\"minimumElevationDegrees\": -45, \"maximumElevationDegrees\": 80, \"elevationScanDegrees\": 0.5,\n" +
             "                    \"maximumSpeed\": 100} (optional)\n" +
-            "output: {\"results\": [{\"name\", \"status\": solved|unreachable|work-limit-reached, \"speed\", \"elevationDegrees\",\n" +
+            "output: {\"results\": [{\"name\", \"status\": solved|unreachable|blocked|work-limit-reached, \"speed\", \"elevationDegrees\",\n" +
             "  \"azimuthDegrees\", \"arrival\", \"miss\", \"simulations\"}]}\n" +
             "\nwarnings: with a preset, a ball's mass or radius, a launch speed or a spin rate outside what real balls of\n" +
             "  that sport reach (a tennis ball of mass 57: grams?) prints one line on stderr per value; the exit code stays 0.\n" +

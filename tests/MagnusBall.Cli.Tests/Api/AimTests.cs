@@ -213,5 +213,59 @@ namespace MagnusBall.Cli.Tests.Api
             Assert.That(run.ExitCode, Is.EqualTo(2));
             Assert.That(run.Stderr, Does.StartWith("magnusball: aims: required field is missing"));
         }
+
+        // A tennis ball (the thesis's constant coefficients) from just before the net to a target low beyond it, elevations
+        // capped at 5 degrees: every launch that reaches the target meets the net (as AimShapesTests in the library's tests).
+        private static JsonObject LowOverTheNet(bool withNet, string extraFind = "")
+        {
+            string shapes = withNet ? """, "shapes": [{"type": "tennis-net", "firstId": 0, "centreOnGround": [11.885, 0, 0], "across": [0, 1, 0]}]""" : "";
+            return JsonNode.Parse("""
+                {"aims": [{"name": "low", "ball": {"mass": 0.057, "radius": 0.033}, "air": {"density": 1.21}, "gravity": [0, 0, -9.81],
+                  "aero": {"drag": {"model": "constant", "cd": 0.55}},
+                  "integrator": "rk4", "step": 0.004166666666666667, "maxTime": 5,
+                  "launch": {"position": [9, 0, 0.5]}, "limits": {"maximumElevationDegrees": 5}
+                """ + shapes + """, "find": {"kind": "elevation-to-reach", "speed": 20, "target": [13, 0, 0.3]""" + extraFind + "}}]}")!.AsObject();
+        }
+
+        [Test]
+        public void Shapes_AreObstacles_AShotTheNetStopsIsBlocked()
+        {
+            CliRun free = Run(LowOverTheNet(withNet: false));
+            Assert.That(free.ExitCode, Is.EqualTo(0), free.Stderr);
+            Assert.That(free.FirstResult().GetProperty("status").GetString(), Is.EqualTo("solved"), "without the net it is reached");
+            CliRun blocked = Run(LowOverTheNet(withNet: true));
+            Assert.That(blocked.ExitCode, Is.EqualTo(0), blocked.Stderr);
+            Assert.That(blocked.FirstResult().GetProperty("status").GetString(), Is.EqualTo("blocked"));
+        }
+
+        [Test]
+        public void ABankShot_ViaTheBackboard_IsSolved_AndAnUnknownShapeIdIsRefused()
+        {
+            // A basketball from 2.2 m, 5 m in front of the board's foot, at 9 m/s: off the backboard (id 11) to the rim's
+            // centre (the hoop's ring, id 10, as SportShapes places it).
+            var rim = (MagnusBall.Contact.Shapes.TorusShape)MagnusBall.Shots.SportShapes.BasketballHoop(
+                10, new MagnusBall.Vector3d(5, 0, 0), -MagnusBall.Vector3d.UnitX, MagnusBall.Vector3d.UnitZ)[0];
+            string target = string.Format(System.Globalization.CultureInfo.InvariantCulture, "[{0:R}, {1:R}, {2:R}]", rim.Centre.X, rim.Centre.Y, rim.Centre.Z);
+            string hoop = """[{"type": "basketball-hoop", "firstId": 10, "boardFootOnGround": [5, 0, 0], "towardCourt": [-1, 0, 0]}]""";
+            JsonObject root = JsonNode.Parse("""
+                {"aims": [{"name": "bank", "preset": "basketball", "integrator": "rk4", "step": 0.004166666666666667, "maxTime": 5,
+                  "shapes": 
+                """ + hoop + """
+                , "launch": {"position": [0, 0, 2.2]},
+                  "find": {"kind": "elevation-to-reach", "speed": 9, "target": 
+                """ + target + """
+                , "viaShapeId": 11}}]}
+                """)!.AsObject();
+            CliRun run = Run(root);
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement r = run.FirstResult();
+            Assert.That(r.GetProperty("status").GetString(), Is.EqualTo("solved"), run.Stdout);
+            Assert.That(Vec(r.GetProperty("arrival").GetProperty("velocity"))[0], Is.LessThan(0), "coming back off the board");
+
+            root["aims"]![0]!["find"]!["viaShapeId"] = 12;
+            CliRun refused = Run(root);
+            Assert.That(refused.ExitCode, Is.EqualTo(2));
+            Assert.That(refused.Stderr, Does.Contain("aims[0].find.viaShapeId: must be the id of one of the aim's shapes (the aim's shape ids are 10, 11); got 12"));
+        }
     }
 }
