@@ -207,5 +207,26 @@ namespace MagnusBall.Tests.Contact
             Assert.That(events.Count, Is.GreaterThan(FlightStepper.MaxPiecesPerStep));
             Assert.That(Math.Abs(stepper.State.Position.Y), Is.LessThan(0.035 - r + 1e-9));
         }
+
+        [Test]
+        public void GroundBounce_CarriesTheGroundsNormal_AsAContactCarriesTheShapes()
+        {
+            // The ground is one case of a contact: its bounce event says the normal it was answered along, as a shape's does.
+            FlightModel model = ContactShapeTests.Tennis();
+            Vector3d normal = new Vector3d(0.1, 0, 1).NormalizedOrZero();
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, normal)));
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 1), new Vector3d(10, 0, 2), Vector3d.Zero));
+            var events = new List<FlightEvent>();
+            for (int i = 0; i < 240 && !events.Exists(e => e.Kind == FlightEventKinds.Bounce); i++)
+            {
+                stepper.TryStep(1.0 / 240);
+                events.AddRange(stepper.Events.ToArray());
+            }
+
+            FlightEvent bounce = events.Find(e => e.Kind == FlightEventKinds.Bounce);
+            Assert.That(bounce.Kind, Is.EqualTo(FlightEventKinds.Bounce));
+            Assert.That(bounce.ShapeId, Is.EqualTo(-1));
+            Assert.That((bounce.ContactNormal - normal).Length, Is.LessThan(1e-15));
+        }
     }
 }

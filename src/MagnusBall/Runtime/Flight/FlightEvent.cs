@@ -77,7 +77,8 @@ namespace MagnusBall.Flight
 
         /// <summary>
         /// For a <see cref="FlightEventKinds.Contact"/>, the shape's unit outward normal at the contact (from the shape toward the
-        /// ball's centre; the contact point is <see cref="Position"/> minus the ball's radius times it); otherwise zero.
+        /// ball's centre; the contact point is <see cref="Position"/> minus the ball's radius times it); for a
+        /// <see cref="FlightEventKinds.Bounce"/>, the ground's normal, the same way; otherwise zero.
         /// </summary>
         public readonly Vector3d ContactNormal;
 
@@ -97,7 +98,10 @@ namespace MagnusBall.Flight
         /// <param name="after">The state just after it (for a bounce, leaving).</param>
         /// <param name="regime">For a bounce, its regime.</param>
         /// <param name="startsRolling">For a bounce, whether the ball rolls from here.</param>
-        internal FlightEvent(FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling)
+        /// <param name="normal">For a bounce, the ground's unit normal; otherwise zero.</param>
+        internal FlightEvent(
+            FlightEventKinds kind, int planeIndex, in FlightState state, in FlightState after, BounceRegime regime, bool startsRolling,
+            in Vector3d normal = default)
         {
             Kind = kind;
             PlaneIndex = planeIndex;
@@ -105,7 +109,7 @@ namespace MagnusBall.Flight
             After = after;
             Regime = regime;
             StartsRolling = startsRolling;
-            ContactNormal = default;
+            ContactNormal = normal;
         }
 
         /// <summary>Creates a contact event: the shape's id (kept where a crossing keeps its plane's index) and normal.</summary>

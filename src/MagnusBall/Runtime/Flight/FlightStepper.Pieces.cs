@@ -301,7 +301,7 @@ namespace MagnusBall.Flight
             _now.Bounces++;
             var arriving = new FlightState(centre, touching.Velocity, touching.AngularVelocity, contactTime);
             var leaving = new FlightState(centre, outcome.Velocity, outcome.AngularVelocity, contactTime);
-            var bounce = new FlightEvent(FlightEventKinds.Bounce, -1, arriving, leaving, outcome.Regime, roll);
+            var bounce = new FlightEvent(FlightEventKinds.Bounce, -1, arriving, leaving, outcome.Regime, roll, _normal);
             Write(bounce);
             if ((stopAt & FlightEventKinds.Bounce) != 0)
             {
