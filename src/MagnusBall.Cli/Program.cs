@@ -53,11 +53,12 @@ namespace MagnusBall.Cli
             "  maxTime          s (default 10)\n" +
             "  ground           {\"point\", \"normal\"} (default: through the origin, normal up); null for none\n" +
             "  planes           [{\"name\", \"point\", \"normal\", \"bounds\": {\"height\": [min, max], \"width\": [min, max]}}]\n" +
-            "  shapes           [{\"type\": box, rectangle, capsule, cylinder, torus, net-mesh, tennis-net, soccer-goal-frame,\n" +
+            "  shapes           [{\"type\": box, rectangle, capsule, cylinder, sphere, torus, net-mesh, tennis-net, soccer-goal-frame,\n" +
             "                   basketball-hoop or table-tennis-net, \"id\" (a fixture's \"firstId\") and its geometry: box centre,\n" +
             "                   halfExtents, xAxis, yAxis; rectangle centre, normal, widthDirection, width, height; capsule and\n" +
-            "                   cylinder endA, endB, radius; torus centre, axis, ringRadius, tubeRadius; net-mesh as rectangle\n" +
-            "                   plus tangentialSpeedKept and mass (fixed); primitives restitution (0.7), friction (0.3), mass (fixed); fixtures\n" +
+            "                   cylinder endA, endB, radius; sphere centre, radius; torus centre, axis, ringRadius,\n" +
+            "                   tubeRadius; net-mesh as rectangle plus tangentialSpeedKept; primitives restitution (0.7),\n" +
+            "                   friction (0.3), mass (fixed; net-mesh too); fixtures\n" +
             "                   tennis-net centreOnGround, across; soccer-goal-frame goalLineCentre, across; basketball-hoop\n" +
             "                   boardFootOnGround, towardCourt; table-tennis-net centreOnSurface, across; each up (the model's)}]\n" +
             "output: {\"results\": [{\"name\", \"landing\": {time, position, velocity} or null, \"apex\", \"crossings\",\n" +

@@ -9,7 +9,7 @@ namespace MagnusBall.Cli
 {
     /// <summary>
     /// Reads a scenario's "shapes" (issue 40, docs/cli.md): an array of contact shapes, each an object with a "type" (box,
-    /// rectangle, capsule, cylinder, torus, net-mesh, or a sport's fixture: tennis-net, soccer-goal-frame, basketball-hoop,
+    /// rectangle, capsule, cylinder, sphere, torus, net-mesh, or a sport's fixture: tennis-net, soccer-goal-frame, basketball-hoop,
     /// table-tennis-net), an integer "id" (a fixture's first id) and its geometry; the primitives take "restitution",
     /// "friction" and "mass". Every field is checked with the reader's strict errors; geometry the library refuses (two equal
     /// ends, parallel axes) is an error naming the field.
@@ -19,7 +19,7 @@ namespace MagnusBall.Cli
         /// <summary>The shape types a scenario accepts.</summary>
         public static readonly string[] Types =
         {
-            "box", "rectangle", "capsule", "cylinder", "torus", "net-mesh", "tennis-net", "soccer-goal-frame", "basketball-hoop", "table-tennis-net",
+            "box", "rectangle", "capsule", "cylinder", "sphere", "torus", "net-mesh", "tennis-net", "soccer-goal-frame", "basketball-hoop", "table-tennis-net",
         };
 
         /// <summary>The default restitution of a primitive shape: 0.7 (SportShapes.Post, painted metal).</summary>
@@ -128,6 +128,8 @@ namespace MagnusBall.Cli
                     return new CapsuleShape(id, f.Vector("endA"), f.Vector("endB"), f.Positive("radius"), contact, mass);
                 case "cylinder":
                     return new CylinderShape(id, f.Vector("endA"), f.Vector("endB"), f.Positive("radius"), contact, mass);
+                case "sphere":
+                    return new SphereShape(id, f.Vector("centre"), f.Positive("radius"), contact, mass);
                 default: // torus
                     return new TorusShape(id, f.Vector("centre"), f.Direction("axis"), f.Positive("ringRadius"), f.Positive("tubeRadius"), contact, mass);
             }

@@ -214,7 +214,7 @@ namespace MagnusBall.Cli
 
         private const string ShapeFill = "#777777";
 
-        // A contact shape in the view (issue 40): a box, rectangle or net mesh as the outline of its corners; a capsule
+        // A contact shape in the view (issue 40): a box, rectangle or net mesh as the outline of its corners; a sphere as a circle; a capsule
         // or cylinder as a thick line along its axis (a circle where its axis points out of the view: the net cord seen from
         // the side); a torus as its cross-section by the view's plane through its centre (the two circles of its tube; seen
         // along its axis, the ring).
@@ -230,6 +230,9 @@ namespace MagnusBall.Cli
                     return;
                 case TorusShape t:
                     Torus(svg, view, t, along);
+                    return;
+                case SphereShape sphere:
+                    Rod(svg, view, sphere.Centre, sphere.Centre, sphere.RadiusM, along, round: true);
                     return;
                 default:
                 {

@@ -51,6 +51,7 @@ namespace MagnusBall.Cli.Tests
                  {"type": "rectangle", "id": 8, "centre": [40, 0, 1], "normal": [-1, 0, 0], "widthDirection": [0, 1, 0], "width": 2, "height": 2, "mass": 5},
                  {"type": "capsule", "id": 9, "endA": [50, -1, 1], "endB": [50, 1, 1], "radius": 0.05},
                  {"type": "cylinder", "id": 10, "endA": [60, 0, 0], "endB": [60, 0, 2], "radius": 0.05},
+                 {"type": "sphere", "id": 13, "centre": [65, 0, 1], "radius": 0.2, "mass": 0.4},
                  {"type": "torus", "id": 11, "centre": [70, 0, 3], "axis": [0, 0, 1], "ringRadius": 0.23, "tubeRadius": 0.01},
                  {"type": "net-mesh", "id": 12, "centre": [80, 0, 0.5], "normal": [1, 0, 0], "widthDirection": [0, 1, 0], "width": 10, "height": 1, "tangentialSpeedKept": 0.3},
                  {"type": "soccer-goal-frame", "firstId": 20, "goalLineCentre": [90, 0, 0], "across": [0, 1, 0]},
@@ -68,7 +69,8 @@ namespace MagnusBall.Cli.Tests
         [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 0, 1], "radius": 0.1}]""", "scenarios[0].shapes[0].endB: endB must lie between 1e-150 m")]
         [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 1, 1], "radius": -0.1}]""", "scenarios[0].shapes[0].radius: must be finite and > 0; got -0.1")]
         [TestCase("""[{"type": "capsule", "id": 1, "endA": [1, 0, 1], "endB": [1, 1, 1], "radius": 0.1, "radus": 1}]""", "scenarios[0].shapes[0].radus: unknown field; expected one of:")]
-        [TestCase("""[{"type": "sphere", "id": 1}]""", "scenarios[0].shapes[0].type: unknown shape type 'sphere'; expected one of: box, rectangle, capsule")]
+        [TestCase("""[{"type": "cone", "id": 1}]""", "scenarios[0].shapes[0].type: unknown shape type 'cone'; expected one of: box, rectangle, capsule")]
+        [TestCase("""[{"type": "sphere", "id": 1, "centre": [1, 0, 1], "radius": 0}]""", "scenarios[0].shapes[0].radius: must be finite and > 0; got 0")]
         [TestCase("""[{"type": "torus", "id": 1.5, "centre": [0, 0, 3], "axis": [0, 0, 1], "ringRadius": 0.2, "tubeRadius": 0.01}]""", "scenarios[0].shapes[0].id: must be an integer in [-1000000000, 1000000000]; got 1.5")]
         [TestCase("""[{"type": "box", "id": 1, "centre": [0, 0, 3], "halfExtents": [1, -1, 1], "xAxis": [1, 0, 0], "yAxis": [0, 1, 0]}]""", "scenarios[0].shapes[0].halfExtents: must have every component finite and >= 0 m")]
         [TestCase("""[{"type": "box", "id": 1, "centre": [0, 0, 3], "halfExtents": [1, 1, 1], "xAxis": [1, 0, 0], "yAxis": [2, 0, 0]}]""", "scenarios[0].shapes[0].yAxis: yAxis must not be parallel to xAxis")]
@@ -150,6 +152,19 @@ namespace MagnusBall.Cli.Tests
             {
                 File.Delete(path);
             }
+        }
+
+        [Test]
+        public void ASphere_IsHit_WhereTheSurfacesTouch()
+        {
+            // A 0.2 m sphere centred 1.1 m up at x = 8 m, across the drive's path: the ball's surface touches it.
+            CliRun run = CliRun.Simulate(IntoTheNet("""[{"type": "sphere", "id": 5, "centre": [8, 0, 1.1], "radius": 0.2}]"""));
+            Assert.That(run.ExitCode, Is.EqualTo(0), run.Stderr);
+            JsonElement first = run.FirstResult().GetProperty("contacts")[0];
+            Assert.That(first.GetProperty("shapeId").GetInt32(), Is.EqualTo(5));
+            double[] p = first.GetProperty("position").EnumerateArray().Select(v => v.GetDouble()).ToArray();
+            double distance = Math.Sqrt((p[0] - 8) * (p[0] - 8) + p[1] * p[1] + (p[2] - 1.1) * (p[2] - 1.1));
+            Assert.That(distance, Is.EqualTo(0.2 + 0.033).Within(1e-9));
         }
     }
 }

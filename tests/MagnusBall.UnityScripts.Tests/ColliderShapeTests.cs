@@ -66,24 +66,29 @@ namespace MagnusBall.UnityScripts.Tests
         }
 
         [Test]
-        public void ASphere_AShortCapsule_AnEllipticalCapsule_AndAnEmptySlot_AreSkippedWithAWarning()
+        public void SpheresAndShortCapsules_AreSpheres_AnEggAnEllipticalCapsuleAndAnEmptySlot_AreSkippedWithAWarning()
         {
             StubControl.Logged.Clear();
-            SphereCollider ball = Collider<SphereCollider>("boulder", new Vector3(1, 0, 0), Quaternion.identity, new Vector3(1, 1, 1));
+            SphereCollider ball = Collider<SphereCollider>("boulder", new Vector3(1, 0, 0), Quaternion.identity, new Vector3(2, 2, 2));
+            ball.radius = 0.25f;
             CapsuleCollider stub = Collider<CapsuleCollider>("stub", new Vector3(2, 0, 0), Quaternion.identity, new Vector3(1, 1, 1));
             stub.height = 0.5f; // below twice the radius (1): a sphere
+            SphereCollider egg = Collider<SphereCollider>("egg", new Vector3(5, 0, 0), Quaternion.identity, new Vector3(1, 2, 1));
             CapsuleCollider squashed = Collider<CapsuleCollider>("squashed", new Vector3(3, 0, 0), Quaternion.identity, new Vector3(1, 1, 3));
             BoxCollider box = Collider<BoxCollider>("box", new Vector3(4, 0, 0), Quaternion.identity, new Vector3(1, 1, 1));
             var skipped = new List<string>();
-            ContactShape[] shapes = ColliderShapes.FromColliders(new Collider?[] { ball, stub, squashed, null, box }, Wall, 0, skipped);
-            Assert.That(shapes, Has.Length.EqualTo(1), "only the box");
-            Assert.That(shapes[0].Id, Is.EqualTo(4), "its index: ids stay put when others are skipped");
-            Assert.That(skipped, Has.Count.EqualTo(4));
-            Assert.That(skipped[0], Does.Contain("'boulder'").And.Contain("no sphere shape"));
-            Assert.That(skipped[1], Does.Contain("'stub'").And.Contain("no longer than its diameter"));
-            Assert.That(skipped[2], Does.Contain("'squashed'").And.Contain("differently across its axis"));
-            Assert.That(skipped[3], Does.Contain("no collider assigned"));
-            Assert.That(StubControl.Logged.FindAll(l => l.StartsWith("Warning: MagnusBall: collider", StringComparison.Ordinal)), Has.Count.EqualTo(4));
+            ContactShape[] shapes = ColliderShapes.FromColliders(new Collider?[] { ball, stub, squashed, null, box, egg }, Wall, 0, skipped);
+            Assert.That(shapes, Has.Length.EqualTo(3), "the sphere, the capsule that is a sphere, the box");
+            var sphere = (SphereShape)shapes[0];
+            Assert.That(sphere.Id, Is.EqualTo(0));
+            Assert.That(sphere.RadiusM, Is.EqualTo(0.5).Within(1e-6), "0.25 scaled by 2");
+            Assert.That(((SphereShape)shapes[1]).RadiusM, Is.EqualTo(0.5).Within(1e-6), "the capsule's radius");
+            Assert.That(shapes[2].Id, Is.EqualTo(4), "its index: ids stay put when others are skipped");
+            Assert.That(skipped, Has.Count.EqualTo(3));
+            Assert.That(skipped[0], Does.Contain("'squashed'").And.Contain("differently across its axis"));
+            Assert.That(skipped[1], Does.Contain("no collider assigned"));
+            Assert.That(skipped[2], Does.Contain("'egg'").And.Contain("ellipsoid"));
+            Assert.That(StubControl.Logged.FindAll(l => l.StartsWith("Warning: MagnusBall: collider", StringComparison.Ordinal)), Has.Count.EqualTo(3));
         }
 
         [Test]

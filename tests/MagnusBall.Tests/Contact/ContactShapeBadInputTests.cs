@@ -42,6 +42,8 @@ namespace MagnusBall.Tests.Contact
             Refused(() => BoxShape.Rectangle(1, A, Vector3d.Zero, Vector3d.UnitX, 1, 1, C), "normal", "non-zero");
             Refused(() => BoxShape.Rectangle(1, A, Vector3d.UnitX, Vector3d.UnitX * 2, 1, 1, C), "widthDirection", "not be along");
             Refused(() => new NetMeshShape(1, A, Vector3d.Zero, Vector3d.UnitY, 1, 1), "normal", "non-zero");
+            Refused(() => new SphereShape(1, A, 0, C), "radiusM", "> 0");
+            Refused(() => new SphereShape(1, new Vector3d(double.NaN, 0, 0), 0.1, C), "centre", "finite");
         }
 
         [Test]

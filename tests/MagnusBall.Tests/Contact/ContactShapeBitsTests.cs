@@ -12,7 +12,7 @@ namespace MagnusBall.Tests.Contact
     /// </summary>
     public class ContactShapeBitsTests
     {
-        private const ulong RecordedHash = 0x7E85BE4B2A4E9D0EUL;
+        private const ulong RecordedHash = 0x4095BE4B2A4E9D0EUL;
 
         [Test]
         public void NetCordFlights_HashToTheRecordedBits()

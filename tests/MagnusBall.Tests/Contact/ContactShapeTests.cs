@@ -141,7 +141,7 @@ namespace MagnusBall.Tests.Contact
 
         [Test]
         public void Contact_NeverCreatesEnergy_ImpulseAlongNormalWithinFrictionCone(
-            [Values(0, 1, 2, 3)] int shapeKind, [Values(-60.0, 0, 200.0)] double spin, [Values(5.0, 30.0)] double speed)
+            [Values(0, 1, 2, 3, 4)] int shapeKind, [Values(-60.0, 0, 200.0)] double spin, [Values(5.0, 30.0)] double speed)
         {
             var model = new FlightModel(Ball.Tennis, Air.Vacuum, Gravity.ZUp); // a parabola: the shot arrives where aimed
             Ball ball = model.Ball;
@@ -150,7 +150,8 @@ namespace MagnusBall.Tests.Contact
                 0 => new CapsuleShape(1, new Vector3d(3, -2, 1.2), new Vector3d(3, 2, 0.8), 0.02, Steel),
                 1 => new TorusShape(1, new Vector3d(3, 0.27, 1), new Vector3d(0.2, 0, 1), 0.234, 0.009, Steel),
                 2 => BoxShape.Rectangle(1, new Vector3d(3, 0, 1), new Vector3d(-1, 0.3, 0.2), Vector3d.UnitY, 2, 2, Steel),
-                _ => new CapsuleShape(1, new Vector3d(3, -2, 1.05), new Vector3d(3, 2, 1.05), 0.02, Steel, effectiveMassKg: 0.3),
+                3 => new CapsuleShape(1, new Vector3d(3, -2, 1.05), new Vector3d(3, 2, 1.05), 0.02, Steel, effectiveMassKg: 0.3),
+                _ => new SphereShape(1, new Vector3d(3.1, 0.12, 1.03), 0.1, Steel),
             };
             var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new[] { shape });
             // Launched to arrive near 1 m up at x = 3 m (about a vacuum arc).
@@ -234,22 +235,48 @@ namespace MagnusBall.Tests.Contact
             Assert.That(landing.Position.X, Is.LessThan(5).And.GreaterThan(4), "drops in front of the net");
         }
 
+        [TestCase(1.0 / 240)]
+        [TestCase(1.0 / 30)]
+        public void Sphere_IsHitWhereTheSurfacesTouch_AndAHeadOnHitComesStraightBack(double step)
+        {
+            // Straight at a 0.1 m sphere, in a vacuum with no gravity: the touch is at centre distance 0.1 + r, exactly where the
+            // straight path puts it; the normal is along the path, so with no spin the ball comes straight back at e times its speed.
+            var model = new FlightModel(Ball.Tennis, Air.Vacuum, Vector3d.Zero);
+            double r = model.Ball.Radius;
+            var sphere = new SphereShape(5, new Vector3d(4, 0, 1), 0.1, Steel);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, null, new ContactShape[] { sphere });
+            FlightEvent hit = FirstContact(Fly(stepper, new FlightState(new Vector3d(0, 0, 1), new Vector3d(40, 0, 0), Vector3d.Zero), step, 0.2));
+            Assert.That(hit.ShapeId, Is.EqualTo(5));
+            Assert.That(hit.Time, Is.EqualTo((4 - 0.1 - r) / 40).Within(1e-12));
+            Assert.That(hit.ContactNormal.X, Is.EqualTo(-1).Within(1e-12));
+            Assert.That(hit.After.Velocity.X, Is.EqualTo(-0.7 * 40).Within(1e-9));
+        }
+
         [Test]
         public void NetMesh_OfFiniteMass_GivesWay()
         {
-            // A fixed mesh sends the ball back at 0.1 of its normal speed; 0.2 kg of mesh moving with a 57 g ball gives way: by
-            // the impact law the ball goes on through the net's plane direction at (m - e M)/(m + M) = 0.15 of its normal speed.
+            // A fixed mesh sends the ball back at 0.1 of its normal speed. 1 kg of mesh moving with a 57 g ball sends it back
+            // slower, at (m - e M)/(m + M) of it by the impact law. 0.2 kg is lighter than m/e: the impact law would leave the
+            // ball still moving into the mesh, which stays where it is here, so the mesh gives way by taking that speed: the ball
+            // leaves along it, and in flight it never passes the mesh.
             FlightModel model = Tennis();
             Ball ball = model.Ball;
-            var fixedMesh = new NetMeshShape(9, new Vector3d(5, 0, 0.45), Vector3d.UnitX, Vector3d.UnitY, 12, 0.9);
-            var lightMesh = new NetMeshShape(9, new Vector3d(5, 0, 0.45), Vector3d.UnitX, Vector3d.UnitY, 12, 0.9, effectiveMassKg: 0.2);
+            NetMeshShape Mesh(double mass) => new NetMeshShape(9, new Vector3d(5, 0, 0.45), Vector3d.UnitX, Vector3d.UnitY, 12, 0.9, effectiveMassKg: mass);
             var position = new Vector3d(5 - ball.Radius, 0, 0.45);
             var velocity = new Vector3d(30, 0, 0);
-            ImpactOutcome still = fixedMesh.Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX);
-            ImpactOutcome gives = lightMesh.Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX);
-            Assert.That(still.Velocity.X, Is.EqualTo(-0.1 * 30).Within(1e-9));
-            double m = ball.Mass, mesh = 0.2;
-            Assert.That(gives.Velocity.X, Is.EqualTo(30 * (m - 0.1 * mesh) / (m + mesh)).Within(1e-9));
+            double m = ball.Mass;
+            Assert.That(Mesh(double.PositiveInfinity).Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX).Velocity.X, Is.EqualTo(-0.1 * 30).Within(1e-9));
+            Assert.That(Mesh(1).Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX).Velocity.X, Is.EqualTo(30 * (m - 0.1 * 1) / (m + 1)).Within(1e-9));
+            Assert.That(Mesh(0.2).Respond(ball, position, velocity, Vector3d.Zero, -Vector3d.UnitX).Velocity.X, Is.EqualTo(0));
+
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, new GroundContact(CrossBounce.Hard, new Plane(Vector3d.Zero, Vector3d.UnitZ)),
+                new ContactShape[] { Mesh(0.2) });
+            stepper.Reset(new FlightState(new Vector3d(0, 0, 0.5), new Vector3d(30, 0, 0.5), Vector3d.Zero));
+            for (int i = 0; i < 120 && !stepper.IsStopped; i++)
+            {
+                stepper.TryStep(1.0 / 60);
+                Assert.That(stepper.State.Position.X, Is.LessThanOrEqualTo(5 - ball.Radius + 1e-9), $"step {i}");
+            }
         }
 
         [Test]

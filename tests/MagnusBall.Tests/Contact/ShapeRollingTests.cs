@@ -228,5 +228,88 @@ namespace MagnusBall.Tests.Contact
             Assert.That(bounce.ShapeId, Is.EqualTo(-1));
             Assert.That((bounce.ContactNormal - normal).Length, Is.LessThan(1e-15));
         }
+
+        [Test]
+        public void BallRollingDownARamp_ReachesTheGround_AndNeverGoesBelowIt()
+        {
+            // A 15 degree ramp whose top face runs into the ground: the ball settles near its top, rolls down, and meets the ground
+            // where the ramp does (a Bounce), never passing below the ground's plane of centres.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            double th = 15 * Math.PI / 180;
+            var x = new Vector3d(Math.Cos(th), 0, -Math.Sin(th));
+            var ramp = new BoxShape(5, Vector3d.Zero, new Vector3d(2, 1, 0.5), x, Vector3d.UnitY, Wood);
+            Vector3d n = ramp.ZAxis;
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { ramp });
+            stepper.Reset(new FlightState(n * (0.5 + r + 1e-4) - x * 1.0, Vector3d.Zero, Vector3d.Zero));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { ramp }, r, 1.0 / 60, 10);
+            Assert.That(events.Exists(e => e.Kind == FlightEventKinds.Contact && e.StartsRolling), Is.True, "it settles on the ramp");
+            Assert.That(events.Exists(e => e.Kind == FlightEventKinds.Bounce), Is.True, "it meets the ground");
+            Assert.That(stepper.State.Position.Z, Is.GreaterThan(r - 1e-9));
+        }
+
+        [Test]
+        public void BallRollingAlongAWall_ItIsPressedAgainst_RollsOnAlongIt()
+        {
+            // The ground tilted 20 degrees toward a long wall and a ball rolling at 3 m/s along it, 1 mm off: it touches the wall
+            // and rolls on along it (pressed against it by the slope), never into it, instead of being stopped there.
+            double tilt = 20 * Math.PI / 180;
+            var model = new FlightModel(Ball.Tennis, Air.SeaLevel, new Vector3d(9.81 * Math.Sin(tilt), 0, -9.81 * Math.Cos(tilt)));
+            double r = model.Ball.Radius;
+            var wall = new BoxShape(4, new Vector3d(3, 0, 0.5), new Vector3d(0.05, 50, 0.5), Vector3d.UnitX, Vector3d.UnitY, Wood);
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { wall });
+            stepper.Reset(new FlightState(new Vector3d(2.95 - r - 0.001, 0, r), new Vector3d(0, 3, 0), new Vector3d(-3 / r, 0, 0)));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { wall }, r, 1.0 / 60, 1);
+            Assert.That(events.FindAll(e => e.Kind == FlightEventKinds.Contact).Count, Is.EqualTo(1), "one touch, then along the wall");
+            Assert.That(stepper.Phase, Is.EqualTo(FlightPhase.Rolling));
+            Assert.That(stepper.State.Position.Y, Is.GreaterThan(2.5), "it rolled on along the wall (3 m/s less rolling resistance)");
+            Assert.That(stepper.State.Position.X, Is.EqualTo(2.95 - r).Within(1e-6), "against the wall");
+        }
+
+        [Test]
+        public void BallOnTheInsideOfARim_StaysOutOfTheTube()
+        {
+            // Settled on the inner side of a basketball rim (where the tangent plane cuts into the tube) and moving 1 m/s round the
+            // ring: after every step it is on or outside the tube's surface, never in it, until it falls off.
+            FlightModel model = ContactShapeTests.Tennis();
+            double r = model.Ball.Radius;
+            double ring = 0.2286, tube = 0.008, beta = 60 * Math.PI / 180;
+            var rim = new TorusShape(9, new Vector3d(0, 0, 3), Vector3d.UnitZ, ring, tube, Wood);
+            var n = new Vector3d(-Math.Cos(beta), 0, Math.Sin(beta));
+            var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { rim });
+            stepper.Reset(new FlightState(new Vector3d(ring, 0, 3) + n * (r + tube + 1e-5), new Vector3d(0, 1.0, 0) - n * 0.02, Vector3d.Zero));
+            List<FlightEvent> events = FlyOutside(stepper, new ContactShape[] { rim }, r, 1.0 / 60, 0.5);
+            Assert.That(events.Exists(e => e.Kind == FlightEventKinds.Contact && e.StartsRolling), Is.True, "it settles on the rim");
+        }
+
+        [Test]
+        public void BallRollingOffABar_LeavesItAsWithShortSteps()
+        {
+            // On top of a horizontal 5 cm bar at 0.3 m/s: it rolls over and falls off. The time it takes to fall below the bar's axis
+            // at 1/60 s steps is within 10 % of the time at 1/6000 s (the tangent plane is re-anchored on the bar at each step's end,
+            // so it does not hop along it).
+            double BelowTheAxis(double step)
+            {
+                FlightModel model = ContactShapeTests.Tennis();
+                double r = model.Ball.Radius;
+                var bar = new CapsuleShape(6, new Vector3d(0, -2, 1), new Vector3d(0, 2, 1), 0.05, Wood);
+                var stepper = new FlightStepper(model, RungeKutta4.Instance, null, Ground(), new ContactShape[] { bar });
+                stepper.Reset(new FlightState(new Vector3d(0, 0, 1 + 0.05 + r + 1e-5), new Vector3d(0.3, 0, 0), new Vector3d(0, 0.3 / r, 0)));
+                for (int i = 0; i < (int)(3 / step) && !stepper.IsStopped; i++)
+                {
+                    stepper.TryStep(step);
+                    Assert.That(stepper.Events.Length, Is.LessThanOrEqualTo(2), "no flood of events");
+                    if (stepper.State.Position.Z < 1)
+                    {
+                        return stepper.State.Time;
+                    }
+                }
+
+                return double.NaN;
+            }
+
+            double fine = BelowTheAxis(1.0 / 6000), frame = BelowTheAxis(1.0 / 60);
+            Assert.That(frame, Is.EqualTo(fine).Within(0.1 * fine));
+        }
     }
 }

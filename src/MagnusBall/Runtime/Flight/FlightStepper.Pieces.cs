@@ -54,7 +54,7 @@ namespace MagnusBall.Flight
                     if (_now.Phase == FlightPhase.Rolling)
                     {
                         _refusal = StepOutcome.Diverged;
-                        ok = RollPiece(endTime, stopAt);
+                        ok = RollPiece(endTime, piece, stopAt);
                     }
                     else
                     {
@@ -207,7 +207,7 @@ namespace MagnusBall.Flight
         [MethodImpl(MethodImplOptions.NoInlining)]
         private bool HandleEvents<TDense>(
             ref TDense dense, in HermiteSegment hermite, in FlightState end, in StateDerivative endDerivative, int piece, FlightEventKinds stopAt,
-            bool implicitPiece, int count)
+            bool implicitPiece, int count, bool rests = false, bool mayLeave = false)
             where TDense : struct, IDenseOutput
         {
             Span<FlightEvent> found = _scratch;
@@ -219,15 +219,18 @@ namespace MagnusBall.Flight
                 }
             }
 
+            // A piece of a roll (RollPiece) is searched as a piece of flight is, less the surface it rolls on.
+            bool rolling = _now.Phase == FlightPhase.Rolling;
             double contactTime = double.PositiveInfinity;
-            if (Contact != null && dense.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, false, out double t))
+            if (Contact != null && (!rolling || _now.RollShape >= 0) &&
+                dense.TryFindCrossing(_contactPlane, CrossingDirection.AgainstNormal, false, out double t))
             {
                 contactTime = t;
             }
 
             int shapeIndex = -1;
             Vector3d shapeNormal = default;
-            if (_shapes != null && FindShapeContact(hermite, -1, out double shapeTime, out shapeIndex, out shapeNormal))
+            if (_shapes != null && FindShapeContact(hermite, rolling ? _now.RollShape : -1, out double shapeTime, out shapeIndex, out shapeNormal))
             {
                 if (shapeTime < contactTime)
                 {
@@ -236,6 +239,19 @@ namespace MagnusBall.Flight
                 else
                 {
                     shapeIndex = -1; // the ground comes first
+                }
+            }
+
+            // A ball rolling on a shape leaves it over an edge (unless it touches something first).
+            bool leaves = false;
+            if (mayLeave)
+            {
+                double leave = LeaveTime(hermite);
+                if (leave < contactTime)
+                {
+                    contactTime = leave;
+                    shapeIndex = -1;
+                    leaves = true;
                 }
             }
 
@@ -268,12 +284,27 @@ namespace MagnusBall.Flight
             if (double.IsPositiveInfinity(contactTime))
             {
                 Continue(hermite, end, endDerivative, implicitPiece);
+                if (rests)
+                {
+                    Rest(end);
+                }
+
                 return true;
             }
 
-            return shapeIndex >= 0
-                ? ShapeContact(hermite, contactTime, shapeIndex, shapeNormal, stopAt)
-                : Bounce(ref dense, hermite, contactTime, piece, stopAt);
+            if (leaves)
+            {
+                return LeaveShape(hermite, contactTime);
+            }
+
+            if (shapeIndex >= 0)
+            {
+                return rolling
+                    ? RollContact(hermite, contactTime, shapeIndex, shapeNormal, stopAt)
+                    : ShapeContact(hermite, contactTime, shapeIndex, shapeNormal, stopAt);
+            }
+
+            return Bounce(ref dense, hermite, contactTime, piece, stopAt);
         }
 
         private bool Bounce<TDense>(ref TDense dense, in HermiteSegment hermite, double contactTime, int piece, FlightEventKinds stopAt)
@@ -315,6 +346,7 @@ namespace MagnusBall.Flight
                 return true;
             }
 
+            _now.Phase = FlightPhase.Flying; // also for a ball that rolled off a shape onto the ground
             _now.State = leaving;
             _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
             _now.Evaluations++;

@@ -45,6 +45,7 @@ namespace MagnusBall.Flight
             _now.RollPlane = plane;
             _now.RollDeceleration = deceleration;
             _now.RollCanRest = canRest;
+            _now.RollWall = -1;
             // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
             Vector3d normal = plane.Normal;
             double radius = Model.Ball.Radius, alpha = Model.Ball.InertiaFactor;
@@ -62,7 +63,7 @@ namespace MagnusBall.Flight
         // in still air), with the stop located inside it where the speed along the motion reaches zero; cut at the first shape it
         // touches or the edge where it leaves the shape it rolls on. False, with nothing committed to the segments, when a state or
         // derivative of the roll would not be finite (the caller refuses the step).
-        private bool RollPiece(double endTime, FlightEventKinds stopAt)
+        private bool RollPiece(double endTime, int piece, FlightEventKinds stopAt)
         {
             if (!(_now.State.Time < endTime))
             {
@@ -117,30 +118,62 @@ namespace MagnusBall.Flight
                 return false;
             }
 
-            if (end.Time > s0.Time && _shapes != null)
+            if (_now.RollWall >= 0 && !rests)
             {
-                var segment = new HermiteSegment(s0, _now.Derivative, end, endDerivative);
-                double leave = _now.RollShape >= 0 ? LeaveTime(segment) : double.PositiveInfinity;
-                if (FindShapeContact(segment, _now.RollShape, out double touch, out int index, out Vector3d touchNormal) && touch <= leave)
-                {
-                    return RollContact(segment, touch, index, touchNormal, stopAt);
-                }
+                KeepAlongTheWall(ref end, ref endDerivative);
+            }
 
-                if (leave <= segment.EndTime)
+            // On a shape: where the rolled end is off the shape's surface (a curved shape, or past an edge), the ball stays on it
+            // while the shape falls away no faster than the ball falls (its free path from the piece's start ends on or in the
+            // shape): it is put back on the surface and rolls on from its tangent plane there; otherwise it leaves the shape
+            // within the piece (HandleEvents locates where).
+            Vector3d reanchor = Vector3d.Zero;
+            bool mayLeave = false;
+            if (_now.RollShape >= 0 && !rests && end.Time > s0.Time)
+            {
+                ContactShape rolledOn = _shapes![_now.RollShape];
+                double radius = Model.Ball.Radius;
+                double gap = rolledOn.SignedDistance(end.Position, out Vector3d surfaceNormal) - radius;
+                bool stays = gap < -LeaveGapM;
+                if (gap > LeaveGapM)
                 {
-                    // Over the edge: it flies from where it left the shape.
-                    if (!segment.TryUntil(leave, out HermiteSegment cut))
-                    {
-                        return false;
-                    }
-
-                    PushSegment(cut);
-                    _now.Phase = FlightPhase.Flying;
-                    _now.State = segment.StateAt(leave);
-                    _now.Derivative = FlightKernel.DerivativeOf(Model, _now.State);
+                    Vector3d free = s0.Position + v0 * h + FlightKernel.DerivativeOf(Model, s0).Acceleration * (0.5 * h * h);
                     _now.Evaluations++;
-                    return _now.State.IsFinite;
+                    stays = !(rolledOn.SignedDistance(free, out _) - radius > 0);
+                    mayLeave = !stays;
                 }
+
+                if (stays && Vector3d.Dot(Model.Gravity, surfaceNormal) < 0)
+                {
+                    double off = Vector3d.Dot(end.Velocity, surfaceNormal);
+                    end = new FlightState(end.Position - surfaceNormal * gap, end.Velocity - surfaceNormal * off, end.AngularVelocity, end.Time);
+                    endDerivative = new StateDerivative(end.Velocity, endDerivative.Acceleration, Vector3d.Zero);
+                    reanchor = surfaceNormal;
+                }
+                else if (stays)
+                {
+                    mayLeave = true; // gravity no longer holds it there (past the side of a ring): it leaves
+                }
+            }
+
+            if (end.Time > s0.Time && (_shapes != null || EventSet != null || (Contact != null && _now.RollShape >= 0)))
+            {
+                // The piece is searched as a piece of flight is: the events on it, the shapes it meets, the ground under a ball
+                // rolling on a shape, the edge where it leaves its shape; the first cut wins (HandleEvents, FlightStepper.Pieces.cs).
+                var segment = new HermiteSegment(s0, _now.Derivative, end, endDerivative);
+                int count = EventSet == null ? 0 : EventSet.Scan(ref segment, _scratch, false, landings: Contact == null);
+                if (!HandleEvents(ref segment, segment, end, endDerivative, piece, stopAt, implicitPiece: false, count, rests, mayLeave))
+                {
+                    return false;
+                }
+
+                if (reanchor.LengthSquared > 0 && _now.Phase == FlightPhase.Rolling && _now.State.Time == end.Time)
+                {
+                    // Nothing cut the piece: the ball rolls on from the surface's tangent plane at its end.
+                    StartRollingOnShape(_now.RollShape, _now.State, reanchor);
+                }
+
+                return _now.State.IsFinite;
             }
 
             if (end.Time > s0.Time)
@@ -156,6 +189,27 @@ namespace MagnusBall.Flight
             }
 
             return true;
+        }
+
+        // A ball rolling along a wall (RollWall): its velocity into the wall is taken away at the piece's end; where the wall no
+        // longer holds it (the wall ends, or the slope no longer presses the ball into it) it rolls free from the next piece.
+        private void KeepAlongTheWall(ref FlightState end, ref StateDerivative endDerivative)
+        {
+            Vector3d wallNormal = _now.RollWallNormal;
+            double into = Vector3d.Dot(end.Velocity, wallNormal);
+            if (into < 0)
+            {
+                end = new FlightState(end.Position, end.Velocity - wallNormal * into, end.AngularVelocity, end.Time);
+                endDerivative = new StateDerivative(end.Velocity, endDerivative.Acceleration, Vector3d.Zero);
+            }
+
+            Vector3d normal = _now.RollPlane.Normal;
+            Vector3d g = Model.Gravity - normal * Vector3d.Dot(Model.Gravity, normal);
+            double gap = _shapes![_now.RollWall].SignedDistance(end.Position, out _) - Model.Ball.Radius;
+            if (gap > LeaveGapM || Vector3d.Dot(g, wallNormal) >= 0)
+            {
+                _now.RollWall = -1;
+            }
         }
 
         // Where the rolling ball stops inside the step: its velocity along the motion reaches zero after `stopAfter`.
@@ -190,7 +244,7 @@ namespace MagnusBall.Flight
             double radius = Model.Ball.Radius;
             if (!(shape.SignedDistance(segment.End.Position, out _) - radius > LeaveGapM))
             {
-                return double.PositiveInfinity;
+                return segment.EndTime; // it leaves by the piece's end (gravity no longer holds it on the shape)
             }
 
             double lo = segment.StartTime, hi = segment.EndTime;
@@ -210,6 +264,22 @@ namespace MagnusBall.Flight
             return hi;
         }
 
+        // Over the edge of the shape it rolls on at `time`: it flies from there.
+        private bool LeaveShape(in HermiteSegment segment, double time)
+        {
+            if (!segment.TryUntil(time, out HermiteSegment cut))
+            {
+                return false;
+            }
+
+            PushSegment(cut);
+            _now.Phase = FlightPhase.Flying;
+            _now.State = segment.StateAt(time);
+            _now.Derivative = FlightKernel.DerivativeOf(Model, _now.State);
+            _now.Evaluations++;
+            return _now.State.IsFinite;
+        }
+
         // The rolling ball touches shape `index` at `time`: the shape answers it (Contact.Impact); it rolls on from there on the same
         // surface, or flies where the answer sends it off the surface faster than the rest speed. A slow touch into a shape that the
         // rolling ball is pressed against (a wall at the foot of a slope) ends the flight at rest against it.
@@ -227,12 +297,37 @@ namespace MagnusBall.Flight
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
             double approach = -Vector3d.Dot(touching.Velocity, normal);
             Vector3d pressed = RollingAcceleration(touching);
-            if (approach < restSpeed && Vector3d.Dot(pressed, normal) < 0)
+            if (approach < restSpeed && Vector3d.Dot(pressed, normal) < 0 && (stopAt & FlightEventKinds.Contact) == 0)
             {
-                var against = new FlightState(touching.Position, Vector3d.Zero, touching.AngularVelocity, time);
-                Write(new FlightEvent(shape.Id, touching, against, BounceRegime.None, normal, startsRolling: false));
-                Rest(against);
-                return true;
+                // Pressed slowly into the shape (a wall at the foot of a slope): it rests against it, or, moving along it faster than
+                // the rest speed, rolls on along it (the wall holds it: its acceleration into the wall is taken away).
+                Vector3d along = touching.Velocity + normal * approach;
+                Vector3d surfaceNormal = _now.RollPlane.Normal;
+                if (along.Length < restSpeed)
+                {
+                    var against = new FlightState(touching.Position, Vector3d.Zero, surfaceNormal * Vector3d.Dot(touching.AngularVelocity, surfaceNormal), time);
+                    Write(new FlightEvent(shape.Id, touching, against, BounceRegime.None, normal, startsRolling: false));
+                    Rest(against);
+                    return true;
+                }
+
+                StartRollingOn(
+                    _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, along, touching.AngularVelocity, time);
+                _now.RollWall = index;
+                _now.RollWallNormal = normal;
+                // The roll's velocity (its spin's share included) along the wall only.
+                Vector3d rollingVelocity = _now.State.Velocity;
+                double intoWall = Vector3d.Dot(rollingVelocity, normal);
+                if (intoWall < 0)
+                {
+                    rollingVelocity -= normal * intoWall;
+                }
+
+                Vector3d spinNormal = surfaceNormal * Vector3d.Dot(touching.AngularVelocity, surfaceNormal);
+                _now.State = new FlightState(touching.Position, rollingVelocity, RollingSpin(rollingVelocity, spinNormal), time);
+                _now.Derivative = new StateDerivative(_now.State.Velocity, RollingAcceleration(_now.State), Vector3d.Zero);
+                Write(new FlightEvent(shape.Id, touching, _now.State, BounceRegime.None, normal, startsRolling: false));
+                return _now.State.IsFinite && _now.Derivative.IsFinite;
             }
 
             ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
@@ -275,6 +370,15 @@ namespace MagnusBall.Flight
 
             Vector3d normal = _now.RollPlane.Normal;
             Vector3d tangential = a - normal * Vector3d.Dot(a, normal);
+            if (_now.RollWall >= 0)
+            {
+                double intoWall = Vector3d.Dot(tangential, _now.RollWallNormal);
+                if (intoWall < 0)
+                {
+                    tangential -= _now.RollWallNormal * intoWall; // the wall holds the ball
+                }
+            }
+
             return tangential * (1.0 / (1 + Model.Ball.InertiaFactor)) - state.Velocity.NormalizedOrZero() * _now.RollDeceleration;
         }
 

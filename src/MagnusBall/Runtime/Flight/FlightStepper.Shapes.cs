@@ -15,7 +15,7 @@ namespace MagnusBall.Flight
         private readonly ContactShape[]? _shapes;
 
         // The earliest touch of a shape on the piece's Hermite (its time, the shape's index and normal there), the shape at index
-        // `exclude` (the one the ball rolls on, or -1) left out; false when none.
+        // `exclude` (the one the ball rolls on, or -1) and a wall the ball rolls along left out; false when none.
         private bool FindShapeContact(in HermiteSegment hermite, int exclude, out double time, out int index, out Vector3d normal)
         {
             time = double.PositiveInfinity;
@@ -43,12 +43,12 @@ namespace MagnusBall.Flight
             double tolerance = HermiteSegment.TimeTolerance / h;
             for (int i = 0; i < shapes.Length; i++)
             {
-                if (i == exclude || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
+                if (i == exclude || (i == _now.RollWall && _now.Phase == FlightPhase.Rolling) || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
                 {
                     continue;
                 }
 
-                if (ShapeSweep.FirstContact(shapes[i], b0, b1, b2, b3, radius, tolerance, out double s, out Vector3d n) && s < best)
+                if (ShapeSweep.FirstContact(shapes[i], b0, b1, b2, b3, radius, tolerance, ShapeSweep.MinApproachSpeed * h, out double s, out Vector3d n) && s < best)
                 {
                     best = s;
                     index = i;

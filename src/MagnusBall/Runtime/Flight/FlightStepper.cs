@@ -520,6 +520,10 @@ namespace MagnusBall.Flight
             public Plane RollPlane;
             public double RollDeceleration;
             public bool RollCanRest;
+
+            // A shape the rolling ball rolls along, pressed against it (a wall at the foot of a slope), and its normal; -1 for none.
+            public int RollWall;
+            public Vector3d RollWallNormal;
         }
     }
 }

@@ -14,8 +14,9 @@ namespace MagnusBall.Components
     /// <c>BoxCollider</c> becomes a <see cref="BoxShape"/> (its centre and its three half-size axes through the transform, which
     /// must keep them square: no skew from a non-uniform parent scale under rotation), a <c>CapsuleCollider</c> a
     /// <see cref="CapsuleShape"/> (its axis through the transform, whose scale must be the same in the two directions across the
-    /// axis). Anything else is skipped with a warning (Debug.LogWarning) naming it and why: a <c>SphereCollider</c> (the
-    /// library has no sphere shape), a capsule no longer than its diameter (a sphere), a mesh collider, a skewed box.
+    /// axis), a <c>SphereCollider</c> (and a capsule no longer than its diameter, which Unity makes a sphere) a
+    /// <see cref="SphereShape"/> (its transform must scale it the same along all three axes). Anything else is skipped with a
+    /// warning (Debug.LogWarning) naming it and why: a mesh collider, a skewed box, a sphere scaled unevenly.
     /// </summary>
     public static class ColliderShapes
     {
@@ -115,12 +116,11 @@ namespace MagnusBall.Components
                         return null;
                     }
 
-                    // Unity's capsule: height is end to end, round caps included; below twice the radius it is a sphere.
+                    // Unity's capsule: height is end to end, round caps included; up to twice the radius it is a sphere.
                     double halfLine = 0.5 * capsule.height - capsule.radius;
                     if (!(halfLine > 0))
                     {
-                        why = "the capsule is no longer than its diameter (a sphere), and MagnusBall has no sphere shape";
-                        return null;
+                        return Sphere(t, c, capsule.radius, contact, id, out why);
                     }
 
                     Vector3d a = World(t, Offset(c, axis, -(float)halfLine)), b = World(t, Offset(c, axis, (float)halfLine));
@@ -128,13 +128,35 @@ namespace MagnusBall.Components
                     return new CapsuleShape(id, a, b, radius, contact);
                 }
 
-                case SphereCollider _:
-                    why = "MagnusBall has no sphere shape (MagnusBall.Contact.Shapes: box, capsule, cylinder, torus, net mesh)";
-                    return null;
+                case SphereCollider sphere:
+                    return Sphere(t, sphere.center, sphere.radius, contact, id, out why);
                 default:
-                    why = $"a {collider.GetType().Name} has no exact MagnusBall shape (boxes and capsules do)";
+                    why = $"a {collider.GetType().Name} has no exact MagnusBall shape (boxes, capsules and spheres do)";
                     return null;
             }
+        }
+
+        // A sphere of local radius `radius` at local point c: exact where the transform scales all three axes alike (Unity scales
+        // an unevenly scaled sphere collider by one of its scales; that choice is not matched here).
+        private static ContactShape? Sphere(Transform t, Vector3 c, float radius, ContactProperties contact, int id, out string? why)
+        {
+            why = null;
+            if (!(radius > 0))
+            {
+                why = "a sphere's radius must be > 0";
+                return null;
+            }
+
+            Vector3d centre = World(t, c);
+            Vector3d x = World(t, Offset(c, 0, radius)) - centre, y = World(t, Offset(c, 1, radius)) - centre, z = World(t, Offset(c, 2, radius)) - centre;
+            double r = x.Length;
+            if (!(r > 0) || Math.Abs(y.Length - r) > Tolerance * r || Math.Abs(z.Length - r) > Tolerance * r || !Square(x, y) || !Square(y, z) || !Square(x, z))
+            {
+                why = "its transform scales the sphere differently along its axes (it would be an ellipsoid); MagnusBall's SphereShape is round";
+                return null;
+            }
+
+            return new SphereShape(id, centre, r, contact);
         }
 
         private static Vector3d World(Transform t, Vector3 local) => UnityFrame.ToLibrary(t.TransformPoint(local));

@@ -90,10 +90,10 @@ namespace MagnusBall.Components
 
         /// <summary>
         /// The scene's colliders the ball hits in flight (walls, boards, posts): each becomes a MagnusBall contact shape where the
-        /// match is exact (BoxCollider: a box, CapsuleCollider: a capsule; see <see cref="ColliderShapes"/>), with id its index
+        /// match is exact (BoxCollider: a box, CapsuleCollider: a capsule, SphereCollider: a sphere; see <see cref="ColliderShapes"/>), with id its index
         /// here; others are skipped with a warning. Read at <see cref="ApplySettings"/>: move a collider, apply again.
         /// </summary>
-        [Tooltip("Colliders the ball hits in flight: boxes and capsules become exact MagnusBall shapes (id = index); others are skipped with a warning.")]
+        [Tooltip("Colliders the ball hits in flight: boxes, capsules and spheres become exact MagnusBall shapes (id = index); others are skipped with a warning.")]
         public List<Collider> shapeColliders = new List<Collider>();
 
         /// <summary>The normal restitution of a hit on a collider's shape, in [0, 1].</summary>

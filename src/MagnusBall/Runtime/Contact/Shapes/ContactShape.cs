@@ -1,4 +1,4 @@
-// ContactShape: the base of every shape a flight can hit (box, capsule, cylinder, torus, net mesh): its id, contact
+// ContactShape: the base of every shape a flight can hit (box, capsule, cylinder, sphere, torus, net mesh): its id, contact
 // parameters and effective mass, its signed distance (the one geometric question the sweep asks) and its bounding box.
 // The search for the first touch along a step is ShapeSweep.cs; the response is Respond, through Contact.Impact.
 using System;
@@ -55,9 +55,23 @@ namespace MagnusBall.Contact.Shapes
         /// shape's outward normal there being <paramref name="normal"/>: <see cref="Impact.Resolve(Ball, in Vector3d, in Vector3d, in Vector3d, in ImpactBody, in ContactProperties)"/>
         /// with a body at rest of mass <see cref="EffectiveMassKg"/>.
         /// </summary>
-        internal virtual ImpactOutcome Respond(Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in Vector3d normal) =>
-            Impact.Resolve(ball, position, velocity, angularVelocity,
+        /// <remarks>A shape lighter than the ball's mass over its restitution would be pushed along, the ball still moving into
+        /// it; a shape here stays where it is, so it gives way by taking the ball's remaining speed into it: the ball leaves along
+        /// its surface (no energy is added; without this the ball would touch it again at once, and again).</remarks>
+        internal virtual ImpactOutcome Respond(Ball ball, in Vector3d position, in Vector3d velocity, in Vector3d angularVelocity, in Vector3d normal)
+        {
+            ImpactOutcome hit = Impact.Resolve(ball, position, velocity, angularVelocity,
                 new ImpactBody(position - normal * ball.Radius, Vector3d.Zero, Vector3d.Zero, normal, EffectiveMassKg), Contact);
+            double into = Vector3d.Dot(hit.Velocity, normal);
+            if (!(into < 0) || hit.Regime == BounceRegime.None)
+            {
+                return hit;
+            }
+
+            Vector3d along = hit.Velocity - normal * into;
+            return new ImpactOutcome(
+                along, hit.AngularVelocity, (along - velocity) * ball.Mass, hit.Regime, hit.NormalRestitution, hit.IncomingNormalSpeed, hit.BodyVelocityChange);
+        }
 
         /// <summary>A checked finite point or vector.</summary>
         private protected static Vector3d Finite(in Vector3d value, string name) => Require.Finite(value, name);

@@ -15,6 +15,12 @@ namespace MagnusBall.Contact.Shapes
         /// </summary>
         internal const double LeafSizeM = 1e-7;
 
+        /// <summary>
+        /// A touch counts only where the ball approaches the shape faster than this, m/s: a ball sliding along a surface it
+        /// touches (its speed into it rounding's) is not hit again and again by rounding.
+        /// </summary>
+        internal const double MinApproachSpeed = 1e-9;
+
         /// <summary>The most pieces one search looks at (a path that skims a surface within rounding for a whole step ends here, as a miss).</summary>
         internal const int MaxVisits = 4096;
 
@@ -30,13 +36,14 @@ namespace MagnusBall.Contact.Shapes
         /// <summary>
         /// The first fraction s in (0, 1] of the path B(s) (Bezier control points b0..b3) at which a ball of radius
         /// <paramref name="radius"/> touches <paramref name="shape"/> while approaching it (the centre's distance to the shape's
-        /// surface reaches the radius, moving inward), to <paramref name="fractionTolerance"/>.
+        /// surface reaches the radius, moving inward faster than <paramref name="minApproach"/> in path units per unit of s), to
+        /// <paramref name="fractionTolerance"/>.
         /// </summary>
         internal static bool FirstContact(
             ContactShape shape, in Vector3d b0, in Vector3d b1, in Vector3d b2, in Vector3d b3, double radius, double fractionTolerance,
-            out double fraction, out Vector3d normal)
+            double minApproach, out double fraction, out Vector3d normal)
         {
-            var search = new Search(shape, b0, b1, b2, b3, radius, fractionTolerance);
+            var search = new Search(shape, b0, b1, b2, b3, radius, fractionTolerance, minApproach);
             bool found = search.Visit(b0, b1, b2, b3, 0, 1);
             fraction = search.Fraction;
             normal = search.Normal;
@@ -63,13 +70,14 @@ namespace MagnusBall.Contact.Shapes
         {
             private readonly ContactShape _shape;
             private readonly Vector3d _b0, _b1, _b2, _b3;
-            private readonly double _radius, _tolerance;
+            private readonly double _radius, _tolerance, _minApproach;
             private int _visits;
             public double Fraction;
             public Vector3d Normal;
 
-            public Search(ContactShape shape, in Vector3d b0, in Vector3d b1, in Vector3d b2, in Vector3d b3, double radius, double tolerance)
+            public Search(ContactShape shape, in Vector3d b0, in Vector3d b1, in Vector3d b2, in Vector3d b3, double radius, double tolerance, double minApproach)
             {
+                _minApproach = minApproach;
                 _shape = shape;
                 _b0 = b0;
                 _b1 = b1;
@@ -165,7 +173,7 @@ namespace MagnusBall.Contact.Shapes
             {
                 Vector3d p = PointAt(_b0, _b1, _b2, _b3, s);
                 double gap = _shape.SignedDistance(p, out normal) - _radius;
-                return gap <= 0 && Vector3d.Dot(TangentAt(_b0, _b1, _b2, _b3, s), normal) < 0;
+                return gap <= 0 && Vector3d.Dot(TangentAt(_b0, _b1, _b2, _b3, s), normal) < -_minApproach;
             }
         }
     }
