@@ -1,0 +1,142 @@
+using System;
+using System.Globalization;
+using System.Linq;
+using MagnusBall.Aerodynamics;
+using MagnusBall.Presets;
+using MagnusBall.Tests.Presets;
+using NUnit.Framework;
+
+namespace MagnusBall.Tests.Aerodynamics
+{
+    /// <summary>
+    /// The table-tennis laws (<see cref="ContiTableTennisDrag"/>, <see cref="ContiTableTennisLift"/>; Conti et al. 2026,
+    /// arXiv:2606.28805, second-hand): their source's table (data/coefficients/conti-2026-table-tennis-*.csv), continuity,
+    /// bounds, the lift's valley, and a spinning shot that dips with topspin and floats with backspin.
+    /// </summary>
+    [TestFixture]
+    public class TableTennisCoefficientTests
+    {
+        private static double D(string s) => double.Parse(s, CultureInfo.InvariantCulture);
+
+        [Test]
+        public void Drag_IsItsSourceTable()
+        {
+            var rows = SourceDataTests.ReadCsv("conti-2026-table-tennis-drag.csv");
+            Assert.That(rows.Count, Is.EqualTo(24), "4 speeds x 6 spin parameters");
+            // The source prints its C_D to two decimals and states no scatter here (second-hand); the law interpolates
+            // its table, so at the knots it must be the table (1e-12: rounding of the interpolation only).
+            foreach (string[] r in rows)
+            {
+                Assert.That(ContiTableTennisDrag.Evaluate(D(r[0]), D(r[1])), Is.EqualTo(D(r[2])).Within(1e-12), $"{r[0]} m/s, S {r[1]}");
+            }
+        }
+
+        [Test]
+        public void Lift_IsItsSourceFit_AwayFromTheBreakpoints_AndWithinTheFitsJumpAtThem()
+        {
+            var rows = SourceDataTests.ReadCsv("conti-2026-table-tennis-magnus.csv");
+            Assert.That(rows.Count, Is.EqualTo(6));
+            for (int i = 0; i < rows.Count; i++)
+            {
+                string[] r = rows[i];
+                double speed = D(r[0]), slope = D(r[1]), intercept = D(r[2]), breakpoint = D(r[3]);
+                double a = D(r[4]), b = D(r[5]), c = D(r[6]);
+                Assert.That(ContiTableTennisLift.RowSpeed(i), Is.EqualTo(speed));
+                Assert.That(ContiTableTennisLift.Breakpoint(i), Is.EqualTo(breakpoint));
+                double largestJump = 0;
+                for (double w = 0; w <= 1200; w += 5)
+                {
+                    double source = Math.Max(0, w <= breakpoint ? slope * w + intercept : (a * w + b) * w + c);
+                    double law = ContiTableTennisLift.MagnusCoefficient(speed, w);
+                    if (Math.Abs(w - breakpoint) >= ContiTableTennisLift.BlendHalfWidth)
+                    {
+                        Assert.That(law, Is.EqualTo(source).Within(1e-12), $"{speed} m/s, {w} rad/s");
+                    }
+                    else
+                    {
+                        largestJump = Math.Max(largestJump, Math.Abs(law - source));
+                    }
+                }
+
+                // Inside the blend the law sits between the fit's two branches, so it differs from the fit by less
+                // than the fit's own jump at the breakpoint (at most 0.022 in C_M over the six rows).
+                Assert.That(largestJump, Is.LessThanOrEqualTo(0.023), $"{speed} m/s");
+            }
+        }
+
+        [Test]
+        public void BothLaws_AreContinuous_Bounded_AndNeverNaN()
+        {
+            double largestLiftStep = 0, largestDragStep = 0;
+            foreach (double speed in new[] { 0.0, 1e-9, 0.5, 2, 5, 7.5, 11, 13.5, 17, 25, 300 })
+            {
+                double previousLift = double.NaN, previousDrag = double.NaN;
+                for (double w = 0; w <= 3000; w += 0.5)
+                {
+                    var c = new AeroConditions(speed, w, w, 0.02, 1.225, Air.SeaLevel.DynamicViscosity);
+                    double cl = ContiTableTennisLift.Instance.LiftCoefficient(c), cd = ContiTableTennisDrag.Instance.DragCoefficient(c);
+                    Assert.That(cl, Is.InRange(0, ContiTableTennisLift.Largest), $"C_L at {speed} m/s, {w} rad/s");
+                    Assert.That(cd, Is.InRange(0.37, ContiTableTennisDrag.Largest), $"C_D at {speed} m/s, {w} rad/s");
+                    if (speed >= 0.5 && !double.IsNaN(previousLift))
+                    {
+                        largestLiftStep = Math.Max(largestLiftStep, Math.Abs(cl - previousLift));
+                        largestDragStep = Math.Max(largestDragStep, Math.Abs(cd - previousDrag));
+                    }
+
+                    previousLift = cl;
+                    previousDrag = cd;
+                }
+            }
+
+            // Continuity: over 0.5 rad/s steps neither coefficient moves by more than a slope's worth (C_L's steepest
+            // slope, (8/3) C_M r / s at 0.5 m/s with C_M 0.08, is 0.0085 per rad/s, so 0.005 per step; a jump of the fit's
+            // 0.022 in C_M would be (8/3) x 0.022 x S, 0.06 at S 1).
+            TestContext.Out.WriteLine($"largest step in 0.5 rad/s: C_L {largestLiftStep:G3}, C_D {largestDragStep:G3}");
+            Assert.That(largestLiftStep, Is.LessThan(0.005));
+            Assert.That(largestDragStep, Is.LessThan(0.005));
+
+            // S infinite (speed underflowing against the spin), NaN inputs: 0, never NaN.
+            Assert.That(ContiTableTennisLift.Evaluate(0.0, 300, double.PositiveInfinity), Is.EqualTo(0));
+            Assert.That(ContiTableTennisLift.Evaluate(double.NaN, double.NaN, double.NaN), Is.EqualTo(0));
+            Assert.That(ContiTableTennisLift.Evaluate(1.7976931348623157E+308, double.PositiveInfinity, double.PositiveInfinity), Is.EqualTo(0));
+            Assert.That(ContiTableTennisDrag.Evaluate(double.NaN, double.NaN), Is.EqualTo(0.55));
+            Assert.That(ContiTableTennisDrag.Evaluate(10, double.PositiveInfinity), Is.EqualTo(ContiTableTennisDrag.Evaluate(10, 2)));
+        }
+
+        [Test]
+        public void Lift_HasTheValleyOfTheLiftCrisis()
+        {
+            // At 13.5 m/s (one of the source's rows) C_L rises with spin to a peak, falls, and rises again: the valley
+            // Miyazaki et al. (2017) measured in flight. Checked for its shape (their numbers were not available here).
+            double Cl(double w) => ContiTableTennisLift.Evaluate(13.5, w, 0.02 * w / 13.5);
+            double[] w = Enumerable.Range(1, 120).Select(i => 10.0 * i).ToArray();
+            double[] cl = w.Select(Cl).ToArray();
+            int peak = Array.IndexOf(cl, cl.Take(60).Max());
+            double[] after = cl.Skip(peak).Take(60 - peak).ToArray();
+            int valley = peak + Array.IndexOf(after, after.Min());
+            TestContext.Out.WriteLine($"13.5 m/s: C_L peak {cl[peak]:F3} at S {0.02 * w[peak] / 13.5:F2}, valley {cl[valley]:F3} at S {0.02 * w[valley] / 13.5:F2}, {Cl(1000):F3} at S {0.02 * 1000 / 13.5:F2}");
+            Assert.That(cl[valley], Is.LessThan(cl[peak] - 0.03));
+            Assert.That(Cl(1000), Is.GreaterThan(cl[valley] + 0.03));
+        }
+
+        [Test]
+        public void SpinningShot_TopspinDips_BackspinFloats()
+        {
+            // A 10 m/s drive at 8 deg from 0.25 m above the table, 60 rev/s (S about 0.75 at launch): with topspin the
+            // Magnus force points down and the ball lands shorter and flies lower than without spin; with backspin it
+            // points up and the ball carries further (Conti et al.'s C_L is positive at every spin, so the signs follow).
+            FlightModel model = SportPresets.TableTennis.CreateModel(Air.SeaLevel, Gravity.ZUp);
+            var up = Vector3d.UnitZ;
+            var downrange = Vector3d.UnitX;
+            double w = Spin.FromRevolutionsPerSecond(60);
+            ShotOutcome top = ShotFlight.Fly(model, ShotFlight.Launch(up, downrange, 0.25, 10, 8, v => Spin.Topspin(v, up, w)));
+            ShotOutcome flat = ShotFlight.Fly(model, ShotFlight.Launch(up, downrange, 0.25, 10, 8, v => Vector3d.Zero));
+            ShotOutcome back = ShotFlight.Fly(model, ShotFlight.Launch(up, downrange, 0.25, 10, 8, v => Spin.Backspin(v, up, w)));
+            TestContext.Out.WriteLine($"table tennis 10 m/s, 8 deg, 60 rev/s: topspin lands {top.Landing.X:F2} m (apex {top.Apex:F3} m), flat {flat.Landing.X:F2} m (apex {flat.Apex:F3} m), backspin {back.Landing.X:F2} m (apex {back.Apex:F3} m)");
+            Assert.That(top.Landing.X, Is.LessThan(flat.Landing.X));
+            Assert.That(top.Apex, Is.LessThan(flat.Apex));
+            Assert.That(back.Landing.X, Is.GreaterThan(flat.Landing.X));
+            Assert.That(back.Apex, Is.GreaterThan(flat.Apex));
+        }
+    }
+}
