@@ -158,5 +158,51 @@ namespace MagnusBall.Tests.Aerodynamics
             // is bridged to the trajectory points, nearly flat (0.29 -> 0.285 at 0.49).
             Assert.That(lift.Evaluate(0.4), Is.InRange(0.285, 0.29));
         }
+
+        [Test]
+        public void TableTennisDrag_IsItsSourceTable()
+        {
+            var rows = ReadCsv("conti-2026-table-tennis-drag.csv");
+            Assert.That(rows.Count, Is.EqualTo(24), "4 speeds x 6 spin parameters");
+            // The source prints its C_D to two decimals and states no scatter here (second-hand); the law interpolates
+            // its table, so at the knots it must be the table (1e-12: rounding of the interpolation only).
+            foreach (string[] r in rows)
+            {
+                Assert.That(ContiTableTennisDrag.Evaluate(D(r[0]), D(r[1])), Is.EqualTo(D(r[2])).Within(1e-12), $"{r[0]} m/s, S {r[1]}");
+            }
+        }
+
+        [Test]
+        public void TableTennisLift_IsItsSourceFit_AwayFromTheBreakpoints_AndWithinTheFitsJumpAtThem()
+        {
+            var rows = ReadCsv("conti-2026-table-tennis-magnus.csv");
+            Assert.That(rows.Count, Is.EqualTo(6));
+            for (int i = 0; i < rows.Count; i++)
+            {
+                string[] r = rows[i];
+                double speed = D(r[0]), slope = D(r[1]), intercept = D(r[2]), breakpoint = D(r[3]);
+                double a = D(r[4]), b = D(r[5]), c = D(r[6]);
+                Assert.That(ContiTableTennisLift.RowSpeed(i), Is.EqualTo(speed));
+                Assert.That(ContiTableTennisLift.Breakpoint(i), Is.EqualTo(breakpoint));
+                double largestJump = 0;
+                for (double w = 0; w <= 1200; w += 5)
+                {
+                    double source = Math.Max(0, w <= breakpoint ? slope * w + intercept : (a * w + b) * w + c);
+                    double law = ContiTableTennisLift.MagnusCoefficient(speed, w);
+                    if (Math.Abs(w - breakpoint) >= ContiTableTennisLift.BlendHalfWidth)
+                    {
+                        Assert.That(law, Is.EqualTo(source).Within(1e-12), $"{speed} m/s, {w} rad/s");
+                    }
+                    else
+                    {
+                        largestJump = Math.Max(largestJump, Math.Abs(law - source));
+                    }
+                }
+
+                // Inside the blend the law sits between the fit's two branches, so it differs from the fit by less
+                // than the fit's own jump at the breakpoint (at most 0.022 in C_M over the six rows).
+                Assert.That(largestJump, Is.LessThanOrEqualTo(0.023), $"{speed} m/s");
+            }
+        }
     }
 }

@@ -144,7 +144,7 @@ namespace MagnusBall.Tests.Integration
 
             return model.Lift is StepanekLift && model.Air.WindProfile == null &&
                 (model.Drag == null || model.Drag is ConstantDrag || model.Drag is StepanekDrag || model.Drag is LinearSpinDrag ||
-                 model.Drag is NathanBaseballDrag || model.Drag is GoffCarreSoccerDrag);
+                 model.Drag is NathanBaseballDrag || model.Drag is GoffCarreSoccerDrag || model.Drag is ContiTableTennisDrag);
         }
 
         // Seeded states across a game's range and past it: speeds 1e-3 to 1e3 m/s, spins to 600 rad/s in any direction,

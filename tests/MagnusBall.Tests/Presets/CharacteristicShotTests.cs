@@ -149,7 +149,7 @@ namespace MagnusBall.Tests.Presets
         }
 
         [Test]
-        public void TableTennis_TopspinDrive_DipsOntoTheTable_TheFlatOneGoesLong()
+        public void TableTennis_TopspinDrive_Dips_TheFlatOneGoesLong()
         {
             // ITTF table: 2.74 m long, net 1.37 m from each end. Shot: 15 m/s at 5 deg from 0.3 m above the
             // table over the server's end line; 100 rev/s (6000 rpm) of topspin, a strong loop. The documented
@@ -160,7 +160,13 @@ namespace MagnusBall.Tests.Presets
                 v => Spin.Topspin(v, ZUp, Spin.FromRevolutionsPerSecond(100))));
             ShotOutcome flat = ShotFlight.Fly(model, ShotFlight.Launch(ZUp, Downrange, 0.3, 15, 5, v => Vector3d.Zero));
             TestContext.Out.WriteLine($"table tennis: loop lands at {loop.Landing.X:F2} m, flat drive at {flat.Landing.X:F2} m");
-            Assert.That(loop.Landing.X, Is.InRange(1.37, 2.74));
+            // With the preset's table-tennis coefficients (Conti et al. 2026: at this shot's S 0.84 C_L is about 0.22 and
+            // C_D about 0.43) this loop lands about 0.18 m past the end line; with the tennis lift borrowed before issue 43
+            // (C_L 0.31 there) it landed on the table. The shot is not a measured one, so it is not tuned: the checks are
+            // that topspin pulls the drive down by more than half the table's length, past the net, and that the flat
+            // drive goes long.
+            Assert.That(loop.Landing.X, Is.LessThan(flat.Landing.X - 1.37));
+            Assert.That(loop.Landing.X, Is.GreaterThan(1.37));
             Assert.That(flat.Landing.X, Is.GreaterThan(2.74));
         }
 
@@ -168,13 +174,13 @@ namespace MagnusBall.Tests.Presets
         public void TableTennis_DroppedBall_ReachesItsTerminalSpeed()
         {
             // Closed form: v_t = sqrt(2 m g / (rho A C_D(v_t))) for 2.7 g, 40 mm at 1.225 kg/m^3, with the preset's
-            // speed-dependent C_D (Mencke et al. 2020's logistic) solved by fixed-point iteration: about 8.44 m/s.
+            // speed-dependent C_D without spin (Conti et al. 2026's table) solved by fixed-point iteration: about 8.4 m/s.
             FlightModel model = SportPresets.TableTennis.CreateModel(Air.SeaLevel, Gravity.ZUp);
             ShotOutcome drop = ShotFlight.Fly(model, new FlightState(new Vector3d(0, 0, 30), Vector3d.Zero, Vector3d.Zero));
             double terminal = 8;
             for (int i = 0; i < 100; i++)
             {
-                terminal = Math.Sqrt(2 * 0.0027 * Gravity.Standard / (1.225 * Math.PI * 0.02 * 0.02 * MagnusBall.Aerodynamics.GoffCarreSoccerDrag.NonSpinning(terminal)));
+                terminal = Math.Sqrt(2 * 0.0027 * Gravity.Standard / (1.225 * Math.PI * 0.02 * 0.02 * MagnusBall.Aerodynamics.ContiTableTennisDrag.Evaluate(terminal, 0)));
             }
 
             // 0.5 %: from rest v = v_t tanh(g t / v_t); the 30 m drop takes about 4.1 s, g t / v_t = 4.7, so the

@@ -61,18 +61,52 @@ namespace MagnusBall.Tests.Validation
             return new FlightState(new Vector3d(0, l.Number("height_m"), 0), new Vector3d(l.Number("vx_mps"), l.Number("vy_mps"), vz), new Vector3d(0, wy, 0));
         }
 
-        [Test]
-        public void TableTennisLob_RangeWithinSixPercent()
+        /// <summary>
+        /// The table-tennis preset before issue 43 (removed from the library; its laws are public): the ITTF ball with the
+        /// drag Mencke et al. fly this lob with (Goff &amp; Carre's soccer logistic) and Stepanek's tennis lift.
+        /// </summary>
+        internal static SportPreset MenckeTableTennis { get; } = new SportPreset(
+            "table-tennis-mencke-2020",
+            new Ball(0.0027, 0.020, Ball.ThinShellInertiaFactor),
+            MagnusBall.Aerodynamics.GoffCarreSoccerDrag.Instance,
+            MagnusBall.Aerodynamics.StepanekLift.Instance,
+            MagnusBall.Aerodynamics.SpeedProportionalSpinDecay.TennisCrossLindsey,
+            "test only: the table-tennis preset before issue 43");
+
+        /// <summary>Flies the table-tennis lob with <paramref name="preset"/>, prints range and apex, returns the range error in %.</summary>
+        private static double LobRangeError(SportPreset preset)
         {
             JsonElement f = Flight("table_tennis_lob");
-            var (range, apex, _) = RangeAndApex(Model(SportPresets.TableTennis), Launch(f));
-            double measured = f.GetProperty("measured").Number("range_m");
-            double error = (range - measured) / measured * 100;
-            TestContext.Out.WriteLine($"table-tennis lob: range {range:F2} m (measured {measured} m, {error:+0.0;-0.0} %), apex {apex:F2} m (measured {f.GetProperty("measured").Number("apex_m")} m)");
-            // 6 %: the issue's target for this lob. The preset's drag is the law the paper itself flew this lob
-            // with, so this checks the transcription and the integration, not an independent prediction
-            // (docs/validation.md says so).
+            var (range, apex, _) = RangeAndApex(Model(preset), Launch(f));
+            JsonElement m = f.GetProperty("measured");
+            double error = (range - m.Number("range_m")) / m.Number("range_m") * 100;
+            TestContext.Out.WriteLine($"table-tennis lob, {preset.Name}: range {range:F2} m (measured {m.Number("range_m")} m, {error:+0.0;-0.0} %), apex {apex:F2} m (measured {m.Number("apex_m")} m)");
+            return error;
+        }
+
+        [Test]
+        public void TableTennisLob_ThePapersOwnDragLaw_RangeWithinSixPercent()
+        {
+            double error = LobRangeError(MenckeTableTennis);
+            // 6 %: the target an earlier issue set for this lob. This drag is the law the paper itself flew this lob with,
+            // so this checks the transcription and the integration, not an independent prediction (docs/validation.md).
             Assert.That(Math.Abs(error), Is.LessThan(6));
+        }
+
+        /// <summary>
+        /// The same lob with the <c>table-tennis</c> preset (Conti et al. 2026's coefficients, fitted to other flights): an
+        /// independent prediction, and it comes up short. The lob's track asks for a C_D near 0.3 at 12-17 m/s (the paper
+        /// flies it with a soccer ball's drag crisis), while the table-tennis fits give 0.47-0.55 without spin at these
+        /// Reynolds numbers (about 4.5e4, far below a smooth sphere's crisis near 3e5). Reported (docs/validation.md), not tuned.
+        /// </summary>
+        [Test]
+        public void TableTennisLob_ThePresetsOwnAerodynamics_ComesUpShort()
+        {
+            double error = LobRangeError(SportPresets.TableTennis);
+            // The bounds bracket what the table's no-spin C_D (0.47-0.55 at the lob's 2-17 m/s) can give: a constant 0.47
+            // flies this lob 14.4 % short and a constant 0.55 22.2 % short (one-off checks, same launch and air); outside
+            // that the law or the launch reading has changed.
+            Assert.That(error, Is.InRange(-23.0, -13.0));
         }
 
         [Test]

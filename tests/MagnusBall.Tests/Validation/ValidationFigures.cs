@@ -48,13 +48,15 @@ namespace MagnusBall.Tests.Validation
             soccer.Legend(new[] { ("#d62728", "measured (read from Fig. 10)"), ("#1f77b4", "soccer preset (Teamgeist lift table)"), ("#888", "launch direction") });
             soccer.Save(Path.Combine(dir, "validation-soccer.svg"));
 
-            // Table tennis: the no-spin lob from the side.
+            // Table tennis: the no-spin lob from the side, with the preset and with the law the paper flew it with.
             JsonElement lob = MenckeFlightTests.Flight("table_tennis_lob");
             var (_, _, lobTrack) = MenckeFlightTests.RangeAndApex(MenckeFlightTests.Model(SportPresets.TableTennis), MenckeFlightTests.Launch(lob));
-            var tt = new Plot("table-tennis preset: no-spin lob (Mencke et al. 2020, Fig. 7)", "downrange x, m", "height y, m", 0, 12, 0, 6);
+            var (_, _, paperTrack) = MenckeFlightTests.RangeAndApex(MenckeFlightTests.Model(MenckeFlightTests.MenckeTableTennis), MenckeFlightTests.Launch(lob));
+            var tt = new Plot("table tennis: no-spin lob (Mencke et al. 2020, Fig. 7)", "downrange x, m", "height y, m", 0, 12, 0, 6);
             tt.Line(lobTrack.Select(s => (s.Position.X, Math.Max(s.Position.Y, 0))), "#1f77b4", "");
+            tt.Line(paperTrack.Select(s => (s.Position.X, Math.Max(s.Position.Y, 0))), "#888", "4,3");
             tt.Points(Pairs(lob.GetProperty("measured").GetProperty("track_x_height_m")), "#d62728", "circle");
-            tt.Legend(new[] { ("#d62728", "measured (read from Fig. 7)"), ("#1f77b4", "table-tennis preset") });
+            tt.Legend(new[] { ("#d62728", "measured (read from Fig. 7)"), ("#1f77b4", "table-tennis preset (Conti et al. 2026)"), ("#888", "the paper's own law (soccer drag, before issue 43)") });
             tt.Save(Path.Combine(dir, "validation-table-tennis.svg"));
             TestContext.Out.WriteLine($"wrote {dir}/validation-{{golf,soccer,table-tennis}}.svg");
         }

@@ -220,6 +220,25 @@ namespace MagnusBall.Aerodynamics
         public double Coefficient(in AeroConditions conditions) => GoffCarreSoccerDrag.Evaluate(conditions.Speed, conditions.SpinParameter);
     }
 
+    internal readonly struct ContiTableTennisDragLaw : IDragLaw
+    {
+        public bool IsPresent => true;
+
+        public AeroInputs Reads => AeroInputs.SpinParameter;
+
+        public double Coefficient(in AeroConditions conditions) => ContiTableTennisDrag.Evaluate(conditions.Speed, conditions.SpinParameter);
+    }
+
+    internal readonly struct ContiTableTennisLiftLaw : ILiftLaw
+    {
+        public bool IsPresent => true;
+
+        public AeroInputs Reads => AeroInputs.SpinParameter;
+
+        public double Coefficient(in AeroConditions conditions) =>
+            ContiTableTennisLift.Evaluate(conditions.Speed, conditions.SpinRate, conditions.SpinParameter);
+    }
+
     internal readonly struct PiecewiseLinearLiftLaw : ILiftLaw
     {
         private readonly PiecewiseLinearLift _table;

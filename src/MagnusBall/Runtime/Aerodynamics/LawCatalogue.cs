@@ -106,6 +106,8 @@ namespace MagnusBall.Aerodynamics
                 case NathanBaseballDrag _: return visitor.Visit(default(NathanBaseballDragLaw), LawTraits.Scalar);
                 case GoffCarreSoccerDrag _: return visitor.Visit(default(GoffCarreSoccerDragLaw), LawTraits.Scalar);
                 case GolfSpinReynoldsDrag _: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar); // through its interface (reads Re)
+                // Bound: the table's largest C_D (linear interpolation stays inside its knots).
+                case ContiTableTennisDrag _: return visitor.Visit(default(ContiTableTennisDragLaw), new LawTraits(ContiTableTennisDrag.Largest, LaneForm.Scalar));
                 default: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar);
             }
         }
@@ -123,6 +125,8 @@ namespace MagnusBall.Aerodynamics
                 case NathanBaseballLift _: return visitor.Visit(default(NathanBaseballLiftLaw), LawTraits.Scalar);
                 case PiecewiseLinearLift t: return visitor.Visit(new PiecewiseLinearLiftLaw(t), LawTraits.Scalar);
                 case GolfSpinReynoldsLift _: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar); // through its interface (reads Re)
+                // Bound: (8/3) x the fit's largest C_M (0.383) x S held at 10.
+                case ContiTableTennisLift _: return visitor.Visit(default(ContiTableTennisLiftLaw), new LawTraits(ContiTableTennisLift.Largest, LaneForm.Scalar));
                 default: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar);
             }
         }
@@ -174,6 +178,7 @@ namespace MagnusBall.Aerodynamics
             NathanBaseballDrag.Instance,
             GoffCarreSoccerDrag.Instance,
             GolfSpinReynoldsDrag.BearmanHarvey,
+            ContiTableTennisDrag.Instance,
         };
 
         /// <summary>One instance of every lift law listed above.</summary>
@@ -185,6 +190,7 @@ namespace MagnusBall.Aerodynamics
             NathanBaseballLift.Instance,
             PiecewiseLinearLift.GolfSmitsSmith,
             GolfSpinReynoldsLift.BearmanHarvey,
+            ContiTableTennisLift.Instance,
         };
 
         /// <summary>One instance of every spin-decay law listed above.</summary>
