@@ -106,6 +106,7 @@ namespace MagnusBall.Aerodynamics
                 case NathanBaseballDrag _: return visitor.Visit(default(NathanBaseballDragLaw), LawTraits.Scalar);
                 case GoffCarreSoccerDrag _: return visitor.Visit(default(GoffCarreSoccerDragLaw), LawTraits.Scalar);
                 case GolfSpinReynoldsDrag _: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar); // through its interface (reads Re)
+                case GolfNaruoUsgaLaw _: return visitor.Visit(new InterfaceDrag(law), new LawTraits(GolfNaruoUsgaLaw.DragBound, LaneForm.Scalar)); // interface (reads Re)
                 default: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar);
             }
         }
@@ -123,6 +124,7 @@ namespace MagnusBall.Aerodynamics
                 case NathanBaseballLift _: return visitor.Visit(default(NathanBaseballLiftLaw), LawTraits.Scalar);
                 case PiecewiseLinearLift t: return visitor.Visit(new PiecewiseLinearLiftLaw(t), LawTraits.Scalar);
                 case GolfSpinReynoldsLift _: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar); // through its interface (reads Re)
+                case GolfNaruoUsgaLaw _: return visitor.Visit(new InterfaceLift(law), new LawTraits(GolfNaruoUsgaLaw.LiftBound, LaneForm.Scalar)); // interface (reads Re)
                 default: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar);
             }
         }
@@ -174,6 +176,7 @@ namespace MagnusBall.Aerodynamics
             NathanBaseballDrag.Instance,
             GoffCarreSoccerDrag.Instance,
             GolfSpinReynoldsDrag.BearmanHarvey,
+            GolfNaruoUsgaLaw.Instance,
         };
 
         /// <summary>One instance of every lift law listed above.</summary>
@@ -185,6 +188,7 @@ namespace MagnusBall.Aerodynamics
             NathanBaseballLift.Instance,
             PiecewiseLinearLift.GolfSmitsSmith,
             GolfSpinReynoldsLift.BearmanHarvey,
+            GolfNaruoUsgaLaw.Instance,
         };
 
         /// <summary>One instance of every spin-decay law listed above.</summary>
