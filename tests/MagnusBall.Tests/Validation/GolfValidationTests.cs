@@ -44,6 +44,14 @@ namespace MagnusBall.Tests.Validation
             return (median, worst, land, signed);
         }
 
+        /// <summary>The golf preset with <see cref="MagnusBall.Aerodynamics.GolfNaruoUsgaLaw"/> for drag and lift.</summary>
+        internal static SportPreset NaruoUsga() =>
+            SportPresets.Golf.WithDrag(MagnusBall.Aerodynamics.GolfNaruoUsgaLaw.Instance).WithLift(MagnusBall.Aerodynamics.GolfNaruoUsgaLaw.Instance);
+
+        /// <summary>Median |apex error| in % over the shots with a measured apex.</summary>
+        internal static double ApexMedian(List<(GolfShot Shot, GolfResult Result)> flights) =>
+            GolfFlights.Median(flights.Where(f => f.Shot.Apex.HasValue).Select(f => Math.Abs(f.Result.Apex - f.Shot.Apex!.Value) / f.Shot.Apex!.Value * 100));
+
         [Test]
         public void Calibration_TheSessionItWasFittedTo()
         {
@@ -68,10 +76,13 @@ namespace MagnusBall.Tests.Validation
             var s = Summary(flights);
             TestContext.Out.WriteLine($"carry |error| median {s.Median:F2} %, worst {s.Worst:F2} %; landing |error| median {s.LandMedian:F2} deg (signed {s.LandSigned:+0.00;-0.00})");
 
-            // Targets from the issue (golf developers expect about 2 %: "launch-monitor-calibrated peers reach
-            // that"): median <= 2.5 %, worst <= 8 %, landing angle median within 2 deg. A missed target is printed
-            // with its number (docs/validation.md states which are met), not hidden by a wider bound.
-            TestContext.Out.WriteLine($"target carry median <= 2.5 %: {(s.Median <= 2.5 ? "met" : "MISSED")}; worst <= 8 %: {(s.Worst <= 8 ? "met" : "MISSED")}; landing median <= 2 deg: {(s.LandMedian <= 2 ? "met" : "MISSED")}");
+            // Issue 43's targets: carry median <= 1.5 %, worst <= 5 %, landing-angle median within 1.5 deg (issue 12's, met
+            // and asserted before: median <= 2.5 %, worst <= 8 %). A missed target is printed with its number
+            // (docs/validation.md states which are met), not hidden by a wider bound.
+            TestContext.Out.WriteLine($"apex |error| median {ApexMedian(flights):F1} %");
+            TestContext.Out.WriteLine($"target carry median <= 1.5 %: {(s.Median <= 1.5 ? "met" : "MISSED")}; worst <= 5 %: {(s.Worst <= 5 ? "met" : "MISSED")}; landing median <= 1.5 deg: {(s.LandMedian <= 1.5 ? "met" : "MISSED")}");
+            Assert.That(s.Median, Is.LessThanOrEqualTo(2.5), "issue 12's target, met since");
+            Assert.That(s.Worst, Is.LessThanOrEqualTo(8), "issue 12's target, met since");
 
             // For comparison (docs/validation.md): the other golf presets on the same tour averages.
             foreach (SportPreset other in new[] { SportPresets.GolfBearmanHarvey, SportPresets.GolfLinear2023, SportPresets.GolfSmitsSmith })
@@ -80,6 +91,19 @@ namespace MagnusBall.Tests.Validation
                 var c = Summary(FlyAll(other, GolfFlights.Session()));
                 TestContext.Out.WriteLine($"{other.Name}: tour carry median {o.Median:F2} %, worst {o.Worst:F2} %, landing median {o.LandMedian:F2} deg; session carry median {c.Median:F2} %, worst {c.Worst:F2} %, landing median {c.LandMedian:F2} deg");
             }
+
+            // The law from measured coefficients only (GolfNaruoUsgaLaw: Naruo et al. 2004 in S, the USGA model's Re terms;
+            // nothing fitted to a flight), flown with the golf ball and spin decay. docs/validation.md states these numbers;
+            // the asserts are regression bounds at them plus their last printed digit.
+            SportPreset measured = NaruoUsga();
+            Print("The same tour averages with GolfNaruoUsgaLaw (measured coefficients only)", FlyAll(measured, GolfFlights.TourAverages()));
+            Print("The calibration session with GolfNaruoUsgaLaw (not fitted to it)", FlyAll(measured, GolfFlights.Session()));
+            var mt = Summary(FlyAll(measured, GolfFlights.TourAverages()));
+            var ms = Summary(FlyAll(measured, GolfFlights.Session()));
+            TestContext.Out.WriteLine($"GolfNaruoUsgaLaw (measured coefficients, not a preset): tour carry median {mt.Median:F2} %, worst {mt.Worst:F2} %, landing median {mt.LandMedian:F2} deg (signed {mt.LandSigned:+0.00;-0.00}), apex median {ApexMedian(FlyAll(measured, GolfFlights.TourAverages())):F1} %; session carry median {ms.Median:F2} %, worst {ms.Worst:F2} %, landing median {ms.LandMedian:F2} deg, apex median {ApexMedian(FlyAll(measured, GolfFlights.Session())):F1} %");
+            Assert.That(mt.Median, Is.LessThan(2.72));
+            Assert.That(mt.LandMedian, Is.LessThan(3.85));
+            Assert.That(ms.Median, Is.LessThan(1.37));
 
             // For docs/validation.md: a modern ball's trajectory-fitted law (Ferguson, McNally & McPhee 2022), flown
             // through the same harness; not a preset, printed only.
@@ -160,7 +184,8 @@ namespace MagnusBall.Tests.Validation
         /// scaled by 1-1.45 (drag rising more steeply with spin, as the issue suggests, is inside that range for these
         /// spin parameters) lands the PGA 4-iron (137 mph, 11 deg, 4836 rpm: 203 yd, apex 28 yd, 48 deg) at most 1.1
         /// deg steeper and never within 2 deg; a faster spin decay makes it flatter; only about 20 % more lift does,
-        /// and that raises the apex by about 5 yd.
+        /// and that raises the apex by about 5 yd. The law from the descent's measured coefficients
+        /// (<see cref="MagnusBall.Aerodynamics.GolfNaruoUsgaLaw"/>) lands it at 41.2 deg.
         /// </summary>
         [Test]
         public void TourLongIron_MoreDragAloneDoesNotSteepenTheLanding()
@@ -186,6 +211,11 @@ namespace MagnusBall.Tests.Validation
             GolfResult fastDecay = GolfFlights.Fly(SportPresets.Golf.WithSpinDecay(new MagnusBall.Aerodynamics.ExponentialSpinDecay(SportPresets.GolfSpinDecayTimeConstant / 2)), iron, GolfFlights.TrackManAir);
             TestContext.Out.WriteLine($"spin decay 8 %/s instead of 4 %/s: carry {fastDecay.Carry / GolfFlights.Yard:F1} yd, apex {fastDecay.Apex / GolfFlights.Yard:F1} yd, landing {fastDecay.LandAngle:F1} deg");
             Assert.That(fastDecay.LandAngle, Is.LessThan(unscaled.LandAngle));
+
+            // The descent's measured coefficients (GolfNaruoUsgaLaw: C_D 0.33 at S 0.3, 0.41 at S 0.5) do not reach it either.
+            GolfResult naruo = GolfFlights.Fly(NaruoUsga(), iron, GolfFlights.TrackManAir);
+            TestContext.Out.WriteLine($"GolfNaruoUsgaLaw: carry {naruo.Carry / GolfFlights.Yard:F1} yd, apex {naruo.Apex / GolfFlights.Yard:F1} yd, landing {naruo.LandAngle:F1} deg");
+            Assert.That(measured - naruo.LandAngle, Is.GreaterThan(2), "the measured descent coefficients reached the chart's landing angle");
 
             GolfResult moreLift = Fly(1.2, 1.15);
             Assert.That(measured - moreLift.LandAngle, Is.LessThan(2), "20 % more lift (with 15 % more drag) reaches it");

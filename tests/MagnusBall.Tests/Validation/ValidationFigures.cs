@@ -38,6 +38,18 @@ namespace MagnusBall.Tests.Validation
             golf.Legend(new[] { ("#1f77b4", "session, 24 shots (calibration)"), ("#d62728", "tour averages, 15 (validation)"), ("#bbb", "+-8 %") });
             golf.Save(Path.Combine(dir, "validation-golf.svg"));
 
+            // Golf: simulated against measured landing angle on the tour averages, the preset and the law from measured
+            // descent coefficients (GolfNaruoUsgaLaw); the band is issue 43's 1.5 deg target.
+            var measured = GolfValidationTests.FlyAll(GolfValidationTests.NaruoUsga(), GolfFlights.TourAverages());
+            var landing = new Plot("golf: simulated vs measured landing angle (TrackMan tour averages)", "measured landing angle, deg", "simulated landing angle, deg", 34, 56, 34, 56);
+            landing.Line(new[] { (34.0, 34.0), (56.0, 56.0) }, "#888", "");
+            landing.Line(new[] { (34.0, 35.5), (54.5, 56.0) }, "#bbb", "4,3");
+            landing.Line(new[] { (35.5, 34.0), (56.0, 54.5) }, "#bbb", "4,3");
+            landing.Points(tour.Where(f => f.Shot.LandAngle.HasValue).Select(f => (f.Shot.LandAngle!.Value, f.Result.LandAngle)), "#d62728", "square");
+            landing.Points(measured.Where(f => f.Shot.LandAngle.HasValue).Select(f => (f.Shot.LandAngle!.Value, f.Result.LandAngle)), "#2ca02c", "circle");
+            landing.Legend(new[] { ("#d62728", "golf preset"), ("#2ca02c", "GolfNaruoUsgaLaw (measured coefficients)"), ("#bbb", "+-1.5 deg") });
+            landing.Save(Path.Combine(dir, "validation-golf-landing.svg"));
+
             // Soccer: the curling kick seen from above, measured points and the preset's track.
             JsonElement kick = MenckeFlightTests.Flight("soccer_curling_kick");
             var (_, _, track) = MenckeFlightTests.CurlingKick(SportPresets.Soccer);
@@ -58,7 +70,7 @@ namespace MagnusBall.Tests.Validation
             tt.Points(Pairs(lob.GetProperty("measured").GetProperty("track_x_height_m")), "#d62728", "circle");
             tt.Legend(new[] { ("#d62728", "measured (read from Fig. 7)"), ("#1f77b4", "table-tennis preset (Conti et al. 2026)"), ("#888", "the paper's own law (soccer drag, before issue 43)") });
             tt.Save(Path.Combine(dir, "validation-table-tennis.svg"));
-            TestContext.Out.WriteLine($"wrote {dir}/validation-{{golf,soccer,table-tennis}}.svg");
+            TestContext.Out.WriteLine($"wrote {dir}/validation-{{golf,golf-landing,soccer,table-tennis}}.svg");
         }
 
         private static IEnumerable<(double, double)> Pairs(JsonElement array) =>

@@ -108,6 +108,7 @@ namespace MagnusBall.Aerodynamics
                 case GolfSpinReynoldsDrag _: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar); // through its interface (reads Re)
                 // Bound: the table's largest C_D (linear interpolation stays inside its knots).
                 case ContiTableTennisDrag _: return visitor.Visit(default(ContiTableTennisDragLaw), new LawTraits(ContiTableTennisDrag.Largest, LaneForm.Scalar));
+                case GolfNaruoUsgaLaw _: return visitor.Visit(new InterfaceDrag(law), new LawTraits(GolfNaruoUsgaLaw.DragBound, LaneForm.Scalar)); // interface (reads Re)
                 default: return visitor.Visit(new InterfaceDrag(law), LawTraits.Scalar);
             }
         }
@@ -127,6 +128,7 @@ namespace MagnusBall.Aerodynamics
                 case GolfSpinReynoldsLift _: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar); // through its interface (reads Re)
                 // Bound: (8/3) x the fit's largest C_M (0.383) x S held at 10.
                 case ContiTableTennisLift _: return visitor.Visit(default(ContiTableTennisLiftLaw), new LawTraits(ContiTableTennisLift.Largest, LaneForm.Scalar));
+                case GolfNaruoUsgaLaw _: return visitor.Visit(new InterfaceLift(law), new LawTraits(GolfNaruoUsgaLaw.LiftBound, LaneForm.Scalar)); // interface (reads Re)
                 default: return visitor.Visit(new InterfaceLift(law), LawTraits.Scalar);
             }
         }
@@ -179,6 +181,7 @@ namespace MagnusBall.Aerodynamics
             GoffCarreSoccerDrag.Instance,
             GolfSpinReynoldsDrag.BearmanHarvey,
             ContiTableTennisDrag.Instance,
+            GolfNaruoUsgaLaw.Instance,
         };
 
         /// <summary>One instance of every lift law listed above.</summary>
@@ -191,6 +194,7 @@ namespace MagnusBall.Aerodynamics
             PiecewiseLinearLift.GolfSmitsSmith,
             GolfSpinReynoldsLift.BearmanHarvey,
             ContiTableTennisLift.Instance,
+            GolfNaruoUsgaLaw.Instance,
         };
 
         /// <summary>One instance of every spin-decay law listed above.</summary>

@@ -82,8 +82,9 @@ namespace MagnusBall.Presets
         /// (<see cref="GolfSpinReynoldsDrag"/>, <see cref="GolfSpinReynoldsLift"/>), the form fitted to Bearman &amp;
         /// Harvey's (1976) wind-tunnel grid, then one constant, the drag floor, refitted once to all 24 shots of a
         /// TrackMan session (<see cref="GolfSpinReynoldsDrag.TrackManCalibrated"/>; the lift is
-        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>; docs/presets.md); spin decay 4 %/s (TrackMan;
-        /// tau = -1/ln 0.96 = 24.5 s).
+        /// <see cref="GolfSpinReynoldsLift.BearmanHarvey"/>; docs/presets.md); spin decay 4 %/s (tau = -1/ln 0.96 = 24.5 s):
+        /// TrackMan's radar figure, "the spin rate drops during ball flight - typically 4 % for each second" (TrackMan
+        /// newsletter, October 2010, as quoted by D. Tutelman, "Spin decay for a ball in flight", 2016; second-hand).
         /// </summary>
         public static SportPreset Golf { get; } = new SportPreset(
             "golf",
