@@ -282,17 +282,16 @@ namespace MagnusBall.Flight
 
         // The rolling ball touches shape `index` at `time`: the shape answers it (Contact.Impact); it rolls on from there on the same
         // surface, or flies where the answer sends it off the surface faster than the rest speed. A slow touch into a shape that the
-        // rolling ball is pressed against (a wall at the foot of a slope) ends the flight at rest against it.
+        // rolling ball is pressed against (a wall at the foot of a slope) rests it against the shape, or, moving along the shape,
+        // rolls it on along it.
         private bool RollContact(in HermiteSegment segment, double time, int index, in Vector3d normal, FlightEventKinds stopAt)
         {
             ContactShape shape = _shapes![index];
-            FlightState touching = segment.StateAt(time);
-            if (!touching.IsFinite || !segment.TryUntil(time, out HermiteSegment cut))
+            if (!CutAt(segment, time, out FlightState touching, out HermiteSegment cut))
             {
                 return false;
             }
 
-            PushSegment(cut);
             touching = new FlightState(_now.RollPlane.Project(touching.Position), touching.Velocity, touching.AngularVelocity, time);
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
             double approach = -Vector3d.Dot(touching.Velocity, normal);

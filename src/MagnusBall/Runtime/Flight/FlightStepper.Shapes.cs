@@ -71,13 +71,11 @@ namespace MagnusBall.Flight
         private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d sweepNormal, FlightEventKinds stopAt)
         {
             ContactShape shape = _shapes![index];
-            FlightState touching = hermite.StateAt(contactTime);
-            if (!touching.IsFinite || !hermite.TryUntil(contactTime, out HermiteSegment cut))
+            if (!CutAt(hermite, contactTime, out FlightState touching, out HermiteSegment cut))
             {
                 return false;
             }
 
-            PushSegment(cut);
             Vector3d normal = sweepNormal;
             double approach = -Vector3d.Dot(touching.Velocity, normal);
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
@@ -113,6 +111,21 @@ namespace MagnusBall.Flight
             _now.State = leaving;
             _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
             _now.Evaluations++;
+            return true;
+        }
+
+        // The state where the piece touches at `time`, with the piece up to there stored; false when its dense output overflows
+        // there (the caller refuses the step).
+        private bool CutAt(in HermiteSegment segment, double time, out FlightState touching, out HermiteSegment cut)
+        {
+            touching = segment.StateAt(time);
+            cut = default;
+            if (!touching.IsFinite || !segment.TryUntil(time, out cut))
+            {
+                return false;
+            }
+
+            PushSegment(cut);
             return true;
         }
 
