@@ -22,7 +22,7 @@ namespace MagnusBall.Cli
             "box", "rectangle", "capsule", "cylinder", "sphere", "torus", "net-mesh", "tennis-net", "soccer-goal-frame", "basketball-hoop", "table-tennis-net",
         };
 
-        /// <summary>The default restitution of a primitive shape: 0.7, a game value for painted metal (SportShapes.Post now carries the sourced 0.765).</summary>
+        /// <summary>The default restitution of a primitive shape: 0.7, a game value for painted metal (SportShapes.Post carries 0.765, from the ITF rebound rule).</summary>
         public const double DefaultRestitution = 0.7;
 
         /// <summary>The default friction of a primitive shape: 0.3 (SportShapes.Post).</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.Linq;
 using MagnusBall.Aerodynamics;
@@ -17,7 +18,10 @@ namespace MagnusBall.Tests.Aerodynamics
         // The spread between balls at one condition in these sources: at Re 7e4 and S 0.18-0.19 Acushnet's Pro V1 and
         // Bridgestone's balls differ by 0.046 in C_D (0.274 against 0.228) and by 0.055 in C_L (0.209 against 0.154).
         // A law for "a modern ball" cannot be closer to every source than the balls are to each other.
-        private const double BetweenBalls = 0.055;
+        private const double BetweenBallsDrag = 0.046;
+        private const double BetweenBallsLift = 0.055;
+
+        private static readonly string[] RecordedDragMisses = { "bearman-harvey-1976-at-21.9mps S 0.11" };
 
         private static double D(string s) => double.Parse(s, CultureInfo.InvariantCulture);
 
@@ -51,6 +55,7 @@ namespace MagnusBall.Tests.Aerodynamics
             var rows = SourceDataTests.ReadCsv("golf-descent-points.csv");
             Assert.That(rows.Count, Is.EqualTo(19));
             double worst = 0;
+            var dragMisses = new List<string>();
             foreach (string[] r in rows)
             {
                 double s = D(r[3]);
@@ -65,12 +70,18 @@ namespace MagnusBall.Tests.Aerodynamics
                     double lift = Miss(GolfNaruoUsgaLaw.Lift(s, re), r[6], r[7]);
                     TestContext.Out.WriteLine($"{r[0]} Re {re:G3} S {s}: C_D {GolfNaruoUsgaLaw.Drag(s, re):F3} (off {drag:F3}), C_L {GolfNaruoUsgaLaw.Lift(s, re):F3} (off {lift:F3})");
                     worst = Math.Max(worst, Math.Max(drag, lift));
-                    Assert.That(drag, Is.LessThanOrEqualTo(BetweenBalls), $"{r[0]} C_D at Re {re}, S {s}");
-                    Assert.That(lift, Is.LessThanOrEqualTo(BetweenBalls), $"{r[0]} C_L at Re {re}, S {s}");
+                    if (drag > BetweenBallsDrag)
+                    {
+                        dragMisses.Add($"{r[0]} S {s}");
+                    }
+
+                    Assert.That(lift, Is.LessThanOrEqualTo(BetweenBallsLift), $"{r[0]} C_L at Re {re}, S {s}");
                 }
             }
 
-            TestContext.Out.WriteLine($"largest distance to a source: {worst:F3}");
+            TestContext.Out.WriteLine($"largest distance to a source: {worst:F3}; C_D beyond the spread: {string.Join("; ", dragMisses)}");
+            // One recorded miss, not hidden by a wider bound: Bearman & Harvey's C_D at S 0.11 (21.9 m/s), 0.052 above the law.
+            Assert.That(dragMisses, Is.EquivalentTo(RecordedDragMisses));
         }
 
         [Test]

@@ -113,13 +113,15 @@ namespace MagnusBall.Aerodynamics
     /// is 1/2 rho A C_L s^2 (w x v_hat)/|w|, so the same force is C_L = (8/3) C_M S with S = r|w|/s. C_M falls with spin,
     /// so C_L rises to about 0.25-0.30 near S 0.5, sags, and rises again: the valley Miyazaki et al. (2017, Eur. J. Phys.
     /// 38:024001) measured in flight on a Nittaku 3-star ball and called the lift crisis.</para>
-    /// <para>Evaluation: each row's C_M at |w|, held at 0 where a parabola goes negative (far above the spins of play);
-    /// the two branches of a row differ by up to 0.022 in C_M at its breakpoint (an artefact of the piecewise fit), so
-    /// they are blended linearly over the 40 rad/s around it, which keeps the force continuous; then linear in speed
-    /// between the rows, held below 2 and above 17 m/s. S is held at 10 (the source's 2 m/s row at 1000 rad/s, beyond its
-    /// flights) so that C_L stays below <see cref="Largest"/> as the speed goes to 0; no NaN for any input (0 without spin,
-    /// for NaN, and for infinite S). Range of validity: 2-17 m/s and the spins of the source's flights (about 0-1000 rad/s),
-    /// a 40 mm ball. No negative C_L: this law has no reverse Magnus effect.</para>
+    /// <para>Evaluation: each row's C_M at |w|, held at 0 where its parabola goes negative: at 2 m/s above 458 rad/s, at
+    /// 3.5 m/s above 681, at 7.5 m/s above 1114, at 10.5 and 13.5 m/s above 1309-1335 and at 17 m/s above 2123 rad/s (the
+    /// fit's own zeros); the two branches of a row differ by up to 0.022 in C_M at its breakpoint (an artefact of the
+    /// piecewise fit), so they are blended linearly over the 40 rad/s around it, which keeps the force continuous; then
+    /// linear in speed between the rows, held below 2 and above 17 m/s. S is held at 10 so that C_L stays below
+    /// <see cref="Largest"/> as the speed goes to 0 (a bound, not a measurement); no NaN for any input (0 without spin, for
+    /// NaN, and for infinite S). Range of validity: 2-17 m/s, a 40 mm ball, and at each speed the spins below its row's zero
+    /// (a slow ball with heavy spin, 2 m/s above about 450 rad/s, gets no lift: the fit's limit, not the ball's). No
+    /// negative C_L: this law has no reverse Magnus effect.</para>
     /// </remarks>
     internal sealed class ContiTableTennisLift : ILiftModel
     {
