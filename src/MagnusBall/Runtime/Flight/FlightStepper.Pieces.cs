@@ -230,7 +230,7 @@ namespace MagnusBall.Flight
 
             int shapeIndex = -1;
             Vector3d shapeNormal = default;
-            if (_shapes != null && FindShapeContact(hermite, rolling ? _now.RollShape : -1, out double shapeTime, out shapeIndex, out shapeNormal))
+            if (_shapes != null && FindShapeContact(hermite, out double shapeTime, out shapeIndex, out shapeNormal))
             {
                 if (shapeTime < contactTime)
                 {
@@ -346,10 +346,7 @@ namespace MagnusBall.Flight
                 return true;
             }
 
-            _now.Phase = FlightPhase.Flying; // also for a ball that rolled off a shape onto the ground
-            _now.State = leaving;
-            _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
-            _now.Evaluations++;
+            FlyFrom(leaving); // also a ball that rolled off a shape onto the ground
             return true;
         }
 

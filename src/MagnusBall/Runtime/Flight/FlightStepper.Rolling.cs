@@ -28,30 +28,45 @@ namespace MagnusBall.Flight
         // resistance is the ground's coefficient (GroundContact.DefaultRollingResistance without a ground) times gravity into it.
         private void StartRollingOnShape(int index, in FlightState touching, in Vector3d normal)
         {
-            double gn = -Vector3d.Dot(Model.Gravity, normal);
-            Vector3d gt = Model.Gravity + normal * gn;
-            double deceleration = (Contact?.RollingResistance ?? GroundContact.DefaultRollingResistance) * System.Math.Max(gn, 0);
-            bool canRest = gt.Length / (1 + Model.Ball.InertiaFactor) <= deceleration;
+            bool canRest = RollingLimits(Model, normal, Contact?.RollingResistance ?? GroundContact.DefaultRollingResistance, out double deceleration);
             StartRollingOn(
                 index, new Plane(touching.Position, normal), deceleration, canRest, touching.Position, touching.Velocity, touching.AngularVelocity,
                 touching.Time);
         }
 
+        // The rolling resistance's deceleration on a surface of unit normal `normal` (coefficient times gravity into it), and
+        // whether the slope alone cannot keep the ball moving against it (so it can come to rest).
+        private static bool RollingLimits(FlightModel model, in Vector3d normal, double coefficient, out double deceleration)
+        {
+            double gn = -Vector3d.Dot(model.Gravity, normal);
+            Vector3d gt = model.Gravity + normal * gn;
+            deceleration = coefficient * System.Math.Max(gn, 0);
+            return gt.Length / (1 + model.Ball.InertiaFactor) <= deceleration;
+        }
+
+        // Rolls on `plane` from here; with a `wall` (a shape's index and its normal), pressed against that shape and rolling
+        // along it: its roll's velocity into the wall is taken away and the wall holds it (RollingAcceleration).
         private void StartRollingOn(
             int shape, in Plane plane, double deceleration, bool canRest, in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity,
-            double time)
+            double time, int wall = -1, in Vector3d wallNormal = default)
         {
             _now.RollShape = shape;
             _now.RollPlane = plane;
             _now.RollDeceleration = deceleration;
             _now.RollCanRest = canRest;
-            _now.RollWall = -1;
+            _now.RollWall = wall;
+            _now.RollWallNormal = wallNormal;
             // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
             Vector3d normal = plane.Normal;
             double radius = Model.Ball.Radius, alpha = Model.Ball.InertiaFactor;
             Vector3d vt = velocity - normal * Vector3d.Dot(velocity, normal);
             Vector3d lambda = vt - Vector3d.Cross(normal, angularVelocity) * (radius * alpha);
             Vector3d rolling = lambda / (1 + alpha);
+            double intoWall = Vector3d.Dot(rolling, wallNormal);
+            if (intoWall < 0)
+            {
+                rolling -= wallNormal * intoWall;
+            }
             Vector3d spinNormal = normal * Vector3d.Dot(angularVelocity, normal);
             _now.Phase = FlightPhase.Rolling;
             var state = new FlightState(centre, rolling, RollingSpin(rolling, spinNormal), time);
@@ -273,10 +288,7 @@ namespace MagnusBall.Flight
             }
 
             PushSegment(cut);
-            _now.Phase = FlightPhase.Flying;
-            _now.State = segment.StateAt(time);
-            _now.Derivative = FlightKernel.DerivativeOf(Model, _now.State);
-            _now.Evaluations++;
+            FlyFrom(segment.StateAt(time));
             return _now.State.IsFinite;
         }
 
@@ -311,50 +323,30 @@ namespace MagnusBall.Flight
                 }
 
                 StartRollingOn(
-                    _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, along, touching.AngularVelocity, time);
-                _now.RollWall = index;
-                _now.RollWallNormal = normal;
-                // The roll's velocity (its spin's share included) along the wall only.
-                Vector3d rollingVelocity = _now.State.Velocity;
-                double intoWall = Vector3d.Dot(rollingVelocity, normal);
-                if (intoWall < 0)
-                {
-                    rollingVelocity -= normal * intoWall;
-                }
-
-                Vector3d spinNormal = surfaceNormal * Vector3d.Dot(touching.AngularVelocity, surfaceNormal);
-                _now.State = new FlightState(touching.Position, rollingVelocity, RollingSpin(rollingVelocity, spinNormal), time);
-                _now.Derivative = new StateDerivative(_now.State.Velocity, RollingAcceleration(_now.State), Vector3d.Zero);
+                    _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, along, touching.AngularVelocity, time,
+                    wall: index, wallNormal: normal);
                 Write(new FlightEvent(shape.Id, touching, _now.State, BounceRegime.None, normal, startsRolling: false));
                 return _now.State.IsFinite && _now.Derivative.IsFinite;
             }
 
-            ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
-            if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
+            if (!Answer(shape, touching, normal, cut, stopAt, out FlightState leaving))
             {
                 return false;
             }
 
-            var leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, time);
-            var contact = new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal, startsRolling: false);
-            Write(contact);
-            if ((stopAt & FlightEventKinds.Contact) != 0)
+            if (_now.Phase == FlightPhase.Stopped)
             {
-                Stop(contact, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
                 return true;
             }
 
-            if (Vector3d.Dot(outcome.Velocity, _now.RollPlane.Normal) > restSpeed)
+            if (Vector3d.Dot(leaving.Velocity, _now.RollPlane.Normal) > restSpeed)
             {
-                _now.Phase = FlightPhase.Flying;
-                _now.State = leaving;
-                _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
-                _now.Evaluations++;
+                FlyFrom(leaving);
                 return true;
             }
 
             StartRollingOn(
-                _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, outcome.Velocity, outcome.AngularVelocity, time);
+                _now.RollShape, _now.RollPlane, _now.RollDeceleration, _now.RollCanRest, touching.Position, leaving.Velocity, leaving.AngularVelocity, time);
             return _now.State.IsFinite && _now.Derivative.IsFinite;
         }
 

@@ -14,9 +14,9 @@ namespace MagnusBall.Flight
     {
         private readonly ContactShape[]? _shapes;
 
-        // The earliest touch of a shape on the piece's Hermite (its time, the shape's index and normal there), the shape at index
-        // `exclude` (the one the ball rolls on, or -1) and a wall the ball rolls along left out; false when none.
-        private bool FindShapeContact(in HermiteSegment hermite, int exclude, out double time, out int index, out Vector3d normal)
+        // The earliest touch of a shape on the piece's Hermite (its time, the shape's index and normal there), less, for a rolling
+        // ball, the shape it rolls on and a wall it rolls along; false when none.
+        private bool FindShapeContact(in HermiteSegment hermite, out double time, out int index, out Vector3d normal)
         {
             time = double.PositiveInfinity;
             index = -1;
@@ -39,11 +39,12 @@ namespace MagnusBall.Flight
                 System.Math.Max(System.Math.Max(b0.Y, b1.Y), System.Math.Max(b2.Y, b3.Y)),
                 System.Math.Max(System.Math.Max(b0.Z, b1.Z), System.Math.Max(b2.Z, b3.Z)));
             double radius = Model.Ball.Radius;
+            bool rolling = _now.Phase == FlightPhase.Rolling;
             double best = double.PositiveInfinity;
             double tolerance = HermiteSegment.TimeTolerance / h;
             for (int i = 0; i < shapes.Length; i++)
             {
-                if (i == exclude || (i == _now.RollWall && _now.Phase == FlightPhase.Rolling) || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
+                if ((rolling && (i == _now.RollShape || i == _now.RollWall)) || !ShapeSweep.MayTouch(shapes[i], lo, hi, radius))
                 {
                     continue;
                 }
@@ -68,7 +69,7 @@ namespace MagnusBall.Flight
         // The ball touches shape `index` at `contactTime` on the piece: the piece is cut there and the shape answers the ball
         // (Contact.Impact through ContactShape.Respond), or, a slow touch where the ball's weight and its whole acceleration hold it
         // on the shape, the ball settles on it and rolls on it from there. A stop kind naming Contact ends the flight at the touch.
-        private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d sweepNormal, FlightEventKinds stopAt)
+        private bool ShapeContact(in HermiteSegment hermite, double contactTime, int index, in Vector3d normal, FlightEventKinds stopAt)
         {
             ContactShape shape = _shapes![index];
             if (!CutAt(hermite, contactTime, out FlightState touching, out HermiteSegment cut))
@@ -76,42 +77,64 @@ namespace MagnusBall.Flight
                 return false;
             }
 
-            Vector3d normal = sweepNormal;
             double approach = -Vector3d.Dot(touching.Velocity, normal);
             double restSpeed = Contact?.RestNormalSpeed ?? GroundContact.DefaultRestNormalSpeed;
-            // Held: gravity presses the ball onto the shape (a floor-like face, not a wall or a ceiling), and so does its whole
-            // acceleration there (gravity, drag, the Magnus force, the wind).
-            bool held = Vector3d.Dot(Model.Gravity, normal) < 0 &&
-                Vector3d.Dot(FlightKernel.DerivativeOf(Model, touching).Acceleration, normal) < 0;
-            _now.Evaluations++;
-            FlightEvent contact;
-            if (held && approach < restSpeed && (stopAt & FlightEventKinds.Contact) == 0)
+            // A slow touch settles the ball where it is held there: gravity presses it onto the shape (a floor-like face, not a wall
+            // or a ceiling), and so does its whole acceleration there (gravity, drag, the Magnus force, the wind; evaluated only then).
+            if (approach < restSpeed && (stopAt & FlightEventKinds.Contact) == 0 && Vector3d.Dot(Model.Gravity, normal) < 0)
             {
-                StartRollingOnShape(index, touching, normal);
-                contact = new FlightEvent(shape.Id, touching, _now.State, BounceRegime.None, normal, startsRolling: true);
-                Write(contact);
-                return _now.State.IsFinite && _now.Derivative.IsFinite;
+                _now.Evaluations++;
+                if (Vector3d.Dot(FlightKernel.DerivativeOf(Model, touching).Acceleration, normal) < 0)
+                {
+                    StartRollingOnShape(index, touching, normal);
+                    Write(new FlightEvent(shape.Id, touching, _now.State, BounceRegime.None, normal, startsRolling: true));
+                    return _now.State.IsFinite && _now.Derivative.IsFinite;
+                }
             }
 
+            if (!Answer(shape, touching, normal, cut, stopAt, out FlightState leaving))
+            {
+                return false;
+            }
+
+            if (_now.Phase != FlightPhase.Stopped)
+            {
+                FlyFrom(leaving);
+            }
+
+            return true;
+        }
+
+        // The shape answers the ball touching it along `normal` (Contact.Impact through ContactShape.Respond) and the Contact event is
+        // written; a stop kind naming Contact ends the flight there (the ball arriving). False when the impact law overflowed on an
+        // extreme impact (the caller refuses the step).
+        private bool Answer(
+            ContactShape shape, in FlightState touching, in Vector3d normal, in HermiteSegment cut, FlightEventKinds stopAt, out FlightState leaving)
+        {
             ImpactOutcome outcome = shape.Respond(Model.Ball, touching.Position, touching.Velocity, touching.AngularVelocity, normal);
+            leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, touching.Time);
             if (!outcome.Velocity.IsFinite || !outcome.AngularVelocity.IsFinite)
             {
-                return false; // the impact law overflowed on an extreme impact
+                return false;
             }
 
-            var leaving = new FlightState(touching.Position, outcome.Velocity, outcome.AngularVelocity, contactTime);
-            contact = new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal, startsRolling: false);
+            var contact = new FlightEvent(shape.Id, touching, leaving, outcome.Regime, normal, startsRolling: false);
             Write(contact);
             if ((stopAt & FlightEventKinds.Contact) != 0)
             {
                 Stop(contact, cut.Duration > 0 ? cut.EndDerivative : _now.Derivative);
-                return true;
             }
 
-            _now.State = leaving;
-            _now.Derivative = FlightKernel.DerivativeOf(Model, leaving);
-            _now.Evaluations++;
             return true;
+        }
+
+        // The ball flies on from `state` (one evaluation for its derivative).
+        private void FlyFrom(in FlightState state)
+        {
+            _now.Phase = FlightPhase.Flying;
+            _now.State = state;
+            _now.Derivative = FlightKernel.DerivativeOf(Model, state);
+            _now.Evaluations++;
         }
 
         // The state where the piece touches at `time`, with the piece up to there stored; false when its dense output overflows

@@ -172,11 +172,8 @@ namespace MagnusBall.Flight
             {
                 _normal = contact.Plane.Normal;
                 _contactPlane = new Plane(contact.Plane.Point + _normal * model.Ball.Radius, _normal);
-                double gn = -Vector3d.Dot(model.Gravity, _normal);
-                Vector3d gt = model.Gravity + _normal * gn;
-                _rollingDeceleration = contact.RollingResistance * Math.Max(gn, 0);
-                _gravityHolds = gn > 0;
-                _canRest = gt.Length / (1 + model.Ball.InertiaFactor) <= _rollingDeceleration;
+                _gravityHolds = -Vector3d.Dot(model.Gravity, _normal) > 0;
+                _canRest = RollingLimits(model, _normal, contact.RollingResistance, out _rollingDeceleration);
             }
         }
 
