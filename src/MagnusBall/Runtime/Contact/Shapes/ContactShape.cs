@@ -87,6 +87,18 @@ namespace MagnusBall.Contact.Shapes
             BoundsMax = new Vector3d(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z)) + r;
         }
 
+        /// <summary>
+        /// The offset <paramref name="rel"/> split about the unit axis <paramref name="unitAxis"/>: its part along the axis, and its
+        /// distance from the axis with the unit direction away from it (any perpendicular for a point on the axis).
+        /// </summary>
+        private protected static Vector3d AroundAxis(in Vector3d rel, in Vector3d unitAxis, out double along, out double distance)
+        {
+            along = Vector3d.Dot(rel, unitAxis);
+            Vector3d radial = rel - unitAxis * along;
+            distance = radial.Length;
+            return distance > 0 ? radial / distance : CapsuleShape.AnyPerpendicular(unitAxis);
+        }
+
         /// <summary>A unit vector from a finite non-zero one.</summary>
         private protected static Vector3d Unit(in Vector3d value, string name) => Require.NonZero(value, name).NormalizedOrZero();
 

@@ -46,11 +46,7 @@ namespace MagnusBall.Contact.Shapes
         /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal)
         {
-            Vector3d rel = point - _centre;
-            double along = Vector3d.Dot(rel, _unitAxis);
-            Vector3d radial = rel - _unitAxis * along;
-            double r = radial.Length;
-            Vector3d radialUnit = r > 0 ? radial / r : CapsuleShape.AnyPerpendicular(_unitAxis);
+            Vector3d radialUnit = AroundAxis(point - _centre, _unitAxis, out double along, out double r);
             Vector3d axisUnit = along >= 0 ? _unitAxis : -_unitAxis;
             double dr = r - RadiusM;                    // outside the side when > 0
             double da = Math.Abs(along) - _halfLength;  // beyond an end when > 0

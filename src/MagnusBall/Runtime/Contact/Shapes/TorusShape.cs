@@ -44,11 +44,7 @@ namespace MagnusBall.Contact.Shapes
         /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal)
         {
-            Vector3d rel = point - Centre;
-            double along = Vector3d.Dot(rel, Axis);
-            Vector3d radial = rel - Axis * along;
-            double r = radial.Length;
-            Vector3d radialUnit = r > 0 ? radial / r : CapsuleShape.AnyPerpendicular(Axis);
+            Vector3d radialUnit = AroundAxis(point - Centre, Axis, out double along, out double r);
             Vector3d nearest = Centre + radialUnit * RingRadiusM; // the nearest point of the ring's centre line
             Vector3d offset = point - nearest;
             double d = offset.Length;
