@@ -70,11 +70,8 @@ namespace MagnusBall.Components
             {
                 case BoxCollider box:
                 {
-                    Vector3 c = box.center, half = new Vector3(box.size.x * 0.5f, box.size.y * 0.5f, box.size.z * 0.5f);
-                    Vector3d centre = World(t, c);
-                    Vector3d x = World(t, Offset(c, 0, half.x)) - centre;
-                    Vector3d y = World(t, Offset(c, 1, half.y)) - centre;
-                    Vector3d z = World(t, Offset(c, 2, half.z)) - centre;
+                    Vector3 half = new Vector3(box.size.x * 0.5f, box.size.y * 0.5f, box.size.z * 0.5f);
+                    Vector3d centre = HalfAxes(t, box.center, half, out Vector3d x, out Vector3d y, out Vector3d z);
                     if (!(half.x > 0 && half.y > 0 && half.z > 0))
                     {
                         why = "a BoxCollider's size must be > 0 along every axis";
@@ -147,8 +144,7 @@ namespace MagnusBall.Components
                 return null;
             }
 
-            Vector3d centre = World(t, c);
-            Vector3d x = World(t, Offset(c, 0, radius)) - centre, y = World(t, Offset(c, 1, radius)) - centre, z = World(t, Offset(c, 2, radius)) - centre;
+            Vector3d centre = HalfAxes(t, c, new Vector3(radius, radius, radius), out Vector3d x, out Vector3d y, out Vector3d z);
             double r = x.Length;
             if (!(r > 0) || Math.Abs(y.Length - r) > Tolerance * r || Math.Abs(z.Length - r) > Tolerance * r || !Square(x, y) || !Square(y, z) || !Square(x, z))
             {
@@ -157,6 +153,17 @@ namespace MagnusBall.Components
             }
 
             return new SphereShape(id, centre, r, contact);
+        }
+
+        // The world centre of local point c and the world vectors from it to c moved by half.x, half.y and half.z along the local
+        // x, y and z axes (through the transform, its rotation and scale).
+        private static Vector3d HalfAxes(Transform t, Vector3 c, Vector3 half, out Vector3d x, out Vector3d y, out Vector3d z)
+        {
+            Vector3d centre = World(t, c);
+            x = World(t, Offset(c, 0, half.x)) - centre;
+            y = World(t, Offset(c, 1, half.y)) - centre;
+            z = World(t, Offset(c, 2, half.z)) - centre;
+            return centre;
         }
 
         private static Vector3d World(Transform t, Vector3 local) => UnityFrame.ToLibrary(t.TransformPoint(local));
