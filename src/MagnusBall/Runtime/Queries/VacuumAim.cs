@@ -23,19 +23,11 @@ namespace MagnusBall.Queries
         public static double LowElevation(double gravity, double speed, double distance, double rise, out double slope)
         {
             slope = double.NaN;
-            if (!(distance > 0) || !(speed > 0) || !(gravity > 0))
+            if (!Roots(gravity, speed, distance, rise, out double a, out double root))
             {
                 return double.NaN;
             }
 
-            double a = gravity * distance * distance / (2 * speed * speed);
-            double discriminant = distance * distance - 4 * a * (a + rise);
-            if (!(discriminant >= 0) || !double.IsFinite(discriminant))
-            {
-                return double.NaN;
-            }
-
-            double root = Math.Sqrt(discriminant);
             double t = 2 * (a + rise) / (distance + root);
             slope = (1 + t * t) * root;
             return PortableMath.Atan(t);
@@ -51,22 +43,36 @@ namespace MagnusBall.Queries
         public static double HighElevation(double gravity, double speed, double distance, double rise, out double slope)
         {
             slope = double.NaN;
-            if (!(distance > 0) || !(speed > 0) || !(gravity > 0))
+            if (!Roots(gravity, speed, distance, rise, out double a, out double root) || !(a > 0))
             {
                 return double.NaN;
             }
 
-            double a = gravity * distance * distance / (2 * speed * speed);
-            double discriminant = distance * distance - 4 * a * (a + rise);
-            if (!(a > 0) || !(discriminant >= 0) || !double.IsFinite(discriminant))
-            {
-                return double.NaN;
-            }
-
-            double root = Math.Sqrt(discriminant);
             double t = (distance + root) / (2 * a);
             slope = -(1 + t * t) * root;
             return double.IsFinite(slope) ? PortableMath.Atan(t) : double.NaN;
+        }
+
+        // The quadratic in T = tan(elevation) both elevations solve (LowElevation's remarks): its a = g x^2 / (2 v^2) and the
+        // square root of its discriminant x^2 - 4 a (a + rise); false where the inputs or the discriminant rule out a real root.
+        private static bool Roots(double gravity, double speed, double distance, double rise, out double a, out double root)
+        {
+            a = double.NaN;
+            root = double.NaN;
+            if (!(distance > 0) || !(speed > 0) || !(gravity > 0))
+            {
+                return false;
+            }
+
+            a = gravity * distance * distance / (2 * speed * speed);
+            double discriminant = distance * distance - 4 * a * (a + rise);
+            if (!(discriminant >= 0) || !double.IsFinite(discriminant))
+            {
+                return false;
+            }
+
+            root = Math.Sqrt(discriminant);
+            return true;
         }
 
         /// <summary>
