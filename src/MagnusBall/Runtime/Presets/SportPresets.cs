@@ -166,10 +166,11 @@ namespace MagnusBall.Presets
 
         /// <summary>
         /// Basketball: FIBA size 7 (circumference 749-780 mm, 567-650 g; 0.6 kg and r = 0.1205 m used), thin
-        /// shell. C_D = 0.54: a recalled value, <b>not traced to a measurement</b> (none of a basketball was found). It was
-        /// attributed to Okubo &amp; Hubbard (2006, J. Sports Sci. 24:1303), which could not be confirmed: a secondary
-        /// summary describes their flight model as purely gravitational. Stated assumptions: lift from Stepanek's
-        /// saturating curve (borrowed from tennis) and constant spin (a shot lasts about a second).
+        /// shell. C_D = 0.54: <b>not traced to a measurement</b>; the earliest use found quotes it without a source
+        /// (Schutzengel, Varin &amp; Quinlivan, "The Physics of a Three Point Shot", University Physics Competition 2011:
+        /// "found in literature to be 0.54"; read second-hand). No measured C_D or C_L of a basketball could be read
+        /// here (docs/presets.md, "Not yet traced"). Stated assumptions: lift from Stepanek's saturating curve (borrowed
+        /// from tennis) and constant spin (a shot lasts about a second).
         /// </summary>
         public static SportPreset Basketball { get; } = new SportPreset(
             "basketball",
@@ -177,7 +178,7 @@ namespace MagnusBall.Presets
             new ConstantDrag(0.54),
             StepanekLift.Instance,
             null,
-            "FIBA Official Basketball Rules, equipment (size 7). C_D = 0.54 recalled, not traced to a measurement (attributed to Okubo & Hubbard 2006, not confirmed). " +
+            "FIBA Official Basketball Rules, equipment (size 7). C_D = 0.54 unsourced (quoted without a source by Schutzengel, Varin & Quinlivan 2011), not a measurement. " +
             "Assumptions: C_L from Stepanek's tennis curve; constant spin.");
 
         /// <summary>Golf spin-decay time constant, s: 4 %/s, tau = -1/ln(0.96) = 24.5 s.</summary>
