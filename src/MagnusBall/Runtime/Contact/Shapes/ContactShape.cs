@@ -51,6 +51,13 @@ namespace MagnusBall.Contact.Shapes
         internal abstract double SignedDistance(in Vector3d point, out Vector3d normal);
 
         /// <summary>
+        /// True for a convex shape (box, sphere, capsule, cylinder, a net's sheet): its signed distance is then a convex function,
+        /// never below its tangent plane at any point, which bounds it far more tightly than the distance's slope alone
+        /// (<see cref="ShapeSweep"/>).
+        /// </summary>
+        internal virtual bool IsConvex => false;
+
+        /// <summary>
         /// The ball's velocity and spin after it touches the shape with its centre at <paramref name="position"/>, the
         /// shape's outward normal there being <paramref name="normal"/>: <see cref="Impact.Resolve(Ball, in Vector3d, in Vector3d, in Vector3d, in ImpactBody, in ContactProperties)"/>
         /// with a body at rest of mass <see cref="EffectiveMassKg"/>.

@@ -21,8 +21,14 @@ namespace MagnusBall.Contact.Shapes
         /// </summary>
         internal const double MinApproachSpeed = 1e-9;
 
-        /// <summary>The most pieces one search looks at (a path that skims a surface within rounding for a whole step ends here, as a miss).</summary>
+        /// <summary>
+        /// The most pieces one search looks at. A path that stays too close to a surface for the bounds to rule out ends here; it is
+        /// then scanned at <see cref="ScanSamples"/> even fractions instead, and a touch there refined by bisection.
+        /// </summary>
         internal const int MaxVisits = 4096;
+
+        /// <summary>How many even fractions of the path the scan after an exhausted search tests.</summary>
+        internal const int ScanSamples = 256;
 
         /// <summary>True when the box [lo, hi] inflated by <paramref name="radius"/> meets the shape's bounding box.</summary>
         internal static bool MayTouch(ContactShape shape, in Vector3d lo, in Vector3d hi, double radius)
@@ -44,7 +50,7 @@ namespace MagnusBall.Contact.Shapes
             double minApproach, out double fraction, out Vector3d normal)
         {
             var search = new Search(shape, b0, b1, b2, b3, radius, fractionTolerance, minApproach);
-            bool found = search.Visit(b0, b1, b2, b3, 0, 1);
+            bool found = search.Visit(b0, b1, b2, b3, 0, 1) || (search.Exhausted && search.Scan());
             fraction = search.Fraction;
             normal = search.Normal;
             return found;
@@ -71,7 +77,9 @@ namespace MagnusBall.Contact.Shapes
             private readonly ContactShape _shape;
             private readonly Vector3d _b0, _b1, _b2, _b3;
             private readonly double _radius, _tolerance, _minApproach;
+            private readonly bool _convex;
             private int _visits;
+            public bool Exhausted;
             public double Fraction;
             public Vector3d Normal;
 
@@ -79,6 +87,7 @@ namespace MagnusBall.Contact.Shapes
             {
                 _minApproach = minApproach;
                 _shape = shape;
+                _convex = shape.IsConvex;
                 _b0 = b0;
                 _b1 = b1;
                 _b2 = b2;
@@ -86,6 +95,7 @@ namespace MagnusBall.Contact.Shapes
                 _radius = radius;
                 _tolerance = tolerance;
                 _visits = 0;
+                Exhausted = false;
                 Fraction = 0;
                 Normal = Vector3d.Zero;
             }
@@ -95,6 +105,7 @@ namespace MagnusBall.Contact.Shapes
             {
                 if (++_visits > MaxVisits)
                 {
+                    Exhausted = true;
                     return false;
                 }
 
@@ -110,9 +121,22 @@ namespace MagnusBall.Contact.Shapes
                 // distance to the shape changes no faster than the point moves, so it is at least d(centre) - reach there.
                 Vector3d centre = (lo + hi) * 0.5;
                 double reach = (hi - lo).Length * 0.5;
-                double distance = _shape.SignedDistance(centre, out _);
+                double distance = _shape.SignedDistance(centre, out Vector3d gradient);
                 double margin = 1e-12 * (1 + centre.Length + reach); // rounding of the points and the distance
-                if (distance - reach - _radius > margin)
+                double least = distance - reach;
+                if (_convex)
+                {
+                    // A convex shape's distance is never below its tangent plane at the centre, so on the piece (inside its control
+                    // points' hull) it is at least its least value on the four points. A path that grazes a face is ruled out by
+                    // how far it moves toward the face, not by how far it moves along it (with the slope alone, a ball skimming a
+                    // table top could use up the search's MaxVisits before it reached the place where it came back down).
+                    double tangent = distance + Math.Min(
+                        Math.Min(Vector3d.Dot(gradient, p0 - centre), Vector3d.Dot(gradient, p1 - centre)),
+                        Math.Min(Vector3d.Dot(gradient, p2 - centre), Vector3d.Dot(gradient, p3 - centre)));
+                    least = Math.Max(least, tangent);
+                }
+
+                if (least - _radius > margin)
                 {
                     return false;
                 }
@@ -167,6 +191,40 @@ namespace MagnusBall.Contact.Shapes
                 Fraction = b;
                 Normal = normal;
                 return true;
+            }
+
+            // The path after an exhausted search: its first even fraction where the ball is touching and approaching, refined by
+            // bisection from the fraction before it. A dip between two samples is missed (the search's bounds could not rule the
+            // path out, so it runs within about their spacing of the surface).
+            public bool Scan()
+            {
+                for (int k = 1; k <= ScanSamples; k++)
+                {
+                    double s = (double)k / ScanSamples;
+                    if (Touching(s, out Vector3d normal))
+                    {
+                        double lo = (double)(k - 1) / ScanSamples, hi = s;
+                        for (int i = 0; i < 64 && hi - lo > _tolerance; i++)
+                        {
+                            double m = 0.5 * (lo + hi);
+                            if (Touching(m, out Vector3d n))
+                            {
+                                hi = m;
+                                normal = n;
+                            }
+                            else
+                            {
+                                lo = m;
+                            }
+                        }
+
+                        Fraction = hi;
+                        Normal = normal;
+                        return true;
+                    }
+                }
+
+                return false;
             }
 
             private bool Touching(double s, out Vector3d normal)
