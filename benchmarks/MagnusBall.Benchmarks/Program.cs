@@ -7,7 +7,7 @@ namespace MagnusBall.Benchmarks
     /// <summary>
     /// Entry point. With no mode or a BenchmarkDotNet argument (--filter ...), runs the benchmarks; otherwise one of the
     /// report modes: "ratios" (issue 11's targets in one short run; optional rounds and seconds per workload), "extremes" (full matrix),
-    /// "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run), "adaptive-steps"
+    /// "extremes-quick", "blowup", "work-precision", "peers-check", "fuzz" (issue 15's long hostile-input run), "fuzz-shapes" (issue 40's contact shapes under the stateful fuzz), "adaptive-steps"
     /// (the cost of one Dormand-Prince step, piece by piece).
     /// </summary>
     public static class Program
@@ -66,6 +66,8 @@ namespace MagnusBall.Benchmarks
 
                 case "fuzz":
                     return FuzzReport.Run(args);
+                case "fuzz-shapes":
+                    return ShapeFuzzReport.Run(args);
                 case "blowup":
                     Console.WriteLine(ExtremesReport.BlowUp());
                     return 0;

@@ -23,7 +23,7 @@ namespace MagnusBall.Fuzz
     /// InvalidOperationException), a call with finite input must leave no NaN (and no non-finite state) behind, and no
     /// call may run 10 s. Shared by the suite's short test and the benchmark project's long run (fuzz mode).
     /// </summary>
-    public sealed class StatefulFuzz
+    public sealed partial class StatefulFuzz
     {
         /// <summary>The wall-clock time above which a call counts as a hang: 10 s (issue 15's threshold).</summary>
         public static readonly TimeSpan HangThreshold = TimeSpan.FromSeconds(10);
@@ -64,8 +64,8 @@ namespace MagnusBall.Fuzz
 
         private int _type;
 
-        /// <summary>The defects found (the sum of the defect counters).</summary>
-        public long Defects => ChangedAfterThrow + UndocumentedExceptions + UnnamedArgumentErrors + NaNs + NonFiniteStates + Hangs;
+        /// <summary>The defects found (the sum of the defect counters; with shapes, the tunnelling ones too).</summary>
+        public long Defects => ChangedAfterThrow + UndocumentedExceptions + UnnamedArgumentErrors + NaNs + NonFiniteStates + Hangs + Penetrations;
 
         /// <summary>Runs at least <paramref name="count"/> calls: objects are built and then called a random number of times each.</summary>
         public void Run(long count)
