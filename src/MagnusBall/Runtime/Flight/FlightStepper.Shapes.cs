@@ -49,7 +49,10 @@ namespace MagnusBall.Flight
                     continue;
                 }
 
-                if (ShapeSweep.FirstContact(shapes[i], b0, b1, b2, b3, radius, tolerance, ShapeSweep.MinApproachSpeed * h, out double s, out Vector3d n) && s < best)
+                bool found = ShapeSweep.FirstContact(
+                    shapes[i], b0, b1, b2, b3, radius, tolerance, ShapeSweep.MinApproachSpeed * h, out double s, out Vector3d n, out int visits);
+                _now.SearchVisits += visits;
+                if (found && s < best)
                 {
                     best = s;
                     index = i;

@@ -246,6 +246,12 @@ namespace MagnusBall.Flight
         public long DerivativeEvaluations => _now.Evaluations;
 
         /// <summary>
+        /// The pieces of path the touch searches of the shapes looked at since the last <see cref="Reset"/> (a step's work beyond its
+        /// model evaluations; zero without shapes). The predictor's work cap counts them.
+        /// </summary>
+        internal long ShapeSearchVisits => _now.SearchVisits;
+
+        /// <summary>
         /// Starts a new flight from <paramref name="state"/>: sets the state, evaluates its derivative, zeroes the
         /// counters. A ball placed exactly on the ground or a watched plane and heading through it crosses it at the
         /// start of the next step; with a contact, a ball placed on the surface and not leaving it rolls (or rests).
@@ -507,6 +513,7 @@ namespace MagnusBall.Flight
             public FlightPhase Phase;
             public long Steps;
             public long Evaluations;
+            public long SearchVisits; // pieces of path the shape searches looked at (ShapeSweep), the rest of a step's work
             public int Bounces;
             public bool StartsFlight;
             public double NextAdaptiveStep;

@@ -84,8 +84,8 @@ namespace MagnusBall.Queries
 
         /// <summary>
         /// True when the run ended early, before its time limit and without a stop event, because it had made
-        /// <see cref="TrajectoryPredictor.MaxEvaluationsPerPrediction"/> model evaluations plus steps (a tiny step or a huge maxDuration;
-        /// the bounded work of one call). <see cref="EndState"/> is the state reached, a true state of the flight.
+        /// <see cref="TrajectoryPredictor.MaxEvaluationsPerPrediction"/> model evaluations plus steps plus pieces of the shapes' touch
+        /// searches (a tiny step or a huge maxDuration, or a ball caught between shapes; the bounded work of one call). <see cref="EndState"/> is the state reached, a true state of the flight.
         /// </summary>
         public readonly bool WorkLimitReached;
     }
@@ -103,8 +103,9 @@ namespace MagnusBall.Queries
     public sealed class TrajectoryPredictor
     {
         /// <summary>
-        /// The work cap of one prediction: after the step that brings its model evaluations plus its steps to this many
-        /// (1,000,000; a step's own work, its dense output and event scan, costs about one evaluation: 200,000 RK4 steps,
+        /// The work cap of one prediction: after the step that brings its model evaluations plus its steps plus the pieces of path
+        /// its shapes' touch searches looked at to this many (1,000,000; a step's own work, its dense output and event scan, costs
+        /// about one evaluation, and so does a piece of a search, which tests one point against one shape: 200,000 RK4 steps,
         /// 14 minutes of flight at 1/240 s, or 500,000 Euler steps; measured up to 4 s on a loaded core with the golf laws,
         /// docs/robustness.md), the run ends with
         /// <see cref="Prediction.WorkLimitReached"/>. It bounds a huge maxDuration against a small step, and a step that
@@ -190,7 +191,7 @@ namespace MagnusBall.Queries
             // maxDuration / Step + 1 passes, and the work cap ends the run after MaxEvaluationsPerPrediction evaluations.
             while (true)
             {
-                if (stepper.DerivativeEvaluations + stepper.StepCount >= MaxEvaluationsPerPrediction)
+                if (stepper.DerivativeEvaluations + stepper.StepCount + stepper.ShapeSearchVisits >= MaxEvaluationsPerPrediction)
                 {
                     return new Prediction(
                         stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,

@@ -47,12 +47,13 @@ namespace MagnusBall.Contact.Shapes
         /// </summary>
         internal static bool FirstContact(
             ContactShape shape, in Vector3d b0, in Vector3d b1, in Vector3d b2, in Vector3d b3, double radius, double fractionTolerance,
-            double minApproach, out double fraction, out Vector3d normal)
+            double minApproach, out double fraction, out Vector3d normal, out int visits)
         {
             var search = new Search(shape, b0, b1, b2, b3, radius, fractionTolerance, minApproach);
             bool found = search.Visit(b0, b1, b2, b3, 0, 1) || (search.Exhausted && search.Scan());
             fraction = search.Fraction;
             normal = search.Normal;
+            visits = search.Visits;
             return found;
         }
 
@@ -78,7 +79,7 @@ namespace MagnusBall.Contact.Shapes
             private readonly Vector3d _b0, _b1, _b2, _b3;
             private readonly double _radius, _tolerance, _minApproach;
             private readonly bool _convex;
-            private int _visits;
+            public int Visits; // pieces looked at, and the scan's samples after an exhausted search
             public bool Exhausted;
             public double Fraction;
             public Vector3d Normal;
@@ -94,7 +95,7 @@ namespace MagnusBall.Contact.Shapes
                 _b3 = b3;
                 _radius = radius;
                 _tolerance = tolerance;
-                _visits = 0;
+                Visits = 0;
                 Exhausted = false;
                 Fraction = 0;
                 Normal = Vector3d.Zero;
@@ -103,7 +104,7 @@ namespace MagnusBall.Contact.Shapes
             // The piece [a, b] of the path, its own control points p0..p3: true, with Fraction and Normal, at its first touch.
             public bool Visit(in Vector3d p0, in Vector3d p1, in Vector3d p2, in Vector3d p3, double a, double b)
             {
-                if (++_visits > MaxVisits)
+                if (++Visits > MaxVisits)
                 {
                     Exhausted = true;
                     return false;
@@ -201,6 +202,7 @@ namespace MagnusBall.Contact.Shapes
                 for (int k = 1; k <= ScanSamples; k++)
                 {
                     double s = (double)k / ScanSamples;
+                    Visits++;
                     if (Touching(s, out Vector3d normal))
                     {
                         double lo = (double)(k - 1) / ScanSamples, hi = s;
