@@ -62,10 +62,11 @@ namespace MagnusBall.Flight
             Vector3d vt = velocity - normal * Vector3d.Dot(velocity, normal);
             Vector3d lambda = vt - Vector3d.Cross(normal, angularVelocity) * (radius * alpha);
             Vector3d rolling = lambda / (1 + alpha);
-            double intoWall = Vector3d.Dot(rolling, wallNormal);
+            Vector3d wallInPlane = InPlane(wallNormal, normal);
+            double intoWall = Vector3d.Dot(rolling, wallInPlane);
             if (intoWall < 0)
             {
-                rolling -= wallNormal * intoWall;
+                rolling -= wallInPlane * intoWall;
             }
             Vector3d spinNormal = normal * Vector3d.Dot(angularVelocity, normal);
             _now.Phase = FlightPhase.Rolling;
@@ -211,10 +212,11 @@ namespace MagnusBall.Flight
         private void KeepAlongTheWall(ref FlightState end, ref StateDerivative endDerivative)
         {
             Vector3d wallNormal = _now.RollWallNormal;
-            double into = Vector3d.Dot(end.Velocity, wallNormal);
+            Vector3d wallInPlane = InPlane(wallNormal, _now.RollPlane.Normal);
+            double into = Vector3d.Dot(end.Velocity, wallInPlane);
             if (into < 0)
             {
-                end = new FlightState(end.Position, end.Velocity - wallNormal * into, end.AngularVelocity, end.Time);
+                end = new FlightState(end.Position, end.Velocity - wallInPlane * into, end.AngularVelocity, end.Time);
                 endDerivative = new StateDerivative(end.Velocity, endDerivative.Acceleration, Vector3d.Zero);
             }
 
@@ -363,15 +365,23 @@ namespace MagnusBall.Flight
             Vector3d tangential = a - normal * Vector3d.Dot(a, normal);
             if (_now.RollWall >= 0)
             {
-                double intoWall = Vector3d.Dot(tangential, _now.RollWallNormal);
+                Vector3d wallInPlane = InPlane(_now.RollWallNormal, normal);
+                double intoWall = Vector3d.Dot(tangential, wallInPlane);
                 if (intoWall < 0)
                 {
-                    tangential -= _now.RollWallNormal * intoWall; // the wall holds the ball
+                    tangential -= wallInPlane * intoWall; // the wall holds the ball
                 }
             }
 
             return tangential * (1.0 / (1 + Model.Ball.InertiaFactor)) - state.Velocity.NormalizedOrZero() * _now.RollDeceleration;
         }
+
+        // A wall's normal as the rolling ball meets it: its part in the plane it rolls on, as a unit vector. The ball moves in that
+        // plane, so what the wall takes away is its motion along this direction; taking away the motion along the wall's own normal
+        // where the wall leans over the plane would leave the ball a part of it into the wall (the plane's projection turns the part
+        // off the plane into the wall), and it would sink into a leaning wall as it rolled along it.
+        private static Vector3d InPlane(in Vector3d wallNormal, in Vector3d planeNormal) =>
+            (wallNormal - planeNormal * Vector3d.Dot(wallNormal, planeNormal)).NormalizedOrZero();
 
         private Vector3d RollingSpin(in Vector3d velocity, in Vector3d spinNormal) =>
             Vector3d.Cross(_now.RollPlane.Normal, velocity) * (1.0 / Model.Ball.Radius) + spinNormal;
