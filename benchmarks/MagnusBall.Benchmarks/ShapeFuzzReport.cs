@@ -71,7 +71,7 @@ namespace MagnusBall.Benchmarks
                 $"defects: {fuzz.ChangedAfterThrow} changed after a throw, {fuzz.UndocumentedExceptions} undocumented exceptions, {fuzz.UnnamedArgumentErrors} without a parameter name, " +
                 $"{fuzz.NaNs} NaN, {fuzz.NonFiniteStates} non-finite states, {fuzz.Penetrations} tunnelled (> {StatefulFuzz.PenetrationTolerance:R} m; by kind: " +
                 string.Join(", ", StatefulFuzz.ShapeKindNames.Select((n, i) => $"{n} {fuzz.PenetrationsByKind[i]}")) + $"), {fuzz.Hangs} calls over 10 s; " +
-                $"not defects: {fuzz.ShallowPenetrations} step ends 1e-6 m to 1 cm inside; {fuzz.UnstableSkips} flights not judged after a fixed step past its method's stability bound");
+                $"not defects: {fuzz.ShallowPenetrations} step ends 1e-6 m to 1 cm inside; {fuzz.UnstableSkips} fixed steps past their method's stability bound (their flights not judged from there)");
             Console.WriteLine($"deepest: {fuzz.DeepestPenetration:R} m");
             Console.WriteLine($"slowest call {fuzz.Slowest.TotalSeconds:F3} s: {fuzz.SlowestCall}");
             Console.WriteLine("time by type (stepper, driver, -, predictor): " + string.Join(", ", fuzz.TimeByType.Take(4).Select(t => $"{t.TotalSeconds:F0} s")));
