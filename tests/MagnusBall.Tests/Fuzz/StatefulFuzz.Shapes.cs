@@ -71,13 +71,15 @@ namespace MagnusBall.Fuzz
         private double _ballRadius;
         private FlightModel? _checkModel;
         private StableIntegrator? _bound; // the flight's fixed-step method at its stability bound; null for a stable integrator
+        private bool _unjudged;           // a fixed step past the bound was taken: positions not judged until a step within it
 
         /// <summary>Checks skipped because a fixed step went past its method's stability bound (the caller's to refuse: see <see cref="Unstable"/>).</summary>
         public long UnstableSkips;
 
         // The flight's fixed steps are checked against its method's stability bound (StableIntegrator.AtStabilityBound: a step past it
         // may come out finite and wrong, which the library leaves to the caller to refuse or flag, as the CLI and the playground do);
-        // after such a step, the flight's positions are not held to the no-tunnelling invariant until the next Reset.
+        // after such a step, the flight's positions are not held to the no-tunnelling invariant until a step within the bound (or a
+        // reset), from where the shapes the ball is then clear of are judged again.
         private void Watch(FlightModel model, IIntegrator integrator)
         {
             _checkModel = model;
@@ -93,7 +95,17 @@ namespace MagnusBall.Fuzz
 
             UnstableSkips++;
             Array.Clear(_clear, 0, _clear.Length);
+            _unjudged = true;
             return true;
+        }
+
+        // A step within the bound after one past it: judged again from here.
+        private void Rearm(in Vector3d position)
+        {
+            if (_unjudged)
+            {
+                SetClear(position);
+            }
         }
 
         /// <summary>Runs at least <paramref name="count"/> calls into objects built with contact shapes.</summary>
@@ -210,9 +222,10 @@ namespace MagnusBall.Fuzz
                 }
 
                 bool adapt = op == 3 || op == 4;
-                if (!adapt && started)
+                if (started && (adapt || stepper.Phase != FlightPhase.Flying || !Unstable(stepper.State, step)))
                 {
-                    Unstable(stepper.State, step);
+                    // (An adaptive step controls its error; a rolling ball's pieces are the flight core's own, not the method's.)
+                    Rearm(stepper.State.Position);
                 }
 
                 string stepCode = adapt
@@ -327,7 +340,10 @@ namespace MagnusBall.Fuzz
                 int length = _random.Next(_events.Length + 1);
                 Fill(_events);
                 string advance = $"driver.Advance({dt:R}, new FlightEvent[{length}]);";
-                Unstable(driver.State, fixedStep);
+                if (!Unstable(driver.State, fixedStep))
+                {
+                    Rearm(driver.State.Position);
+                }
                 long thrown = Throws;
                 Call(() => { SnapDriver(driver); SnapEvents(); }, () => driver.Advance(dt, _events.AsSpan(0, length)), true, () => _log + advance, invalidOperation: false);
                 if (Throws == thrown)
@@ -398,9 +414,13 @@ namespace MagnusBall.Fuzz
                 SetClear(start.Position);
                 string saved = _log.ToString();
                 _log.Append(code).Append('\n');
-                for (int i = 0; i < p.SampleCount && !Unstable(_states[i], step); i++)
+                for (int i = 0; i < p.SampleCount; i++)
                 {
                     CheckClear(_states[i].Position, _states[i].Time, endOfStep: true);
+                    if (Unstable(_states[i], step))
+                    {
+                        break; // the step from this sample is past the bound: the rest of this prediction is not judged
+                    }
                 }
 
                 if (!p.SamplesTruncated || _bound == null)
@@ -416,6 +436,7 @@ namespace MagnusBall.Fuzz
 
         private void SetClear(in Vector3d position)
         {
+            _unjudged = false;
             for (int i = 0; i < _fuzzShapes.Length; i++)
             {
                 _clear[i] = _fuzzShapes[i].SignedDistance(position, out _) >= _ballRadius;

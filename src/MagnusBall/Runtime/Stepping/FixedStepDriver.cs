@@ -273,7 +273,8 @@ namespace MagnusBall.Stepping
         /// <summary>
         /// Advances by one frame: adds the (clamped) frame time to the accumulator, takes the whole fixed steps it
         /// holds (at most <see cref="MaxStepsPerAdvance"/>, and none once the call has made
-        /// <see cref="MaxEvaluationsPerAdvance"/> model evaluations plus steps), and writes the events of those steps, in time order,
+        /// <see cref="MaxEvaluationsPerAdvance"/> model evaluations plus steps plus pieces of the shapes' touch searches), and writes the
+        /// events of those steps, in time order,
         /// into <paramref name="events"/>. Allocates nothing.
         /// </summary>
         /// <param name="frameDeltaSeconds">The frame's delta time, s; finite and &gt;= 0 (Unity: Time.deltaTime).</param>
@@ -311,12 +312,12 @@ namespace MagnusBall.Stepping
             int perStep = _stepper.MaximumEventsPerStep;
             bool deferrable = events.Length >= perStep; // a buffer that holds any one step's events: never lose one
             bool deferred = false;
-            long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount;
+            long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount + _stepper.ShapeSearchVisits;
             bool lookAhead = true;
             // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
             {
-                long work = _stepper.DerivativeEvaluations + _stepper.StepCount - workBefore; // this call's so far
+                long work = _stepper.DerivativeEvaluations + _stepper.StepCount + _stepper.ShapeSearchVisits - workBefore; // this call's so far
                 if (steps == MaxStepsPerAdvance || work >= MaxEvaluationsPerAdvance)
                 {
                     // Step or work cap reached: keep the fraction of a step (alpha stays continuous), drop the rest.

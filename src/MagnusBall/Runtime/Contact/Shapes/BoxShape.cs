@@ -108,9 +108,9 @@ namespace MagnusBall.Contact.Shapes
         }
 
         /// <inheritdoc />
-        /// <inheritdoc />
         internal override bool IsConvex => true;
 
+        /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal)
         {
             Vector3d rel = point - Centre;

@@ -44,9 +44,9 @@ namespace MagnusBall.Contact.Shapes
         public double RadiusM { get; }
 
         /// <inheritdoc />
-        /// <inheritdoc />
         internal override bool IsConvex => true;
 
+        /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal)
         {
             Vector3d radialUnit = AroundAxis(point - _centre, _unitAxis, out double along, out double r);

@@ -47,9 +47,9 @@ namespace MagnusBall.Contact.Shapes
         public double TangentialSpeedKept { get; }
 
         /// <inheritdoc />
-        /// <inheritdoc />
         internal override bool IsConvex => true;
 
+        /// <inheritdoc />
         internal override double SignedDistance(in Vector3d point, out Vector3d normal) => _sheet.SignedDistance(point, out normal);
 
         /// <inheritdoc />

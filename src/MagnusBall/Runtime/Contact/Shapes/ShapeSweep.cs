@@ -125,12 +125,13 @@ namespace MagnusBall.Contact.Shapes
                 double distance = _shape.SignedDistance(centre, out Vector3d gradient);
                 double margin = 1e-12 * (1 + centre.Length + reach); // rounding of the points and the distance
                 double least = distance - reach;
-                if (_convex)
+                if (_convex && distance > 0)
                 {
-                    // A convex shape's distance is never below its tangent plane at the centre, so on the piece (inside its control
-                    // points' hull) it is at least its least value on the four points. A path that grazes a face is ruled out by
-                    // how far it moves toward the face, not by how far it moves along it (with the slope alone, a ball skimming a
-                    // table top could use up the search's MaxVisits before it reached the place where it came back down).
+                    // A convex shape's distance is never below its tangent plane at a point outside it (where the normal is the
+                    // distance's gradient; inside, on a capsule's or a cylinder's axis, the normal is rounding's direction), so on
+                    // the piece (inside its control points' hull) it is at least its least value on the four points. A path that
+                    // grazes a face is ruled out by how far it moves toward the face, not by how far it moves along it (with the
+                    // slope alone, a ball skimming a table top could use up the search's MaxVisits before it came back down).
                     double tangent = distance + Math.Min(
                         Math.Min(Vector3d.Dot(gradient, p0 - centre), Vector3d.Dot(gradient, p1 - centre)),
                         Math.Min(Vector3d.Dot(gradient, p2 - centre), Vector3d.Dot(gradient, p3 - centre)));
@@ -166,22 +167,7 @@ namespace MagnusBall.Contact.Shapes
 
                 if (a > 0 || !Touching(a, out _))
                 {
-                    double lo = a, hi = b;
-                    for (int i = 0; i < 64 && hi - lo > _tolerance; i++)
-                    {
-                        double m = 0.5 * (lo + hi);
-                        if (Touching(m, out Vector3d n))
-                        {
-                            hi = m;
-                            normal = n;
-                        }
-                        else
-                        {
-                            lo = m;
-                        }
-                    }
-
-                    b = hi;
+                    b = Refine(a, b, ref normal);
                 }
                 else
                 {
@@ -199,34 +185,39 @@ namespace MagnusBall.Contact.Shapes
             // path out, so it runs within about their spacing of the surface).
             public bool Scan()
             {
-                for (int k = 1; k <= ScanSamples; k++)
+                for (int k = 0; k <= ScanSamples; k++)
                 {
                     double s = (double)k / ScanSamples;
                     Visits++;
                     if (Touching(s, out Vector3d normal))
                     {
-                        double lo = (double)(k - 1) / ScanSamples, hi = s;
-                        for (int i = 0; i < 64 && hi - lo > _tolerance; i++)
-                        {
-                            double m = 0.5 * (lo + hi);
-                            if (Touching(m, out Vector3d n))
-                            {
-                                hi = m;
-                                normal = n;
-                            }
-                            else
-                            {
-                                lo = m;
-                            }
-                        }
-
-                        Fraction = hi;
+                        Fraction = k == 0 ? 0 : Refine((double)(k - 1) / ScanSamples, s, ref normal);
                         Normal = normal;
                         return true;
                     }
                 }
 
                 return false;
+            }
+
+            // The first touching fraction in (lo, hi], where hi touches and lo does not, to the tolerance (bisection); its normal.
+            private double Refine(double lo, double hi, ref Vector3d normal)
+            {
+                for (int i = 0; i < 64 && hi - lo > _tolerance; i++)
+                {
+                    double m = 0.5 * (lo + hi);
+                    if (Touching(m, out Vector3d n))
+                    {
+                        hi = m;
+                        normal = n;
+                    }
+                    else
+                    {
+                        lo = m;
+                    }
+                }
+
+                return hi;
             }
 
             private bool Touching(double s, out Vector3d normal)
