@@ -129,21 +129,44 @@ namespace MagnusBall.Fuzz
             }
         }
 
+        // A model (its code), a method, the up and the shapes (their code) for one object of the shape fuzz, drawn in that order;
+        // false where the model or the shapes could not be built (a hostile model's or shape's constructor refused).
+        private bool Scene(out FlightModel model, out string modelCode, out IIntegrator integrator, out Vector3d up, out ContactShape[] shapes, out string shapesCode)
+        {
+            (FlightModel? m, string code) = ShapeModel();
+            model = m!;
+            modelCode = code;
+            integrator = null!;
+            up = Vector3d.Zero;
+            shapes = null!;
+            shapesCode = string.Empty;
+            if (m == null)
+            {
+                return false;
+            }
+
+            integrator = Integrator();
+            up = m.Up.LengthSquared > 0 ? m.Up : Vector3d.UnitZ;
+            ContactShape[]? built = Shapes(m, up, out shapesCode);
+            shapes = built!;
+            return built != null;
+        }
+
+        // The shapes, ball and method the no-tunnelling invariant judges from here.
+        private void Judge(FlightModel model, IIntegrator integrator, ContactShape[] shapes)
+        {
+            _fuzzShapes = shapes;
+            _clear = new bool[shapes.Length];
+            _ballRadius = model.Ball.Radius;
+            Watch(model, integrator);
+        }
+
         // ---- FlightStepper with shapes ----
 
         private void FuzzShapeStepper(long count)
         {
             _type = 0;
-            (FlightModel? model, string modelCode) = ShapeModel();
-            if (model == null)
-            {
-                return;
-            }
-
-            IIntegrator integrator = Integrator();
-            Vector3d up = model.Up.LengthSquared > 0 ? model.Up : Vector3d.UnitZ;
-            ContactShape[]? shapes = Shapes(model, up, out string shapesCode);
-            if (shapes == null)
+            if (!Scene(out FlightModel model, out string modelCode, out IIntegrator integrator, out Vector3d up, out ContactShape[] shapes, out string shapesCode))
             {
                 return;
             }
@@ -177,10 +200,7 @@ namespace MagnusBall.Fuzz
                 return;
             }
 
-            _fuzzShapes = shapes;
-            _clear = new bool[shapes.Length];
-            _ballRadius = model.Ball.Radius;
-            Watch(model, integrator);
+            Judge(model, integrator, shapes);
             double rtol = Math.Pow(10, -10 + 8 * _random.NextDouble());
             var adaptive = new DormandPrince54(rtol, rtol * 1e-3);
             bool started = false;
@@ -277,16 +297,7 @@ namespace MagnusBall.Fuzz
         private void FuzzShapeDriver(long count)
         {
             _type = 1;
-            (FlightModel? model, string modelCode) = ShapeModel();
-            if (model == null)
-            {
-                return;
-            }
-
-            IIntegrator integrator = Integrator();
-            Vector3d up = model.Up.LengthSquared > 0 ? model.Up : Vector3d.UnitZ;
-            ContactShape[]? shapes = Shapes(model, up, out string shapesCode);
-            if (shapes == null)
+            if (!Scene(out FlightModel model, out string modelCode, out IIntegrator integrator, out Vector3d up, out ContactShape[] shapes, out string shapesCode))
             {
                 return;
             }
@@ -307,10 +318,7 @@ namespace MagnusBall.Fuzz
                 return;
             }
 
-            _fuzzShapes = shapes;
-            _clear = new bool[shapes.Length];
-            _ballRadius = model.Ball.Radius;
-            Watch(model, integrator);
+            Judge(model, integrator, shapes);
             SetClear(driver.State.Position);
             int calls = 1 + _random.Next(60);
             for (int c = 0; c < calls && Calls < count; c++)
@@ -359,16 +367,7 @@ namespace MagnusBall.Fuzz
         private void FuzzShapePredictor(long count)
         {
             _type = 3;
-            (FlightModel? model, string modelCode) = ShapeModel();
-            if (model == null)
-            {
-                return;
-            }
-
-            IIntegrator integrator = Integrator();
-            Vector3d up = model.Up.LengthSquared > 0 ? model.Up : Vector3d.UnitZ;
-            ContactShape[]? shapes = Shapes(model, up, out string shapesCode);
-            if (shapes == null)
+            if (!Scene(out FlightModel model, out string modelCode, out IIntegrator integrator, out Vector3d up, out ContactShape[] shapes, out string shapesCode))
             {
                 return;
             }
@@ -385,10 +384,7 @@ namespace MagnusBall.Fuzz
                 return;
             }
 
-            _fuzzShapes = shapes;
-            _clear = new bool[shapes.Length];
-            _ballRadius = model.Ball.Radius;
-            Watch(model, integrator);
+            Judge(model, integrator, shapes);
             int calls = 1 + _random.Next(6);
             for (int c = 0; c < calls && Calls < count; c++)
             {
