@@ -242,9 +242,10 @@ namespace MagnusBall.Fuzz
                 }
 
                 bool adapt = op == 3 || op == 4;
-                if (started && (adapt || stepper.Phase != FlightPhase.Flying || !Unstable(stepper.State, step)))
+                if (started && (adapt || !Unstable(stepper.State, step)))
                 {
-                    // (An adaptive step controls its error; a rolling ball's pieces are the flight core's own, not the method's.)
+                    // (An adaptive step controls its error. A rolling ball's step is gated too: where it leaves the surface within
+                    // the step, the method flies the rest.)
                     Rearm(stepper.State.Position);
                 }
 

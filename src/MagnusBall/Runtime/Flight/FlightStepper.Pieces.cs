@@ -75,9 +75,10 @@ namespace MagnusBall.Flight
                     }
                 }
 
-                if (!_now.State.IsFinite)
+                if (!_now.State.IsFinite || !_now.Derivative.IsFinite)
                 {
-                    // A bounce in the last ulp of the step left a non-finite state: refused, as a diverging integrator step is.
+                    // A bounce in the last ulp of the step left a non-finite state, or a roll begun at an extreme state a non-finite
+                    // derivative: refused, as a diverging integrator step is.
                     _now = before;
                     return StepOutcome.Diverged;
                 }
