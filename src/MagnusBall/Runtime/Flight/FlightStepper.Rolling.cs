@@ -45,7 +45,8 @@ namespace MagnusBall.Flight
         }
 
         // Rolls on `plane` from here; with a `wall` (a shape's index and its normal), pressed against that shape and rolling
-        // along it: its roll's velocity into the wall is taken away and the wall holds it (RollingAcceleration).
+        // along it: its roll's velocity into the wall is taken away and the wall holds it (RollingAcceleration). The wall is kept
+        // by its normal's part in the plane (InPlane), which is what it takes away, as the plane is fixed while the ball rolls.
         private void StartRollingOn(
             int shape, in Plane plane, double deceleration, bool canRest, in Vector3d centre, in Vector3d velocity, in Vector3d angularVelocity,
             double time, int wall = -1, in Vector3d wallNormal = default)
@@ -54,15 +55,15 @@ namespace MagnusBall.Flight
             _now.RollPlane = plane;
             _now.RollDeceleration = deceleration;
             _now.RollCanRest = canRest;
-            _now.RollWall = wall;
-            _now.RollWallNormal = wallNormal;
-            // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
             Vector3d normal = plane.Normal;
+            Vector3d wallInPlane = InPlane(wallNormal, normal);
+            _now.RollWall = wall;
+            _now.RollWallNormal = wallInPlane;
+            // Keep the angular momentum about the contact point: roll at Lam / (1 + alpha), Lam = vt - alpha R (n x w).
             double radius = Model.Ball.Radius, alpha = Model.Ball.InertiaFactor;
             Vector3d vt = velocity - normal * Vector3d.Dot(velocity, normal);
             Vector3d lambda = vt - Vector3d.Cross(normal, angularVelocity) * (radius * alpha);
             Vector3d rolling = lambda / (1 + alpha);
-            Vector3d wallInPlane = InPlane(wallNormal, normal);
             double intoWall = Vector3d.Dot(rolling, wallInPlane);
             if (intoWall < 0)
             {
@@ -211,8 +212,7 @@ namespace MagnusBall.Flight
         // longer holds it (the wall ends, or the slope no longer presses the ball into it) it rolls free from the next piece.
         private void KeepAlongTheWall(ref FlightState end, ref StateDerivative endDerivative)
         {
-            Vector3d wallNormal = _now.RollWallNormal;
-            Vector3d wallInPlane = InPlane(wallNormal, _now.RollPlane.Normal);
+            Vector3d wallInPlane = _now.RollWallNormal;
             double into = Vector3d.Dot(end.Velocity, wallInPlane);
             if (into < 0)
             {
@@ -223,7 +223,7 @@ namespace MagnusBall.Flight
             Vector3d normal = _now.RollPlane.Normal;
             Vector3d g = Model.Gravity - normal * Vector3d.Dot(Model.Gravity, normal);
             double gap = _shapes![_now.RollWall].SignedDistance(end.Position, out _) - Model.Ball.Radius;
-            if (gap > LeaveGapM || Vector3d.Dot(g, wallNormal) >= 0)
+            if (gap > LeaveGapM || Vector3d.Dot(g, wallInPlane) >= 0)
             {
                 _now.RollWall = -1;
             }
@@ -365,11 +365,10 @@ namespace MagnusBall.Flight
             Vector3d tangential = a - normal * Vector3d.Dot(a, normal);
             if (_now.RollWall >= 0)
             {
-                Vector3d wallInPlane = InPlane(_now.RollWallNormal, normal);
-                double intoWall = Vector3d.Dot(tangential, wallInPlane);
+                double intoWall = Vector3d.Dot(tangential, _now.RollWallNormal);
                 if (intoWall < 0)
                 {
-                    tangential -= wallInPlane * intoWall; // the wall holds the ball
+                    tangential -= _now.RollWallNormal * intoWall; // the wall holds the ball
                 }
             }
 

@@ -246,10 +246,11 @@ namespace MagnusBall.Flight
         public long DerivativeEvaluations => _now.Evaluations;
 
         /// <summary>
-        /// The pieces of path the touch searches of the shapes looked at since the last <see cref="Reset"/> (a step's work beyond its
-        /// model evaluations; zero without shapes). The predictor's work cap counts them.
+        /// The work done since the last <see cref="Reset"/>, as the work caps of the driver and the predictor count it: model
+        /// evaluations, plus steps (a step's dense output and event scan cost about one evaluation), plus the pieces of path the
+        /// shapes' touch searches looked at (each tests one point against one shape).
         /// </summary>
-        internal long ShapeSearchVisits => _now.SearchVisits;
+        internal long Work => _now.Evaluations + _now.Steps + _now.SearchVisits;
 
         /// <summary>
         /// Starts a new flight from <paramref name="state"/>: sets the state, evaluates its derivative, zeroes the
@@ -525,7 +526,8 @@ namespace MagnusBall.Flight
             public double RollDeceleration;
             public bool RollCanRest;
 
-            // A shape the rolling ball rolls along, pressed against it (a wall at the foot of a slope), and its normal; -1 for none.
+            // A shape the rolling ball rolls along, pressed against it (a wall at the foot of a slope), -1 for none, and its normal's
+            // part in RollPlane, a unit vector (what the wall takes away).
             public int RollWall;
             public Vector3d RollWallNormal;
         }

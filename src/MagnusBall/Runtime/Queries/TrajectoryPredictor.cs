@@ -191,7 +191,7 @@ namespace MagnusBall.Queries
             // maxDuration / Step + 1 passes, and the work cap ends the run after MaxEvaluationsPerPrediction evaluations.
             while (true)
             {
-                if (stepper.DerivativeEvaluations + stepper.StepCount + stepper.ShapeSearchVisits >= MaxEvaluationsPerPrediction)
+                if (stepper.Work >= MaxEvaluationsPerPrediction)
                 {
                     return new Prediction(
                         stepper.State, false, default, sampleCount, samplesTruncated, eventCount, eventsTruncated,

@@ -312,12 +312,12 @@ namespace MagnusBall.Stepping
             int perStep = _stepper.MaximumEventsPerStep;
             bool deferrable = events.Length >= perStep; // a buffer that holds any one step's events: never lose one
             bool deferred = false;
-            long workBefore = _stepper.DerivativeEvaluations + _stepper.StepCount + _stepper.ShapeSearchVisits;
+            long workBefore = _stepper.Work;
             bool lookAhead = true;
             // Bounded by MaxStepsPerAdvance and by MaxEvaluationsPerAdvance.
             while (_accumulator >= FixedStep)
             {
-                long work = _stepper.DerivativeEvaluations + _stepper.StepCount + _stepper.ShapeSearchVisits - workBefore; // this call's so far
+                long work = _stepper.Work - workBefore; // this call's so far
                 if (steps == MaxStepsPerAdvance || work >= MaxEvaluationsPerAdvance)
                 {
                     // Step or work cap reached: keep the fraction of a step (alpha stays continuous), drop the rest.
